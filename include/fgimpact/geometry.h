@@ -1,0 +1,81 @@
+#ifndef fgimpact_geometry_h
+#define fgimpact_geometry_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <array>
+#include <string>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /// Support condition of one side face of the plate.
+  enum class SideSupport
+  {
+    /// Eq. 2.15 on the whole face: w = 0 and the tangential in-plane
+    /// displacement = 0 (v on x = const faces, u on y = const faces).
+    simply_supported,
+    /// u = v = w = 0 on the whole face.
+    clamped,
+    /// Traction free.
+    free
+  };
+
+  /**
+   * The plate a x b x h, x and y in-plane, z through the thickness from the
+   * bottom face, meshed by GridGenerator::subdivided_hyper_rectangle with
+   * colorized boundary ids:
+   *   0: x = 0,  1: x = a,  2: y = 0,  3: y = b,  4: z = 0 (bottom),
+   *   5: z = h (top, impacted).
+   */
+  class PlateGeometry
+  {
+  public:
+    struct Parameters
+    {
+      double       length         = 0.2;  // a, m
+      double       width          = 0.1;  // b, m
+      double       thickness      = 0.02; // h, m
+      unsigned int subdivisions_x = 40;
+      unsigned int subdivisions_y = 20;
+      unsigned int subdivisions_z = 4;
+      /// Supports of the faces x = 0, x = a, y = 0, y = b.
+      std::array<SideSupport, 4> supports = {{SideSupport::simply_supported,
+                                              SideSupport::simply_supported,
+                                              SideSupport::simply_supported,
+                                              SideSupport::simply_supported}};
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
+    explicit PlateGeometry(const Parameters &parameters);
+
+    /// Fill an empty triangulation with the subdivided brick.
+    void create_triangulation(Triangulation<3> &triangulation) const;
+
+    double length() const { return parameters.length; }
+    double width() const { return parameters.width; }
+    double thickness() const { return parameters.thickness; }
+
+    /// Centre of the plate at height z (m).
+    Point<3> centre(const double z) const;
+
+    /// Whether p lies inside the closed plate up to a relative tolerance.
+    bool contains(const Point<3> &p) const;
+
+    const Parameters &get_parameters() const { return parameters; }
+
+    /// The names of the four side faces, in the order of `supports`.
+    static const std::array<std::string, 4> side_names;
+
+  private:
+    const Parameters parameters;
+  };
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,136 @@
+#ifndef fgimpact_plate_model_h
+#define fgimpact_plate_model_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/geometry.h>
+#include <fgimpact/material.h>
+
+#include <memory>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * Evaluates E(z) and rho(z) at fixed unit-cell points of any cell, either
+   * graded (nodal values of the scalar base element interpolated with its
+   * shape functions, Eq. 3.3) or homogeneous (the value at the cell centre).
+   * The shape function table is computed once; cells must be axis-aligned
+   * bricks (all cells of this program are).
+   */
+  class PropertyInterpolator
+  {
+  public:
+    PropertyInterpolator(const FiniteElement<3>          &scalar_fe,
+                         const std::vector<Point<3>>      &unit_points,
+                         const FunctionallyGradedMaterial &material);
+
+    /// E (Pa) and rho (kg/m^3) at the unit points of cell.
+    void values(const typename Triangulation<3>::cell_iterator &cell,
+                std::vector<double>                           &E,
+                std::vector<double>                           &rho) const;
+
+  private:
+    const FunctionallyGradedMaterial &material;
+    /// z coordinate of each scalar support point on the unit cell.
+    std::vector<double> unit_support_z;
+    /// shape_values[k][q] = N_k(unit point q).
+    std::vector<std::vector<double>> shape_values;
+    std::vector<double>              nodal_E, nodal_rho; // scratch
+  };
+
+
+
+  /**
+   * The linear elastic FGM plate discretized with FESystem(FE_Q(p), 3): the
+   * mesh, degrees of freedom, support constraints and the constant stiffness
+   * and consistent mass matrices (Eqs. 3.10-3.11), as Trilinos objects on a
+   * p4est triangulation so that the same code runs under MPI.
+   */
+  class PlateModel
+  {
+  public:
+    struct Parameters
+    {
+      unsigned int degree = 1;
+
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
+    };
+
+    PlateModel(const Parameters                 &parameters,
+               const PlateGeometry              &geometry,
+               const FunctionallyGradedMaterial &material,
+               const MPI_Comm                    mpi_communicator);
+
+    /// Make the mesh, distribute DoFs, build constraints and assemble K, M.
+    void setup();
+
+    types::global_dof_index n_dofs() const { return dof_handler.n_dofs(); }
+    unsigned int n_active_cells() const;
+
+    const TrilinosWrappers::SparseMatrix &stiffness_matrix() const
+    {
+      return stiffness;
+    }
+    const TrilinosWrappers::SparseMatrix &mass_matrix() const { return mass; }
+
+    /// Reinit v as a (non-ghosted) vector of locally owned DoFs.
+    void initialize_vector(TrilinosWrappers::MPI::Vector &v) const;
+
+    /**
+     * The top-surface (z = h) vertex nearest to (x, y) and the global index
+     * of its DoF of the given component.  The point force of the contact law
+     * acts there, as in the paper.
+     */
+    std::pair<types::global_dof_index, Point<3>>
+    nearest_top_vertex_dof(const Point<2> &xy, const unsigned int component) const;
+
+    /// Sum of all mass matrix entries of one displacement component, i.e.
+    /// the total mass of the plate in kg (partition of unity).
+    double total_mass() const;
+
+    const DoFHandler<3>             &get_dof_handler() const { return dof_handler; }
+    const AffineConstraints<double> &get_constraints() const { return constraints; }
+    const Mapping<3>                &get_mapping() const { return mapping; }
+    const FESystem<3>               &get_fe() const { return fe; }
+    const PlateGeometry             &get_geometry() const { return geometry; }
+    const FunctionallyGradedMaterial &get_material() const { return material; }
+    const IndexSet &locally_owned_dofs() const { return locally_owned; }
+    MPI_Comm        get_mpi_communicator() const { return mpi_communicator; }
+
+  private:
+    void setup_constraints();
+    void assemble();
+
+    const Parameters                  parameters;
+    const PlateGeometry              &geometry;
+    const FunctionallyGradedMaterial &material;
+    const MPI_Comm                    mpi_communicator;
+
+    parallel::distributed::Triangulation<3> triangulation;
+    const FESystem<3>                       fe;
+    const MappingQ<3>                       mapping;
+    DoFHandler<3>                           dof_handler;
+    IndexSet                                locally_owned, locally_relevant;
+    AffineConstraints<double>               constraints;
+    TrilinosWrappers::SparseMatrix          stiffness, mass;
+  };
+} // namespace fgimpact
+
+#endif

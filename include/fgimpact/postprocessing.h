@@ -1,0 +1,92 @@
+#ifndef fgimpact_postprocessing_h
+#define fgimpact_postprocessing_h
+
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/plate_model.h>
+
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * Stress tensor (MPa), von Mises stress (MPa), E (GPa) and rho (kg/m^3)
+   * from the displacement, for DataOut.  E is evaluated as in the
+   * assembly: graded (the interpolant equals E(z) at the output points,
+   * which are nodes) or the element-centre value.
+   */
+  class StressPostprocessor : public DataPostprocessor<3>
+  {
+  public:
+    explicit StressPostprocessor(const FunctionallyGradedMaterial &material);
+
+    void evaluate_vector_field(
+      const DataPostprocessorInputs::Vector<3> &inputs,
+      std::vector<Vector<double>>              &computed_quantities) const override;
+
+    std::vector<std::string> get_names() const override;
+
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    get_data_component_interpretation() const override;
+
+    UpdateFlags get_needed_update_flags() const override;
+
+  private:
+    const FunctionallyGradedMaterial &material;
+  };
+
+
+
+  /**
+   * Writes VTU files (one piece per MPI rank plus a .pvtu record) of the
+   * displacement, velocity, stresses and material fields, and keeps the PVD
+   * time series file up to date after every write so that a run stopped
+   * early still opens in ParaView.
+   */
+  class VtuWriter
+  {
+  public:
+    VtuWriter(const PlateModel &plate, const std::string &directory);
+
+    /// Write one snapshot at time t (s); u, v in m and m/s.
+    void write(const unsigned int                   step,
+               const double                         t,
+               const TrilinosWrappers::MPI::Vector &u,
+               const TrilinosWrappers::MPI::Vector &v);
+
+  private:
+    const PlateModel                           &plate;
+    const std::string                           directory;
+    StressPostprocessor                         postprocessor;
+    std::vector<std::pair<double, std::string>> times_and_names;
+  };
+
+
+
+  /**
+   * A CSV file streamed row by row (nothing kept in memory), with fixed
+   * decimals per column so that reference outputs compare cleanly.
+   */
+  class CsvWriter
+  {
+  public:
+    /// columns: name and number of decimals.
+    CsvWriter(const std::string                                 &filename,
+              const std::vector<std::pair<std::string, int>>    &columns);
+
+    void write_row(const std::vector<double> &values);
+
+  private:
+    std::ofstream    out;
+    std::vector<int> decimals;
+  };
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,57 @@
+#ifndef fgimpact_probes_h
+#define fgimpact_probes_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/plate_model.h>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * Displacement and stress at a fixed point of the plate as linear
+   * functionals of the DoF vector, with the weights computed once (no mesh
+   * search in the time loop).  At a point on element boundaries, where the
+   * Q_p stress is discontinuous, the stress is the average over all cells
+   * that contain the point; E there is the graded interpolant or the
+   * element value, as in the assembly.
+   */
+  class PointProbe
+  {
+  public:
+    PointProbe(const PlateModel &plate, const Point<3> &location);
+
+    const Point<3> &location() const { return point; }
+
+    /// Displacement (m).
+    Tensor<1, 3> displacement(const TrilinosWrappers::MPI::Vector &u) const;
+
+    /// Cauchy stress (Pa).
+    SymmetricTensor<2, 3> stress(const TrilinosWrappers::MPI::Vector &u) const;
+
+    /// Number of cells whose stresses are averaged.
+    unsigned int n_cells() const { return n_adjacent_cells; }
+
+  private:
+    using Weights = std::vector<std::pair<types::global_dof_index, double>>;
+
+    static double apply(const Weights &w, const TrilinosWrappers::MPI::Vector &u);
+
+    Point<3>               point;
+    std::array<Weights, 3> displacement_weights;
+    /// Independent stress components in the order xx, yy, zz, yz, xz, xy.
+    std::array<Weights, 6> stress_weights;
+    unsigned int           n_adjacent_cells;
+  };
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,322 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <fgimpact/plate_model.h>
+
+#include <limits>
+
+namespace fgimpact
+{
+  PropertyInterpolator::PropertyInterpolator(
+    const FiniteElement<3>          &scalar_fe,
+    const std::vector<Point<3>>      &unit_points,
+    const FunctionallyGradedMaterial &material)
+    : material(material)
+    , nodal_E(scalar_fe.n_dofs_per_cell())
+    , nodal_rho(scalar_fe.n_dofs_per_cell())
+  {
+    const auto &support = scalar_fe.get_unit_support_points();
+    for (const auto &p : support)
+      unit_support_z.push_back(p[2]);
+    shape_values.resize(support.size(), std::vector<double>(unit_points.size()));
+    for (unsigned int k = 0; k < support.size(); ++k)
+      for (unsigned int q = 0; q < unit_points.size(); ++q)
+        shape_values[k][q] = scalar_fe.shape_value(k, unit_points[q]);
+  }
+
+
+
+  void
+  PropertyInterpolator::values(
+    const typename Triangulation<3>::cell_iterator &cell,
+    std::vector<double>                           &E,
+    std::vector<double>                           &rho) const
+  {
+    const unsigned int n_q = shape_values.empty() ? 0 : shape_values[0].size();
+    E.resize(n_q);
+    rho.resize(n_q);
+
+    // Cells are axis-aligned bricks: vertex 0 is the lowest, vertex 7 the
+    // highest corner.
+    const double z0 = cell->vertex(0)[2];
+    const double hz = cell->vertex(7)[2] - z0;
+
+    if (material.get_parameters().property_mode == PropertyMode::homogeneous)
+      {
+        const double zc = z0 + 0.5 * hz;
+        std::fill(E.begin(), E.end(), material.youngs_modulus(zc));
+        std::fill(rho.begin(), rho.end(), material.density(zc));
+        return;
+      }
+
+    // Graded element, Eq. 3.3: P(q) = sum_k N_k(q) P(z_k).
+    std::fill(E.begin(), E.end(), 0.);
+    std::fill(rho.begin(), rho.end(), 0.);
+    for (unsigned int k = 0; k < unit_support_z.size(); ++k)
+      {
+        const double z     = z0 + unit_support_z[k] * hz;
+        const double E_k   = material.youngs_modulus(z);
+        const double rho_k = material.density(z);
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            E[q] += shape_values[k][q] * E_k;
+            rho[q] += shape_values[k][q] * rho_k;
+          }
+      }
+  }
+
+
+
+  void
+  PlateModel::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite element");
+    {
+      prm.declare_entry("Degree",
+                        "1",
+                        Patterns::Integer(1, 2),
+                        "Polynomial degree p of the FE_Q(p)^3 displacement "
+                        "element: 1 = the paper's 8-node graded brick, 2 = "
+                        "27-node brick.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  PlateModel::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Finite element");
+    degree = prm.get_integer("Degree");
+    prm.leave_subsection();
+  }
+
+
+
+  PlateModel::PlateModel(const Parameters                 &parameters,
+                         const PlateGeometry              &geometry,
+                         const FunctionallyGradedMaterial &material,
+                         const MPI_Comm                    mpi_communicator)
+    : parameters(parameters)
+    , geometry(geometry)
+    , material(material)
+    , mpi_communicator(mpi_communicator)
+    , triangulation(mpi_communicator)
+    , fe(FE_Q<3>(parameters.degree), 3)
+    , mapping(1)
+    , dof_handler(triangulation)
+  {}
+
+
+
+  unsigned int
+  PlateModel::n_active_cells() const
+  {
+    return triangulation.n_global_active_cells();
+  }
+
+
+
+  void
+  PlateModel::setup()
+  {
+    geometry.create_triangulation(triangulation);
+    dof_handler.distribute_dofs(fe);
+    locally_owned = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
+    setup_constraints();
+
+    TrilinosWrappers::SparsityPattern sparsity(locally_owned,
+                                               locally_owned,
+                                               locally_relevant,
+                                               mpi_communicator);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    sparsity,
+                                    constraints,
+                                    /*keep_constrained_dofs=*/false,
+                                    Utilities::MPI::this_mpi_process(
+                                      mpi_communicator));
+    sparsity.compress();
+    stiffness.reinit(sparsity);
+    mass.reinit(sparsity);
+    assemble();
+  }
+
+
+
+  void
+  PlateModel::setup_constraints()
+  {
+    constraints.clear();
+    constraints.reinit(locally_relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+
+    const auto &supports = geometry.get_parameters().supports;
+    for (unsigned int face = 0; face < 4; ++face)
+      {
+        // On x = const faces (ids 0, 1) the tangential in-plane component is
+        // v (index 1); on y = const faces (ids 2, 3) it is u (index 0).
+        const bool     x_face = (face < 2);
+        ComponentMask  mask(3, false);
+        switch (supports[face])
+          {
+            case SideSupport::free:
+              continue;
+            case SideSupport::clamped:
+              mask = ComponentMask(3, true);
+              break;
+            case SideSupport::simply_supported:
+              mask.set(2, true);
+              mask.set(x_face ? 1 : 0, true);
+              break;
+          }
+        VectorTools::interpolate_boundary_values(mapping,
+                                                 dof_handler,
+                                                 face,
+                                                 Functions::ZeroFunction<3>(3),
+                                                 constraints,
+                                                 mask);
+      }
+    constraints.close();
+  }
+
+
+
+  void
+  PlateModel::assemble()
+  {
+    const QGauss<3>    quadrature(fe.degree + 1);
+    FEValues<3>        fe_values(mapping,
+                          fe,
+                          quadrature,
+                          update_values | update_gradients |
+                            update_JxW_values);
+    PropertyInterpolator properties(fe.base_element(0),
+                                    quadrature.get_points(),
+                                    material);
+
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    const unsigned int n_q           = quadrature.size();
+    FullMatrix<double> cell_K(dofs_per_cell, dofs_per_cell);
+    FullMatrix<double> cell_M(dofs_per_cell, dofs_per_cell);
+    std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
+    std::vector<double>                  E, rho;
+
+    const double lambda_per_E = material.lambda_per_E();
+    const double mu_per_E     = material.mu_per_E();
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          properties.values(cell, E, rho);
+          cell_K = 0;
+          cell_M = 0;
+
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const double lambda = lambda_per_E * E[q];
+              const double mu     = mu_per_E * E[q];
+              const double JxW    = fe_values.JxW(q);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  const unsigned int ci =
+                    fe.system_to_component_index(i).first;
+                  const Tensor<1, 3> grad_i = fe_values.shape_grad(i, q);
+                  const double       phi_i  = fe_values.shape_value(i, q);
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    {
+                      const unsigned int cj =
+                        fe.system_to_component_index(j).first;
+                      const Tensor<1, 3> grad_j = fe_values.shape_grad(j, q);
+                      // step-8's component form of
+                      // lambda div(phi_i) div(phi_j) + 2 mu eps(phi_i):eps(phi_j)
+                      double k_ij =
+                        lambda * grad_i[ci] * grad_j[cj] +
+                        mu * grad_i[cj] * grad_j[ci];
+                      if (ci == cj)
+                        {
+                          k_ij += mu * (grad_i * grad_j);
+                          cell_M(i, j) +=
+                            rho[q] * phi_i * fe_values.shape_value(j, q) * JxW;
+                        }
+                      cell_K(i, j) += k_ij * JxW;
+                    }
+                }
+            }
+
+          cell->get_dof_indices(local_dofs);
+          constraints.distribute_local_to_global(cell_K, local_dofs, stiffness);
+          constraints.distribute_local_to_global(cell_M, local_dofs, mass);
+        }
+    stiffness.compress(VectorOperation::add);
+    mass.compress(VectorOperation::add);
+  }
+
+
+
+  void
+  PlateModel::initialize_vector(TrilinosWrappers::MPI::Vector &v) const
+  {
+    v.reinit(locally_owned, mpi_communicator);
+  }
+
+
+
+  std::pair<types::global_dof_index, Point<3>>
+  PlateModel::nearest_top_vertex_dof(const Point<2>    &xy,
+                                     const unsigned int component) const
+  {
+    const Point<3> target(xy[0], xy[1], geometry.thickness());
+    double         best_distance = std::numeric_limits<double>::max();
+    types::global_dof_index best_dof = numbers::invalid_dof_index;
+    Point<3>                best_point;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const double d = cell->vertex(v).distance(target);
+            if (d < best_distance)
+              {
+                best_distance = d;
+                best_point    = cell->vertex(v);
+                best_dof      = cell->vertex_dof_index(v, component);
+              }
+          }
+    // One rank for now; under MPI the owner of the minimum would broadcast.
+    return {best_dof, best_point};
+  }
+
+
+
+  double
+  PlateModel::total_mass() const
+  {
+    const QGauss<3> quadrature(fe.degree + 1);
+    FEValues<3>     fe_values(mapping, fe, quadrature, update_JxW_values);
+    PropertyInterpolator properties(fe.base_element(0),
+                                    quadrature.get_points(),
+                                    material);
+    std::vector<double> E, rho;
+    double              m = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          properties.values(cell, E, rho);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            m += rho[q] * fe_values.JxW(q);
+        }
+    return Utilities::MPI::sum(m, mpi_communicator);
+  }
+} // namespace fgimpact

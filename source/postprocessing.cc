@@ -1,0 +1,180 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <fgimpact/postprocessing.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace fgimpact
+{
+  StressPostprocessor::StressPostprocessor(
+    const FunctionallyGradedMaterial &material)
+    : material(material)
+  {}
+
+
+
+  std::vector<std::string>
+  StressPostprocessor::get_names() const
+  {
+    std::vector<std::string> names(9, "stress_MPa");
+    names.emplace_back("von_mises_MPa");
+    names.emplace_back("youngs_modulus_GPa");
+    names.emplace_back("density_kg_m3");
+    return names;
+  }
+
+
+
+  std::vector<DataComponentInterpretation::DataComponentInterpretation>
+  StressPostprocessor::get_data_component_interpretation() const
+  {
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(9, DataComponentInterpretation::component_is_part_of_tensor);
+    interpretation.resize(12, DataComponentInterpretation::component_is_scalar);
+    return interpretation;
+  }
+
+
+
+  UpdateFlags
+  StressPostprocessor::get_needed_update_flags() const
+  {
+    return update_gradients | update_quadrature_points;
+  }
+
+
+
+  void
+  StressPostprocessor::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<3> &inputs,
+    std::vector<Vector<double>>              &computed_quantities) const
+  {
+    const auto   cell = inputs.template get_cell<3>();
+    const double zc   = cell->center()[2];
+    const bool   graded =
+      material.get_parameters().property_mode == PropertyMode::graded;
+
+    for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
+      {
+        const double z   = graded ? inputs.evaluation_points[p][2] : zc;
+        const double E   = material.youngs_modulus(z);
+        const double rho = material.density(z);
+
+        SymmetricTensor<2, 3> eps;
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = a; b < 3; ++b)
+            eps[a][b] = 0.5 * (inputs.solution_gradients[p][a][b] +
+                               inputs.solution_gradients[p][b][a]);
+        const SymmetricTensor<2, 3> sigma =
+          E * (material.lambda_per_E() * trace(eps) * unit_symmetric_tensor<3>() +
+               2. * material.mu_per_E() * eps);
+        const SymmetricTensor<2, 3> s = deviator(sigma);
+
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = 0; b < 3; ++b)
+            computed_quantities[p][3 * a + b] = sigma[a][b] * 1e-6;
+        computed_quantities[p][9]  = std::sqrt(1.5 * (s * s)) * 1e-6;
+        computed_quantities[p][10] = E * 1e-9;
+        computed_quantities[p][11] = rho;
+      }
+  }
+
+
+
+  VtuWriter::VtuWriter(const PlateModel &plate, const std::string &directory)
+    : plate(plate)
+    , directory(directory)
+    , postprocessor(plate.get_material())
+  {}
+
+
+
+  void
+  VtuWriter::write(const unsigned int                   step,
+                   const double                         t,
+                   const TrilinosWrappers::MPI::Vector &u,
+                   const TrilinosWrappers::MPI::Vector &v)
+  {
+    const auto &dof_handler = plate.get_dof_handler();
+    // DataOut reads ghost values: copy into ghosted vectors.
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    TrilinosWrappers::MPI::Vector u_ghosted(plate.locally_owned_dofs(),
+                                            relevant,
+                                            plate.get_mpi_communicator());
+    TrilinosWrappers::MPI::Vector v_ghosted(u_ghosted);
+    u_ghosted = u;
+    v_ghosted = v;
+
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(3, DataComponentInterpretation::component_is_part_of_vector);
+
+    DataOut<3> data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(u_ghosted,
+                             std::vector<std::string>(3, "displacement_m"),
+                             DataOut<3>::type_dof_data,
+                             vector_field);
+    data_out.add_data_vector(v_ghosted,
+                             std::vector<std::string>(3, "velocity_m_s"),
+                             DataOut<3>::type_dof_data,
+                             vector_field);
+    data_out.add_data_vector(u_ghosted, postprocessor);
+    data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
+
+    DataOutBase::VtkFlags flags;
+    flags.time  = t;
+    flags.cycle = step;
+    data_out.set_flags(flags);
+
+    const std::string record = data_out.write_vtu_with_pvtu_record(
+      directory + "/", "solution", step, plate.get_mpi_communicator(), 5);
+
+    if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+      {
+        times_and_names.emplace_back(t, record);
+        std::ofstream pvd(directory + "/solution.pvd");
+        DataOutBase::write_pvd_record(pvd, times_and_names);
+      }
+  }
+
+
+
+  CsvWriter::CsvWriter(const std::string                              &filename,
+                       const std::vector<std::pair<std::string, int>> &columns)
+    : out(filename)
+  {
+    AssertThrow(out, ExcMessage("Cannot write the file " + filename));
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      {
+        out << (i ? ", " : "") << columns[i].first;
+        decimals.push_back(columns[i].second);
+      }
+    out << '\n';
+  }
+
+
+
+  void
+  CsvWriter::write_row(const std::vector<double> &values)
+  {
+    Assert(values.size() == decimals.size(),
+           ExcDimensionMismatch(values.size(), decimals.size()));
+    char buffer[64];
+    for (unsigned int i = 0; i < values.size(); ++i)
+      {
+        // Print -0.000 as 0.000: a sign flip of round-off is not a change.
+        const double scale = std::pow(10., decimals[i]);
+        const double v = (std::abs(values[i]) * scale < 0.5) ? 0. : values[i];
+        std::snprintf(buffer, sizeof(buffer), "%.*f", decimals[i], v);
+        out << (i ? ", " : "") << buffer;
+      }
+    out << '\n';
+  }
+} // namespace fgimpact

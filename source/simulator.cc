@@ -1,0 +1,565 @@
+#include <deal.II/base/timer.h>
+
+#include <fgimpact/postprocessing.h>
+#include <fgimpact/probes.h>
+#include <fgimpact/simulator.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace fgimpact
+{
+  void
+  ImpactSimulator::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    PlateGeometry::Parameters::declare_parameters(prm);
+    FunctionallyGradedMaterial::Parameters::declare_parameters(prm);
+    HertzContactLaw::Parameters::declare_parameters(prm);
+    Impactor::Parameters::declare_parameters(prm);
+    NewmarkIntegrator::Parameters::declare_parameters(prm);
+    PlateModel::Parameters::declare_parameters(prm);
+    EffectiveMatrixSolver::Parameters::declare_parameters(prm);
+
+    prm.enter_subsection("Newton");
+    {
+      prm.declare_entry("Tolerance",
+                        "1e-3",
+                        Patterns::Double(1e-15, 0.1),
+                        "Newton stops when the relative change of the "
+                        "indentation between two iterations is below this "
+                        "(the paper: 0.1 %). Newton converges quadratically "
+                        "here, so the error left is about its square. "
+                        "Dimensionless.");
+      prm.declare_entry("Max iterations",
+                        "50",
+                        Patterns::Integer(1, 10000),
+                        "Iteration cap per time step; reaching it stops the "
+                        "run with an error naming the step.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::DirectoryName(),
+                        "Directory for history.csv, summary.txt, "
+                        "parameters.prm and the VTU/PVD files; created if "
+                        "missing.");
+      prm.declare_entry("VTU interval",
+                        "0",
+                        Patterns::Integer(0, 100000000),
+                        "Write VTU every this many time steps (and the "
+                        "initial state); 0 = no VTU output.");
+      prm.declare_entry("Log interval",
+                        "50",
+                        Patterns::Integer(0, 100000000),
+                        "Print a progress line every this many steps; 0 = "
+                        "none.");
+      prm.declare_entry("Print timing",
+                        "true",
+                        Patterns::Bool(),
+                        "Print the wall-clock timing table at the end (turn "
+                        "off for reproducible logs).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ImpactSimulator::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    geometry.parse_parameters(prm);
+    material.parse_parameters(prm);
+    contact.parse_parameters(prm);
+    impactor.parse_parameters(prm);
+    time_integration.parse_parameters(prm);
+    finite_element.parse_parameters(prm);
+    linear_solver.parse_parameters(prm);
+
+    prm.enter_subsection("Newton");
+    newton_tolerance      = prm.get_double("Tolerance");
+    newton_max_iterations = prm.get_integer("Max iterations");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    output_directory = prm.get("Directory");
+    vtu_interval     = prm.get_integer("VTU interval");
+    log_interval     = prm.get_integer("Log interval");
+    print_timing     = prm.get_bool("Print timing");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ImpactSimulator::Parameters::validate() const
+  {
+    const double a = geometry.length, b = geometry.width;
+    const Impactor impactor_object(impactor);
+    const Point<2> p = impactor_object.impact_point(a, b);
+    AssertThrow(p[0] > 0 && p[0] < a,
+                ExcMessage("Impactor/Impact point x = " +
+                           std::to_string(p[0]) +
+                           " m lies outside the open interval (0, a = " +
+                           std::to_string(a) + " m)."));
+    AssertThrow(p[1] > 0 && p[1] < b,
+                ExcMessage("Impactor/Impact point y = " +
+                           std::to_string(p[1]) +
+                           " m lies outside the open interval (0, b = " +
+                           std::to_string(b) + " m)."));
+    AssertThrow(time_integration.end_time >= time_integration.time_step,
+                ExcMessage("Time integration/End time is shorter than one "
+                           "Time step."));
+    AssertThrow(time_integration.end_time / time_integration.time_step < 1e8,
+                ExcMessage("Time integration/End time divided by Time step "
+                           "exceeds 1e8 steps."));
+    AssertThrow(time_integration.beta >= time_integration.gamma / 4. - 1e-14,
+                ExcMessage("Time integration/Newmark beta must be at least "
+                           "gamma/4 for the unconditionally stable implicit "
+                           "scheme (beta = 1/4, gamma = 1/2 is the default)."));
+    AssertThrow(output_directory.find_first_not_of(" \t") != std::string::npos,
+                ExcMessage("Output/Directory is empty."));
+  }
+
+
+
+  ImpactSimulator::ImpactSimulator(const Parameters &parameters,
+                                   const MPI_Comm    mpi_communicator)
+    : parameters(parameters)
+    , mpi_communicator(mpi_communicator)
+    , pcout(std::cout,
+            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+  {}
+
+
+
+  namespace
+  {
+    /**
+     * Solve alpha + s F(alpha) = alpha_tilde for the indentation alpha by
+     * Newton's method.  R(alpha) = alpha + s F(alpha) - alpha_tilde is
+     * increasing and convex for alpha > 0, and R(alpha_tilde) >= 0, so
+     * Newton started at alpha_tilde decreases monotonically to the root.
+     * Returns the number of iterations; throws on failure.
+     */
+    unsigned int
+    solve_contact_newton(const HertzContactLaw &law,
+                         const double           s,
+                         const double           alpha_tilde,
+                         const double           tolerance,
+                         const unsigned int     max_iterations,
+                         double                &alpha)
+    {
+      alpha = alpha_tilde;
+      if (alpha_tilde <= 0.)
+        return 0; // no contact: F = 0 satisfies the equation exactly
+      for (unsigned int it = 1; it <= max_iterations; ++it)
+        {
+          const double R  = alpha + s * law.force(alpha) - alpha_tilde;
+          const double dR = 1. + s * law.force_derivative(alpha);
+          const double delta = -R / dR;
+          alpha += delta;
+          if (!std::isfinite(alpha))
+            return std::numeric_limits<unsigned int>::max();
+          if (std::abs(delta) <= tolerance * std::abs(alpha))
+            return it;
+        }
+      return std::numeric_limits<unsigned int>::max();
+    }
+  } // namespace
+
+
+
+  void
+  ImpactSimulator::run()
+  {
+    Timer total_timer;
+    TimerOutput timer(mpi_communicator,
+                      pcout,
+                      TimerOutput::never,
+                      TimerOutput::wall_times);
+
+    // ---------------------------------------------------------------- setup
+    timer.enter_subsection("setup");
+    const PlateGeometry              geometry(parameters.geometry);
+    const FunctionallyGradedMaterial material(parameters.material,
+                                              geometry.thickness());
+    const Impactor                   impactor(parameters.impactor);
+    const HertzContactLaw contact_law(parameters.contact, material, impactor);
+    const NewmarkIntegrator newmark(parameters.time_integration);
+
+    PlateModel plate(parameters.finite_element,
+                     geometry,
+                     material,
+                     mpi_communicator);
+    plate.setup();
+
+    const double       m_i     = impactor.mass();
+    const double       V0      = impactor.initial_velocity();
+    const double       dt      = newmark.time_step();
+    const double       a0      = newmark.mass_factor();
+    const unsigned int n_steps = newmark.n_steps();
+
+    results.n_dofs            = plate.n_dofs();
+    results.impactor_mass     = m_i;
+    results.plate_mass        = plate.total_mass();
+    results.contact_modulus   = contact_law.contact_modulus();
+    results.contact_stiffness = contact_law.force(1.); // beta K_h
+
+    const auto [contact_dof, contact_node] =
+      plate.nearest_top_vertex_dof(impactor.impact_point(geometry.length(),
+                                                         geometry.width()),
+                                   2);
+    AssertThrow(!plate.get_constraints().is_constrained(contact_dof),
+                ExcMessage("Impactor/Impact point: the nearest top-surface "
+                           "node lies on a supported face; move the impact "
+                           "point inside the plate."));
+
+    const PointProbe mid_probe(plate, geometry.centre(geometry.thickness() / 2));
+    const PointProbe top_probe(plate, geometry.centre(geometry.thickness()));
+
+    pcout << "fgimpact: FGM plate " << geometry.length() << " x "
+          << geometry.width() << " x " << geometry.thickness() << " m, "
+          << plate.n_active_cells() << " cells, " << plate.n_dofs()
+          << " DoFs (Q" << plate.get_fe().degree << ", "
+          << (parameters.material.property_mode == PropertyMode::graded ?
+                "graded" :
+                "homogeneous")
+          << " elements), n = " << parameters.material.power_law_index << '\n'
+          << "  impactor mass " << m_i << " kg, V0 = " << V0
+          << " m/s; Q_alpha = " << contact_law.contact_modulus() / 1e9
+          << " GPa, beta K_h = " << results.contact_stiffness
+          << " N/m^1.5\n"
+          << "  contact node (" << contact_node[0] << ", " << contact_node[1]
+          << ", " << contact_node[2] << ") m; dt = " << dt * 1e6 << " us, "
+          << n_steps << " steps\n";
+
+    // Effective matrix K + a0 M, constant: built and factorized once.
+    TrilinosWrappers::SparseMatrix effective;
+    effective.copy_from(plate.stiffness_matrix());
+    effective.add(a0, plate.mass_matrix());
+    timer.leave_subsection();
+
+    timer.enter_subsection("factorization");
+    EffectiveMatrixSolver solver(parameters.linear_solver);
+    solver.initialize(effective);
+
+    // Response c to a unit downward... (the load vector g has +1 at the
+    // contact node's z DoF; the contact force F pushes along -z, so the
+    // plate load is -F g and u = u* - F c with c = K_eff^{-1} g).
+    TrilinosWrappers::MPI::Vector g, c;
+    plate.initialize_vector(g);
+    plate.initialize_vector(c);
+    g(contact_dof) = 1.;
+    g.compress(VectorOperation::insert);
+    solver.solve(c, g);
+    // chi = g^T K_eff^{-1} g > 0: the contact node's dynamic compliance (m/N).
+    const double chi = c(contact_dof);
+    timer.leave_subsection();
+
+    // ------------------------------------------------------- time stepping
+    TrilinosWrappers::MPI::Vector u, v, a, u_new, r, rhs, Mv;
+    for (auto *vec : {&u, &v, &a, &u_new, &r, &rhs, &Mv})
+      plate.initialize_vector(*vec);
+
+    // Impactor state: displacement, velocity, acceleration, positive in the
+    // impact direction (-z).  Eq. 2.16: plate at rest, alpha(0) = 0,
+    // alpha'(0) = V0; a(0) = 0 because F(0) = 0.
+    double w_p = 0, v_p = V0, acc_p = 0;
+    double alpha = 0, F = 0;
+
+    const double E0 = 0.5 * m_i * V0 * V0;
+
+    std::unique_ptr<CsvWriter> history;
+    std::unique_ptr<VtuWriter> vtu;
+    const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
+    if (root)
+      history = std::make_unique<CsvWriter>(
+        parameters.output_directory + "/history.csv",
+        std::vector<std::pair<std::string, int>>{{"t_us", 4},
+                                                 {"contact_force_N", 4},
+                                                 {"indentation_um", 5},
+                                                 {"impactor_displacement_um", 5},
+                                                 {"impactor_velocity_m_s", 7},
+                                                 {"midplane_deflection_um", 5},
+                                                 {"top_deflection_um", 5},
+                                                 {"sigma_xx_mid_MPa", 5},
+                                                 {"sigma_yy_mid_MPa", 5},
+                                                 {"sigma_zz_mid_MPa", 5},
+                                                 {"energy_impactor_J", 9},
+                                                 {"energy_plate_kinetic_J", 9},
+                                                 {"energy_strain_J", 9},
+                                                 {"energy_contact_J", 9},
+                                                 {"energy_total_J", 9},
+                                                 {"contact_node_deflection_um", 5},
+                                                 {"newton_iterations", 0}});
+    if (parameters.vtu_interval > 0)
+      vtu = std::make_unique<VtuWriter>(plate, parameters.output_directory);
+
+    // Time history bookkeeping.
+    bool         in_contact      = true; // alpha(0) = 0 with alpha' > 0
+    bool         separated_once  = false;
+    double       separation_time = std::numeric_limits<double>::quiet_NaN();
+    double       impulse         = 0;
+    unsigned int n_impacts       = 1;
+
+    auto record = [&](const unsigned int step,
+                      const double       t,
+                      const unsigned int newton_iterations) {
+      const Tensor<1, 3>          u_mid   = mid_probe.displacement(u);
+      const Tensor<1, 3>          u_top   = top_probe.displacement(u);
+      const SymmetricTensor<2, 3> sigma   = mid_probe.stress(u);
+      const double                W_mid   = -u_mid[2];
+      const double                W_top   = -u_top[2];
+      const double                W_c     = -u(contact_dof);
+      const double                E_imp   = 0.5 * m_i * v_p * v_p;
+      const double                E_kin   = 0.5 * plate.mass_matrix().matrix_norm_square(v);
+      const double                E_str   = 0.5 * plate.stiffness_matrix().matrix_norm_square(u);
+      const double                E_con   = contact_law.potential(alpha);
+      const double                E_total = E_imp + E_kin + E_str + E_con;
+
+      results.max_energy_drift =
+        std::max(results.max_energy_drift, std::abs(E_total - E0) / E0);
+      if (F > results.peak_contact_force)
+        {
+          results.peak_contact_force = F;
+          results.time_of_peak_force = t;
+        }
+      results.max_indentation = std::max(results.max_indentation, alpha);
+      results.max_midplane_deflection =
+        std::max(results.max_midplane_deflection, W_mid);
+      results.max_top_deflection = std::max(results.max_top_deflection, W_top);
+
+      if (history)
+        history->write_row({t * 1e6,
+                            F,
+                            alpha * 1e6,
+                            w_p * 1e6,
+                            v_p,
+                            W_mid * 1e6,
+                            W_top * 1e6,
+                            sigma[0][0] * 1e-6,
+                            sigma[1][1] * 1e-6,
+                            sigma[2][2] * 1e-6,
+                            E_imp,
+                            E_kin,
+                            E_str,
+                            E_con,
+                            E_total,
+                            W_c * 1e6,
+                            static_cast<double>(newton_iterations)});
+      if (vtu && step % parameters.vtu_interval == 0)
+        {
+          timer.enter_subsection("output");
+          vtu->write(step, t, u, v);
+          timer.leave_subsection();
+        }
+      if (parameters.log_interval > 0 &&
+          (step % parameters.log_interval == 0 || step == n_steps))
+        {
+          char line[200];
+          std::snprintf(line,
+                        sizeof(line),
+                        "  step %6u  t = %9.3f us  F = %10.3f N  alpha = "
+                        "%8.4f um  W_mid = %8.4f um  E/E0 - 1 = %+.2e\n",
+                        step,
+                        t * 1e6,
+                        F,
+                        alpha * 1e6,
+                        W_mid * 1e6,
+                        E_total / E0 - 1.);
+          pcout << line;
+        }
+    };
+
+    record(0, 0., 0);
+
+    timer.enter_subsection("time loop");
+    for (unsigned int step = 1; step <= n_steps; ++step)
+      {
+        const double t = step * dt;
+
+        // Contact-free predictor: (K + a0 M) u* = M (a0 u + a1 v + a2 a).
+        newmark.predictor(u, v, a, r);
+        plate.mass_matrix().vmult(rhs, r);
+        u_new = u; // initial guess of an iterative solver
+        try
+          {
+            solver.solve(u_new, rhs);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        ExcMessage("the linear solver did not converge at "
+                                   "time step " + std::to_string(step) +
+                                   " (t = " + std::to_string(t * 1e6) +
+                                   " us) after " + std::to_string(e.last_step) +
+                                   " iterations; raise Linear solver/Max "
+                                   "iterations or use the direct solver."));
+          }
+
+        // Impactor predictor: m a0 w = m r_p - F  =>  w = w~ - F/(m a0).
+        const double w_tilde = newmark.predictor(w_p, v_p, acc_p) / a0;
+        const double W_star  = -u_new(contact_dof);
+        const double s       = 1. / (m_i * a0) + chi;
+
+        const double alpha_old = alpha;
+        const double F_old     = F;
+        const unsigned int newton_iterations =
+          solve_contact_newton(contact_law,
+                               s,
+                               w_tilde - W_star,
+                               parameters.newton_tolerance,
+                               parameters.newton_max_iterations,
+                               alpha);
+        AssertThrow(newton_iterations != std::numeric_limits<unsigned int>::max(),
+                    ExcMessage("Newton for the contact did not converge at "
+                               "time step " + std::to_string(step) + " (t = " +
+                               std::to_string(t * 1e6) + " us) within " +
+                               std::to_string(parameters.newton_max_iterations) +
+                               " iterations; reduce Time integration/Time "
+                               "step or raise Newton/Max iterations."));
+        F = contact_law.force(alpha);
+        results.max_newton_iterations =
+          std::max(results.max_newton_iterations, newton_iterations);
+
+        // Back-substitute: plate and impactor at t_{n+1}.
+        u_new.add(-F, c);
+        newmark.update(u_new, u, v, a);
+        newmark.update(w_tilde - F / (m_i * a0), w_p, v_p, acc_p);
+
+        AssertThrow(std::isfinite(alpha) && std::isfinite(w_p) &&
+                      std::isfinite(u(contact_dof)),
+                    ExcMessage("the solution is not finite (NaN or Inf) at "
+                               "time step " + std::to_string(step) + " (t = " +
+                               std::to_string(t * 1e6) + " us)."));
+
+        // Trapezoidal impulse: exact for the average acceleration rule,
+        // m (v_{n+1} - v_n) = -dt (F_n + F_{n+1})/2.
+        impulse += 0.5 * dt * (F_old + F);
+
+        // Contact episodes; separation time by linear interpolation of the
+        // indentation's zero crossing (second-order accurate).
+        const bool now_in_contact = (alpha > 0.);
+        if (in_contact && !now_in_contact && !separated_once)
+          {
+            separated_once  = true;
+            separation_time = t - dt + dt * alpha_old / (alpha_old - alpha);
+          }
+        if (!in_contact && now_in_contact)
+          ++n_impacts;
+        in_contact = now_in_contact;
+
+        record(step, t, newton_iterations);
+      }
+    timer.leave_subsection();
+
+    results.n_time_steps     = n_steps;
+    results.impulse          = impulse;
+    results.n_impacts        = n_impacts;
+    results.contact_duration = separation_time;
+    results.departure_velocity =
+      in_contact ? std::numeric_limits<double>::quiet_NaN() : -v_p;
+    // Momentum balance of the impactor: int F dt = m (V0 + V_departure),
+    // evaluated at the end of the run with its current velocity.
+    results.momentum_balance_error =
+      std::abs(impulse - m_i * (V0 - v_p)) / (m_i * V0);
+
+    if (in_contact || !separated_once)
+      pcout << "  WARNING: the impactor is still in contact at the end time; "
+               "contact_duration and departure_velocity are not defined "
+               "(raise Time integration/End time).\n";
+    if (n_impacts > 1)
+      pcout << "  note: the impactor struck the plate " << n_impacts
+            << " times.\n";
+
+    const auto summary = timer.get_summary_data(TimerOutput::total_wall_time);
+    auto       get     = [&](const std::string &name) {
+      const auto it = summary.find(name);
+      return it == summary.end() ? 0. : it->second;
+    };
+    results.setup_time         = get("setup");
+    results.factorization_time = get("factorization");
+    results.time_loop_time     = get("time loop") - get("output");
+    results.output_time        = get("output");
+    results.wall_time          = total_timer.wall_time();
+
+    write_summary();
+
+    char line[400];
+    std::snprintf(line,
+                  sizeof(line),
+                  "  peak force %.3f N at %.3f us; contact %.3f us; departure "
+                  "velocity %.6f m/s\n"
+                  "  max indentation %.4f um, mid-plane deflection %.4f um, "
+                  "top deflection %.4f um\n"
+                  "  energy drift %.3e, momentum balance error %.3e\n",
+                  results.peak_contact_force,
+                  results.time_of_peak_force * 1e6,
+                  results.contact_duration * 1e6,
+                  results.departure_velocity,
+                  results.max_indentation * 1e6,
+                  results.max_midplane_deflection * 1e6,
+                  results.max_top_deflection * 1e6,
+                  results.max_energy_drift,
+                  results.momentum_balance_error);
+    pcout << line;
+    if (parameters.print_timing)
+      pcout << "  wall time " << results.wall_time << " s (setup "
+            << results.setup_time << " s, factorization "
+            << results.factorization_time << " s, time loop "
+            << results.time_loop_time << " s, output " << results.output_time
+            << " s)\n";
+  }
+
+
+
+  void
+  ImpactSimulator::write_summary() const
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    std::ofstream out(parameters.output_directory + "/summary.txt");
+    AssertThrow(out, ExcMessage("cannot write summary.txt"));
+    auto put = [&](const char *name, const double value, const int decimals) {
+      char buffer[200];
+      std::snprintf(buffer, sizeof(buffer), "%s = %.*f\n", name, decimals, value);
+      out << buffer;
+    };
+    auto put_e = [&](const char *name, const double value) {
+      char buffer[200];
+      std::snprintf(buffer, sizeof(buffer), "%s = %.6e\n", name, value);
+      out << buffer;
+    };
+    const ImpactResults &r = results;
+    put("peak_contact_force_N", r.peak_contact_force, 4);
+    put("time_of_peak_force_us", r.time_of_peak_force * 1e6, 4);
+    put("contact_duration_us", r.contact_duration * 1e6, 4);
+    put("departure_velocity_m_s", r.departure_velocity, 7);
+    put("max_indentation_um", r.max_indentation * 1e6, 5);
+    put("max_midplane_deflection_um", r.max_midplane_deflection * 1e6, 5);
+    put("max_top_deflection_um", r.max_top_deflection * 1e6, 5);
+    put_e("contact_stiffness_Kh_N_m1.5", r.contact_stiffness);
+    put_e("contact_modulus_Q_Pa", r.contact_modulus);
+    put("impactor_mass_kg", r.impactor_mass, 8);
+    put("plate_mass_kg", r.plate_mass, 8);
+    put("impulse_N_s", r.impulse, 9);
+    put("n_impacts", r.n_impacts, 0);
+    put("n_dofs", r.n_dofs, 0);
+    put("n_time_steps", r.n_time_steps, 0);
+    put("max_newton_iterations", r.max_newton_iterations, 0);
+    put_e("max_relative_energy_drift", r.max_energy_drift);
+    put_e("momentum_balance_error", r.momentum_balance_error);
+    put("setup_s", r.setup_time, 3);
+    put("factorization_s", r.factorization_time, 3);
+    put("time_loop_s", r.time_loop_time, 3);
+    put("time_per_step_ms", 1e3 * r.time_loop_time / r.n_time_steps, 4);
+    put("output_s", r.output_time, 3);
+    put("wall_time_s", r.wall_time, 3);
+  }
+} // namespace fgimpact
