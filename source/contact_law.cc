@@ -68,8 +68,8 @@ namespace fgimpact
                         "0",
                         Patterns::Double(0., 1e20),
                         "K_h given directly (e.g. measured), overriding the "
-                        "law above; 0 = compute it from the law. "
-                        "Unit: N/m^1.5.");
+                        "law above (Swanson beta still multiplies it); 0 = "
+                        "compute it from the law. Unit: N/m^1.5.");
     }
     prm.leave_subsection();
   }

@@ -5,7 +5,7 @@
 namespace fgimpact
 {
   const std::array<std::string, 4> PlateGeometry::side_names = {
-    {"Face x = 0", "Face x = a", "Face y = 0", "Face y = b"}};
+    {"Face x min", "Face x max", "Face y min", "Face y max"}};
 
 
 
@@ -51,7 +51,8 @@ namespace fgimpact
           name,
           "simply supported",
           Patterns::Selection("simply supported|clamped|free"),
-          "Support of this whole side face. simply supported (Eq. 2.15): "
+          "Support of this whole side face (x min: x = 0, x max: x = a, y "
+          "min: y = 0, y max: y = b). simply supported (Eq. 2.15): "
           "w = 0 and the tangential in-plane displacement = 0 on the face "
           "(v on x = const, u on y = const); the normal in-plane "
           "displacement is free. clamped: u = v = w = 0. free: traction "

@@ -220,6 +220,12 @@ namespace fgimpact
                            "node lies on a supported face; move the impact "
                            "point inside the plate."));
 
+    const Point<2> impact_point =
+      impactor.impact_point(geometry.length(), geometry.width());
+    const double node_offset =
+      Point<2>(contact_node[0], contact_node[1]).distance(impact_point);
+    results.contact_node_offset = node_offset;
+
     const PointProbe mid_probe(plate, geometry.centre(geometry.thickness() / 2));
     const PointProbe top_probe(plate, geometry.centre(geometry.thickness()));
 
@@ -238,6 +244,12 @@ namespace fgimpact
           << "  contact node (" << contact_node[0] << ", " << contact_node[1]
           << ", " << contact_node[2] << ") m; dt = " << dt * 1e6 << " us, "
           << n_steps << " steps\n";
+
+    if (node_offset > 1e-9 * geometry.length())
+      pcout << "  note: no node lies at the impact point; the contact force "
+               "acts at the nearest top node, "
+            << node_offset * 1e3 << " mm away (choose Subdivisions so that "
+            << "a node lies under the impact point)\n";
 
     // Effective matrix K + a0 M, constant: built and factorized once.
     TrilinosWrappers::SparseMatrix effective;
@@ -549,6 +561,7 @@ namespace fgimpact
     put("impactor_mass_kg", r.impactor_mass, 8);
     put("plate_mass_kg", r.plate_mass, 8);
     put("impulse_N_s", r.impulse, 9);
+    put("contact_node_offset_mm", r.contact_node_offset * 1e3, 6);
     put("n_impacts", r.n_impacts, 0);
     put("n_dofs", r.n_dofs, 0);
     put("n_time_steps", r.n_time_steps, 0);

@@ -43,7 +43,7 @@ namespace fgimpact
       unsigned int subdivisions_x = 40;
       unsigned int subdivisions_y = 20;
       unsigned int subdivisions_z = 4;
-      /// Supports of the faces x = 0, x = a, y = 0, y = b.
+      /// Supports of the faces x = 0, x = a, y = 0, y = b (ids 0-3).
       std::array<SideSupport, 4> supports = {{SideSupport::simply_supported,
                                               SideSupport::simply_supported,
                                               SideSupport::simply_supported,

@@ -36,6 +36,7 @@ namespace fgimpact
     double       impactor_mass           = 0; // kg
     double       plate_mass              = 0; // kg
     double       impulse                 = 0; // N s, int F dt
+    double       contact_node_offset     = 0; // m, node to impact point
     double       max_energy_drift        = 0; // relative
     double       momentum_balance_error  = 0; // relative
     unsigned int n_impacts               = 0;

@@ -1,0 +1,74 @@
+// Bad input gets a one-line error naming the parameter, a non-zero exit
+// and no output written: runs the fgimpact executable on broken .prm files.
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+int
+main()
+{
+  struct Case
+  {
+    const char *name;
+    std::string prm;
+    const char *must_name; // text the one-line message must contain
+  };
+  const Case cases[] = {
+    {"malformed number", "subsection Geometry\n set Length a = 0.2m\nend\n", "Length a"},
+    {"out of range", "subsection Material\n set Poisson's ratio = 0.7\nend\n", "Poisson's ratio"},
+    {"unknown entry", "subsection Impactor\n set Radious = 0.01\nend\n", "Radious"},
+    {"impossible geometry: impact point outside the plate",
+     "subsection Impactor\n set Impact point x = 0.5\nend\n", "Impact point x"},
+    {"end time shorter than a step",
+     "subsection Time integration\n set End time = 1e-7\nend\n", "End time"},
+    {"bad selection", "subsection Boundary conditions\n set Face x min = pinned\nend\n",
+     "Face x min"},
+    {"unwritable output directory", "", "Output/Directory"}};
+
+  bool ok = true;
+  for (const auto &c : cases)
+    {
+      const std::string dir = std::string("bad_out_") + std::to_string(&c - cases);
+      fs::remove_all(dir);
+      const std::string out_dir =
+        std::string(c.name) == "unwritable output directory" ? "/proc/fgimpact_cannot_write" : dir;
+      {
+        std::ofstream prm("bad.prm");
+        prm << c.prm << "subsection Output\n set Directory = " << out_dir << "\nend\n";
+      }
+      const std::string command =
+        std::string(FGIMPACT_EXECUTABLE) + " bad.prm > bad.stdout 2> bad.stderr";
+      const int status = std::system(command.c_str());
+      const int exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+
+      std::ifstream      err("bad.stderr");
+      std::stringstream  buffer;
+      buffer << err.rdbuf();
+      const std::string  text  = buffer.str();
+      const auto         lines = std::count(text.begin(), text.end(), '\n');
+      const bool nonzero = exit_code != 0;
+      const bool one_line = (lines == 1);
+      const bool named = text.find(c.must_name) != std::string::npos;
+      const bool nothing_written = !fs::exists(out_dir);
+      ok = ok && nonzero && one_line && named && nothing_written;
+      std::printf("%s: non-zero exit %s, one line %s, names '%s' %s, no output %s\n",
+                  c.name,
+                  nonzero ? "yes" : "NO",
+                  one_line ? "yes" : "NO",
+                  c.must_name,
+                  named ? "yes" : "NO",
+                  nothing_written ? "yes" : "NO");
+      if (!(one_line && named))
+        std::printf("  stderr was: %s\n", text.c_str());
+    }
+  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+  return ok ? 0 : 1;
+}

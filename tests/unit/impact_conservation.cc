@@ -1,0 +1,77 @@
+// Whole-program check on a small mesh: the impact of the paper's ball on the
+// n = 1 plate conserves total energy (average-acceleration Newmark) to
+// < 0.5 %, and the impactor's momentum balance int F dt = m (V0 + V_dep)
+// holds to < 0.5 %.  Also for a homogeneous plate and a re-striking case.
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <fgimpact/simulator.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+using namespace fgimpact;
+
+namespace
+{
+  ImpactResults
+  run(const std::string &settings)
+  {
+    ParameterHandler prm;
+    ImpactSimulator::Parameters::declare_parameters(prm);
+    prm.parse_input_from_string("subsection Geometry\n set Subdivisions x = 10\n"
+                                " set Subdivisions y = 6\n set Subdivisions z = 2\nend\n"
+                                "subsection Output\n set Directory = out\n"
+                                " set Log interval = 0\n set Print timing = false\nend\n" +
+                                settings);
+    ImpactSimulator::Parameters p;
+    p.parse_parameters(prm);
+    p.validate();
+    std::filesystem::create_directories(p.output_directory);
+    // The simulator's log is not part of this test's output.
+    std::ostringstream log;
+    auto *old = std::cout.rdbuf(log.rdbuf());
+    ImpactSimulator simulator(p, MPI_COMM_WORLD);
+    simulator.run();
+    std::cout.rdbuf(old);
+    return simulator.get_results();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool ok = true;
+  const std::pair<const char *, std::string> cases[] = {
+    {"n = 1, V0 = 1 m/s", ""},
+    {"homogeneous plate, V0 = 3 m/s",
+     "subsection Material\n set Ceramic Young's modulus = 70e9\n"
+     " set Ceramic density = 2707\nend\n"
+     "subsection Impactor\n set Initial velocity = 3\nend\n"},
+    {"n = 5, 11300 kg/m^3 ball, dt = 2 us",
+     "subsection Material\n set Power-law index = 5\nend\n"
+     "subsection Impactor\n set Density = 11300\nend\n"
+     "subsection Time integration\n set Time step = 2e-6\n set End time = 600e-6\nend\n"}};
+  for (const auto &[name, settings] : cases)
+    {
+      const ImpactResults r = run(settings);
+      const bool energy   = r.max_energy_drift < 5e-3;
+      const bool momentum = r.momentum_balance_error < 5e-3;
+      const bool left     = std::isfinite(r.departure_velocity) && r.departure_velocity > 0;
+      ok = ok && energy && momentum && left;
+      std::printf("%s:\n  energy drift below 0.5 %%: %s\n"
+                  "  momentum balance error below 0.5 %%: %s\n"
+                  "  ball left the plate: %s\n",
+                  name,
+                  energy ? "yes" : "NO",
+                  momentum ? "yes" : "NO",
+                  left ? "yes" : "NO");
+    }
+  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+  return ok ? 0 : 1;
+}
