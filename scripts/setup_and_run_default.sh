@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Install the dependencies (Debian 12, as root), build fgimpact in Release and
+# run the default scene prm/default.prm; results land in output/default/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export DEBIAN_FRONTEND=noninteractive
+apt-get update
+apt-get install -y --no-install-recommends \
+  libdeal.ii-dev numdiff cmake make g++ perl openmpi-bin python3-matplotlib
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
+cmake --build build -j2 --target fgimpact
+./build/fgimpact prm/default.prm
