@@ -129,8 +129,8 @@ namespace fgimpact
     if (parameters.plate_modulus == PlateModulus::turner_graded)
       Q_plate = turner_apparent_modulus(contact_region_constants(material));
     else
-      Q_plate = p.metal_youngs_modulus /
-                (1. - p.poissons_ratio * p.poissons_ratio);
+      Q_plate =
+        p.metal_youngs_modulus / (1. - p.poissons_ratio * p.poissons_ratio);
 
     // Eq. 2.6; for a rigid impactor 1/Q_zi = 0 and this is Eq. 2.7.
     Q_alpha = 1. / (1. / impactor.indentation_modulus() + 1. / Q_plate);
@@ -145,8 +145,9 @@ namespace fgimpact
   double
   HertzContactLaw::force(const double alpha) const
   {
-    return alpha > 0. ? parameters.swanson_beta * K_h * alpha * std::sqrt(alpha) :
-                        0.;
+    return alpha > 0. ?
+             parameters.swanson_beta * K_h * alpha * std::sqrt(alpha) :
+             0.;
   }
 
 

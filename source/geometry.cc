@@ -82,9 +82,10 @@ namespace fgimpact
       for (unsigned int f = 0; f < 4; ++f)
         {
           const std::string s = prm.get(side_names[f]);
-          supports[f] = (s == "simply supported" ? SideSupport::simply_supported :
-                         s == "clamped"          ? SideSupport::clamped :
-                                                   SideSupport::free);
+          supports[f] =
+            (s == "simply supported" ? SideSupport::simply_supported :
+             s == "clamped"          ? SideSupport::clamped :
+                                       SideSupport::free);
         }
     }
     prm.leave_subsection();
@@ -101,14 +102,15 @@ namespace fgimpact
   void
   PlateGeometry::create_triangulation(Triangulation<3> &triangulation) const
   {
-    GridGenerator::subdivided_hyper_rectangle(
-      triangulation,
-      {parameters.subdivisions_x,
-       parameters.subdivisions_y,
-       parameters.subdivisions_z},
-      Point<3>(),
-      Point<3>(parameters.length, parameters.width, parameters.thickness),
-      /*colorize=*/true);
+    GridGenerator::subdivided_hyper_rectangle(triangulation,
+                                              {parameters.subdivisions_x,
+                                               parameters.subdivisions_y,
+                                               parameters.subdivisions_z},
+                                              Point<3>(),
+                                              Point<3>(parameters.length,
+                                                       parameters.width,
+                                                       parameters.thickness),
+                                              /*colorize=*/true);
   }
 
 

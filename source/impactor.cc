@@ -96,8 +96,7 @@ namespace fgimpact
   {
     if (parameters.given_mass > 0.)
       return parameters.given_mass;
-    return 4. / 3. * M_PI * std::pow(parameters.radius, 3) *
-           parameters.density;
+    return 4. / 3. * M_PI * std::pow(parameters.radius, 3) * parameters.density;
   }
 
 

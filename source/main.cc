@@ -121,9 +121,20 @@ main(int argc, char *argv[])
       else
         {
           if (root)
-            std::cerr << "fgimpact: error: more than one parameter file given\n";
+            std::cerr
+              << "fgimpact: error: more than one parameter file given\n";
           return 1;
         }
+    }
+
+  // The time loop reads the contact node's DoF directly; distributed runs
+  // (contact node and probes owned by any rank) are not implemented yet.
+  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    {
+      if (root)
+        std::cerr << "fgimpact: error: runs on more than one MPI rank are "
+                     "not supported yet; run on one rank\n";
+      return 1;
     }
 
   ParameterHandler            prm;
@@ -141,8 +152,9 @@ main(int argc, char *argv[])
   catch (const ExceptionBase &e)
     {
       if (root)
-        std::cerr << "fgimpact: error in " << (prm_file.empty() ? "defaults" : prm_file)
-                  << ": " << message_of(e) << '\n';
+        std::cerr << "fgimpact: error in "
+                  << (prm_file.empty() ? "defaults" : prm_file) << ": "
+                  << message_of(e) << '\n';
       return 1;
     }
   catch (const std::exception &e)

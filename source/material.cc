@@ -71,9 +71,9 @@ namespace fgimpact
       ceramic_density        = prm.get_double("Ceramic density");
       poissons_ratio         = prm.get_double("Poisson's ratio");
       power_law_index        = prm.get_double("Power-law index");
-      property_mode = (prm.get("Property mode") == "graded" ?
-                         PropertyMode::graded :
-                         PropertyMode::homogeneous);
+      property_mode =
+        (prm.get("Property mode") == "graded" ? PropertyMode::graded :
+                                                PropertyMode::homogeneous);
     }
     prm.leave_subsection();
   }

@@ -16,7 +16,7 @@
 namespace fgimpact
 {
   PropertyInterpolator::PropertyInterpolator(
-    const FiniteElement<3>          &scalar_fe,
+    const FiniteElement<3>           &scalar_fe,
     const std::vector<Point<3>>      &unit_points,
     const FunctionallyGradedMaterial &material)
     : material(material)
@@ -26,7 +26,8 @@ namespace fgimpact
     const auto &support = scalar_fe.get_unit_support_points();
     for (const auto &p : support)
       unit_support_z.push_back(p[2]);
-    shape_values.resize(support.size(), std::vector<double>(unit_points.size()));
+    shape_values.resize(support.size(),
+                        std::vector<double>(unit_points.size()));
     for (unsigned int k = 0; k < support.size(); ++k)
       for (unsigned int q = 0; q < unit_points.size(); ++q)
         shape_values[k][q] = scalar_fe.shape_value(k, unit_points[q]);
@@ -37,8 +38,8 @@ namespace fgimpact
   void
   PropertyInterpolator::values(
     const typename Triangulation<3>::cell_iterator &cell,
-    std::vector<double>                           &E,
-    std::vector<double>                           &rho) const
+    std::vector<double>                            &E,
+    std::vector<double>                            &rho) const
   {
     const unsigned int n_q = shape_values.empty() ? 0 : shape_values[0].size();
     E.resize(n_q);
@@ -165,8 +166,8 @@ namespace fgimpact
       {
         // On x = const faces (ids 0, 1) the tangential in-plane component is
         // v (index 1); on y = const faces (ids 2, 3) it is u (index 0).
-        const bool     x_face = (face < 2);
-        ComponentMask  mask(3, false);
+        const bool    x_face = (face < 2);
+        ComponentMask mask(3, false);
         switch (supports[face])
           {
             case SideSupport::free:
@@ -194,20 +195,19 @@ namespace fgimpact
   void
   PlateModel::assemble()
   {
-    const QGauss<3>    quadrature(fe.degree + 1);
-    FEValues<3>        fe_values(mapping,
+    const QGauss<3>      quadrature(fe.degree + 1);
+    FEValues<3>          fe_values(mapping,
                           fe,
                           quadrature,
-                          update_values | update_gradients |
-                            update_JxW_values);
+                          update_values | update_gradients | update_JxW_values);
     PropertyInterpolator properties(fe.base_element(0),
                                     quadrature.get_points(),
                                     material);
 
-    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
-    const unsigned int n_q           = quadrature.size();
-    FullMatrix<double> cell_K(dofs_per_cell, dofs_per_cell);
-    FullMatrix<double> cell_M(dofs_per_cell, dofs_per_cell);
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+    const unsigned int                   n_q           = quadrature.size();
+    FullMatrix<double>                   cell_K(dofs_per_cell, dofs_per_cell);
+    FullMatrix<double>                   cell_M(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
     std::vector<double>                  E, rho;
 
@@ -229,8 +229,7 @@ namespace fgimpact
               const double JxW    = fe_values.JxW(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
-                  const unsigned int ci =
-                    fe.system_to_component_index(i).first;
+                  const unsigned int ci = fe.system_to_component_index(i).first;
                   const Tensor<1, 3> grad_i = fe_values.shape_grad(i, q);
                   const double       phi_i  = fe_values.shape_value(i, q);
                   for (unsigned int j = 0; j < dofs_per_cell; ++j)
@@ -239,10 +238,10 @@ namespace fgimpact
                         fe.system_to_component_index(j).first;
                       const Tensor<1, 3> grad_j = fe_values.shape_grad(j, q);
                       // step-8's component form of
-                      // lambda div(phi_i) div(phi_j) + 2 mu eps(phi_i):eps(phi_j)
-                      double k_ij =
-                        lambda * grad_i[ci] * grad_j[cj] +
-                        mu * grad_i[cj] * grad_j[ci];
+                      // lambda div(phi_i) div(phi_j) + 2 mu
+                      // eps(phi_i):eps(phi_j)
+                      double k_ij = lambda * grad_i[ci] * grad_j[cj] +
+                                    mu * grad_i[cj] * grad_j[ci];
                       if (ci == cj)
                         {
                           k_ij += mu * (grad_i * grad_j);
@@ -276,9 +275,9 @@ namespace fgimpact
   PlateModel::nearest_top_vertex_dof(const Point<2>    &xy,
                                      const unsigned int component) const
   {
-    const Point<3> target(xy[0], xy[1], geometry.thickness());
-    double         best_distance = std::numeric_limits<double>::max();
-    types::global_dof_index best_dof = numbers::invalid_dof_index;
+    const Point<3>          target(xy[0], xy[1], geometry.thickness());
+    double                  best_distance = std::numeric_limits<double>::max();
+    types::global_dof_index best_dof      = numbers::invalid_dof_index;
     Point<3>                best_point;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -302,13 +301,13 @@ namespace fgimpact
   double
   PlateModel::total_mass() const
   {
-    const QGauss<3> quadrature(fe.degree + 1);
-    FEValues<3>     fe_values(mapping, fe, quadrature, update_JxW_values);
+    const QGauss<3>      quadrature(fe.degree + 1);
+    FEValues<3>          fe_values(mapping, fe, quadrature, update_JxW_values);
     PropertyInterpolator properties(fe.base_element(0),
                                     quadrature.get_points(),
                                     material);
-    std::vector<double> E, rho;
-    double              m = 0;
+    std::vector<double>  E, rho;
+    double               m = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {

@@ -35,7 +35,8 @@ namespace fgimpact
   StressPostprocessor::get_data_component_interpretation() const
   {
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      interpretation(9, DataComponentInterpretation::component_is_part_of_tensor);
+      interpretation(9,
+                     DataComponentInterpretation::component_is_part_of_tensor);
     interpretation.resize(12, DataComponentInterpretation::component_is_scalar);
     return interpretation;
   }
@@ -72,8 +73,9 @@ namespace fgimpact
             eps[a][b] = 0.5 * (inputs.solution_gradients[p][a][b] +
                                inputs.solution_gradients[p][b][a]);
         const SymmetricTensor<2, 3> sigma =
-          E * (material.lambda_per_E() * trace(eps) * unit_symmetric_tensor<3>() +
-               2. * material.mu_per_E() * eps);
+          E *
+          (material.lambda_per_E() * trace(eps) * unit_symmetric_tensor<3>() +
+           2. * material.mu_per_E() * eps);
         const SymmetricTensor<2, 3> s = deviator(sigma);
 
         for (unsigned int a = 0; a < 3; ++a)

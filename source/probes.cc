@@ -12,7 +12,8 @@ namespace fgimpact
 {
   namespace
   {
-    constexpr unsigned int voigt[6][2] = {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+    constexpr unsigned int voigt[6][2] =
+      {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
   }
 
 
@@ -37,9 +38,9 @@ namespace fgimpact
 
     for (const auto &[cell, unit_point] : cells)
       {
-        const Quadrature<3> quadrature(
-          std::vector<Point<3>>{GeometryInfo<3>::project_to_unit_cell(unit_point)});
-        FEValues<3> fe_values(plate.get_mapping(),
+        const Quadrature<3> quadrature(std::vector<Point<3>>{
+          GeometryInfo<3>::project_to_unit_cell(unit_point)});
+        FEValues<3>         fe_values(plate.get_mapping(),
                               fe,
                               quadrature,
                               update_values | update_gradients);

@@ -99,17 +99,15 @@ namespace fgimpact
   void
   ImpactSimulator::Parameters::validate() const
   {
-    const double a = geometry.length, b = geometry.width;
+    const double   a = geometry.length, b = geometry.width;
     const Impactor impactor_object(impactor);
     const Point<2> p = impactor_object.impact_point(a, b);
     AssertThrow(p[0] > 0 && p[0] < a,
-                ExcMessage("Impactor/Impact point x = " +
-                           std::to_string(p[0]) +
+                ExcMessage("Impactor/Impact point x = " + std::to_string(p[0]) +
                            " m lies outside the open interval (0, a = " +
                            std::to_string(a) + " m)."));
     AssertThrow(p[1] > 0 && p[1] < b,
-                ExcMessage("Impactor/Impact point y = " +
-                           std::to_string(p[1]) +
+                ExcMessage("Impactor/Impact point y = " + std::to_string(p[1]) +
                            " m lies outside the open interval (0, b = " +
                            std::to_string(b) + " m)."));
     AssertThrow(time_integration.end_time >= time_integration.time_step,
@@ -132,8 +130,7 @@ namespace fgimpact
                                    const MPI_Comm    mpi_communicator)
     : parameters(parameters)
     , mpi_communicator(mpi_communicator)
-    , pcout(std::cout,
-            Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
   {}
 
 
@@ -160,8 +157,8 @@ namespace fgimpact
         return 0; // no contact: F = 0 satisfies the equation exactly
       for (unsigned int it = 1; it <= max_iterations; ++it)
         {
-          const double R  = alpha + s * law.force(alpha) - alpha_tilde;
-          const double dR = 1. + s * law.force_derivative(alpha);
+          const double R     = alpha + s * law.force(alpha) - alpha_tilde;
+          const double dR    = 1. + s * law.force_derivative(alpha);
           const double delta = -R / dR;
           alpha += delta;
           if (!std::isfinite(alpha))
@@ -178,19 +175,20 @@ namespace fgimpact
   void
   ImpactSimulator::run()
   {
-    Timer total_timer;
-    TimerOutput timer(mpi_communicator,
-                      pcout,
-                      TimerOutput::never,
-                      TimerOutput::wall_times);
+    // Plain timers (not TimerOutput, whose destructor writes to the screen
+    // when an exception such as a Newton failure is on its way out).
+    Timer total_timer, setup_timer, factorization_timer, loop_timer,
+      output_timer;
+    output_timer.stop();
+    output_timer.reset();
 
     // ---------------------------------------------------------------- setup
-    timer.enter_subsection("setup");
+    setup_timer.restart();
     const PlateGeometry              geometry(parameters.geometry);
     const FunctionallyGradedMaterial material(parameters.material,
                                               geometry.thickness());
     const Impactor                   impactor(parameters.impactor);
-    const HertzContactLaw contact_law(parameters.contact, material, impactor);
+    const HertzContactLaw   contact_law(parameters.contact, material, impactor);
     const NewmarkIntegrator newmark(parameters.time_integration);
 
     PlateModel plate(parameters.finite_element,
@@ -211,10 +209,8 @@ namespace fgimpact
     results.contact_modulus   = contact_law.contact_modulus();
     results.contact_stiffness = contact_law.force(1.); // beta K_h
 
-    const auto [contact_dof, contact_node] =
-      plate.nearest_top_vertex_dof(impactor.impact_point(geometry.length(),
-                                                         geometry.width()),
-                                   2);
+    const auto [contact_dof, contact_node] = plate.nearest_top_vertex_dof(
+      impactor.impact_point(geometry.length(), geometry.width()), 2);
     AssertThrow(!plate.get_constraints().is_constrained(contact_dof),
                 ExcMessage("Impactor/Impact point: the nearest top-surface "
                            "node lies on a supported face; move the impact "
@@ -226,7 +222,8 @@ namespace fgimpact
       Point<2>(contact_node[0], contact_node[1]).distance(impact_point);
     results.contact_node_offset = node_offset;
 
-    const PointProbe mid_probe(plate, geometry.centre(geometry.thickness() / 2));
+    const PointProbe mid_probe(plate,
+                               geometry.centre(geometry.thickness() / 2));
     const PointProbe top_probe(plate, geometry.centre(geometry.thickness()));
 
     pcout << "fgimpact: FGM plate " << geometry.length() << " x "
@@ -239,8 +236,7 @@ namespace fgimpact
           << " elements), n = " << parameters.material.power_law_index << '\n'
           << "  impactor mass " << m_i << " kg, V0 = " << V0
           << " m/s; Q_alpha = " << contact_law.contact_modulus() / 1e9
-          << " GPa, beta K_h = " << results.contact_stiffness
-          << " N/m^1.5\n"
+          << " GPa, beta K_h = " << results.contact_stiffness << " N/m^1.5\n"
           << "  contact node (" << contact_node[0] << ", " << contact_node[1]
           << ", " << contact_node[2] << ") m; dt = " << dt * 1e6 << " us, "
           << n_steps << " steps\n";
@@ -255,9 +251,9 @@ namespace fgimpact
     TrilinosWrappers::SparseMatrix effective;
     effective.copy_from(plate.stiffness_matrix());
     effective.add(a0, plate.mass_matrix());
-    timer.leave_subsection();
+    setup_timer.stop();
 
-    timer.enter_subsection("factorization");
+    factorization_timer.restart();
     EffectiveMatrixSolver solver(parameters.linear_solver);
     solver.initialize(effective);
 
@@ -272,7 +268,7 @@ namespace fgimpact
     solver.solve(c, g);
     // chi = g^T K_eff^{-1} g > 0: the contact node's dynamic compliance (m/N).
     const double chi = c(contact_dof);
-    timer.leave_subsection();
+    factorization_timer.stop();
 
     // ------------------------------------------------------- time stepping
     TrilinosWrappers::MPI::Vector u, v, a, u_new, r, rhs, Mv;
@@ -291,25 +287,27 @@ namespace fgimpact
     std::unique_ptr<VtuWriter> vtu;
     const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;
     if (root)
-      history = std::make_unique<CsvWriter>(
-        parameters.output_directory + "/history.csv",
-        std::vector<std::pair<std::string, int>>{{"t_us", 4},
-                                                 {"contact_force_N", 4},
-                                                 {"indentation_um", 5},
-                                                 {"impactor_displacement_um", 5},
-                                                 {"impactor_velocity_m_s", 7},
-                                                 {"midplane_deflection_um", 5},
-                                                 {"top_deflection_um", 5},
-                                                 {"sigma_xx_mid_MPa", 5},
-                                                 {"sigma_yy_mid_MPa", 5},
-                                                 {"sigma_zz_mid_MPa", 5},
-                                                 {"energy_impactor_J", 9},
-                                                 {"energy_plate_kinetic_J", 9},
-                                                 {"energy_strain_J", 9},
-                                                 {"energy_contact_J", 9},
-                                                 {"energy_total_J", 9},
-                                                 {"contact_node_deflection_um", 5},
-                                                 {"newton_iterations", 0}});
+      history =
+        std::make_unique<CsvWriter>(parameters.output_directory +
+                                      "/history.csv",
+                                    std::vector<std::pair<std::string, int>>{
+                                      {"t_us", 4},
+                                      {"contact_force_N", 4},
+                                      {"indentation_um", 5},
+                                      {"impactor_displacement_um", 5},
+                                      {"impactor_velocity_m_s", 7},
+                                      {"midplane_deflection_um", 5},
+                                      {"top_deflection_um", 5},
+                                      {"sigma_xx_mid_MPa", 5},
+                                      {"sigma_yy_mid_MPa", 5},
+                                      {"sigma_zz_mid_MPa", 5},
+                                      {"energy_impactor_J", 9},
+                                      {"energy_plate_kinetic_J", 9},
+                                      {"energy_strain_J", 9},
+                                      {"energy_contact_J", 9},
+                                      {"energy_total_J", 9},
+                                      {"contact_node_deflection_um", 5},
+                                      {"newton_iterations", 0}});
     if (parameters.vtu_interval > 0)
       vtu = std::make_unique<VtuWriter>(plate, parameters.output_directory);
 
@@ -323,17 +321,17 @@ namespace fgimpact
     auto record = [&](const unsigned int step,
                       const double       t,
                       const unsigned int newton_iterations) {
-      const Tensor<1, 3>          u_mid   = mid_probe.displacement(u);
-      const Tensor<1, 3>          u_top   = top_probe.displacement(u);
-      const SymmetricTensor<2, 3> sigma   = mid_probe.stress(u);
-      const double                W_mid   = -u_mid[2];
-      const double                W_top   = -u_top[2];
-      const double                W_c     = -u(contact_dof);
-      const double                E_imp   = 0.5 * m_i * v_p * v_p;
-      const double                E_kin   = 0.5 * plate.mass_matrix().matrix_norm_square(v);
-      const double                E_str   = 0.5 * plate.stiffness_matrix().matrix_norm_square(u);
-      const double                E_con   = contact_law.potential(alpha);
-      const double                E_total = E_imp + E_kin + E_str + E_con;
+      const Tensor<1, 3>          u_mid = mid_probe.displacement(u);
+      const Tensor<1, 3>          u_top = top_probe.displacement(u);
+      const SymmetricTensor<2, 3> sigma = mid_probe.stress(u);
+      const double                W_mid = -u_mid[2];
+      const double                W_top = -u_top[2];
+      const double                W_c   = -u(contact_dof);
+      const double                E_imp = 0.5 * m_i * v_p * v_p;
+      const double E_kin = 0.5 * plate.mass_matrix().matrix_norm_square(v);
+      const double E_str = 0.5 * plate.stiffness_matrix().matrix_norm_square(u);
+      const double E_con = contact_law.potential(alpha);
+      const double E_total = E_imp + E_kin + E_str + E_con;
 
       results.max_energy_drift =
         std::max(results.max_energy_drift, std::abs(E_total - E0) / E0);
@@ -367,9 +365,9 @@ namespace fgimpact
                             static_cast<double>(newton_iterations)});
       if (vtu && step % parameters.vtu_interval == 0)
         {
-          timer.enter_subsection("output");
+          output_timer.start();
           vtu->write(step, t, u, v);
-          timer.leave_subsection();
+          output_timer.stop();
         }
       if (parameters.log_interval > 0 &&
           (step % parameters.log_interval == 0 || step == n_steps))
@@ -391,7 +389,7 @@ namespace fgimpact
 
     record(0, 0., 0);
 
-    timer.enter_subsection("time loop");
+    loop_timer.restart();
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
         const double t = step * dt;
@@ -408,7 +406,8 @@ namespace fgimpact
           {
             AssertThrow(false,
                         ExcMessage("the linear solver did not converge at "
-                                   "time step " + std::to_string(step) +
+                                   "time step " +
+                                   std::to_string(step) +
                                    " (t = " + std::to_string(t * 1e6) +
                                    " us) after " + std::to_string(e.last_step) +
                                    " iterations; raise Linear solver/Max "
@@ -420,8 +419,8 @@ namespace fgimpact
         const double W_star  = -u_new(contact_dof);
         const double s       = 1. / (m_i * a0) + chi;
 
-        const double alpha_old = alpha;
-        const double F_old     = F;
+        const double       alpha_old = alpha;
+        const double       F_old     = F;
         const unsigned int newton_iterations =
           solve_contact_newton(contact_law,
                                s,
@@ -429,13 +428,15 @@ namespace fgimpact
                                parameters.newton_tolerance,
                                parameters.newton_max_iterations,
                                alpha);
-        AssertThrow(newton_iterations != std::numeric_limits<unsigned int>::max(),
-                    ExcMessage("Newton for the contact did not converge at "
-                               "time step " + std::to_string(step) + " (t = " +
-                               std::to_string(t * 1e6) + " us) within " +
-                               std::to_string(parameters.newton_max_iterations) +
-                               " iterations; reduce Time integration/Time "
-                               "step or raise Newton/Max iterations."));
+        AssertThrow(
+          newton_iterations != std::numeric_limits<unsigned int>::max(),
+          ExcMessage("Newton for the contact did not converge at "
+                     "time step " +
+                     std::to_string(step) + " (t = " + std::to_string(t * 1e6) +
+                     " us) within " +
+                     std::to_string(parameters.newton_max_iterations) +
+                     " iterations; reduce Time integration/Time "
+                     "step or raise Newton/Max iterations."));
         F = contact_law.force(alpha);
         results.max_newton_iterations =
           std::max(results.max_newton_iterations, newton_iterations);
@@ -448,8 +449,9 @@ namespace fgimpact
         AssertThrow(std::isfinite(alpha) && std::isfinite(w_p) &&
                       std::isfinite(u(contact_dof)),
                     ExcMessage("the solution is not finite (NaN or Inf) at "
-                               "time step " + std::to_string(step) + " (t = " +
-                               std::to_string(t * 1e6) + " us)."));
+                               "time step " +
+                               std::to_string(step) +
+                               " (t = " + std::to_string(t * 1e6) + " us)."));
 
         // Trapezoidal impulse: exact for the average acceleration rule,
         // m (v_{n+1} - v_n) = -dt (F_n + F_{n+1})/2.
@@ -469,7 +471,7 @@ namespace fgimpact
 
         record(step, t, newton_iterations);
       }
-    timer.leave_subsection();
+    loop_timer.stop();
 
     results.n_time_steps     = n_steps;
     results.impulse          = impulse;
@@ -490,15 +492,10 @@ namespace fgimpact
       pcout << "  note: the impactor struck the plate " << n_impacts
             << " times.\n";
 
-    const auto summary = timer.get_summary_data(TimerOutput::total_wall_time);
-    auto       get     = [&](const std::string &name) {
-      const auto it = summary.find(name);
-      return it == summary.end() ? 0. : it->second;
-    };
-    results.setup_time         = get("setup");
-    results.factorization_time = get("factorization");
-    results.time_loop_time     = get("time loop") - get("output");
-    results.output_time        = get("output");
+    results.setup_time         = setup_timer.wall_time();
+    results.factorization_time = factorization_timer.wall_time();
+    results.output_time        = output_timer.wall_time();
+    results.time_loop_time     = loop_timer.wall_time() - results.output_time;
     results.wall_time          = total_timer.wall_time();
 
     write_summary();
@@ -540,7 +537,8 @@ namespace fgimpact
     AssertThrow(out, ExcMessage("cannot write summary.txt"));
     auto put = [&](const char *name, const double value, const int decimals) {
       char buffer[200];
-      std::snprintf(buffer, sizeof(buffer), "%s = %.*f\n", name, decimals, value);
+      std::snprintf(
+        buffer, sizeof(buffer), "%s = %.*f\n", name, decimals, value);
       out << buffer;
     };
     auto put_e = [&](const char *name, const double value) {

@@ -79,8 +79,10 @@ namespace fgimpact
       double       swanson_beta    = 1.;
       double       given_stiffness = 0.; // N/m^1.5, 0: from the law
 
-      static void declare_parameters(ParameterHandler &prm);
-      void        parse_parameters(ParameterHandler &prm);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
     };
 
     HertzContactLaw(const Parameters                 &parameters,
@@ -92,22 +94,37 @@ namespace fgimpact
     contact_region_constants(const FunctionallyGradedMaterial &material);
 
     /// Q_zp of the plate (Pa).
-    double plate_modulus() const { return Q_plate; }
+    double
+    plate_modulus() const
+    {
+      return Q_plate;
+    }
 
     /// Q_alpha (Pa), Eq. 2.6 or 2.7.
-    double contact_modulus() const { return Q_alpha; }
+    double
+    contact_modulus() const
+    {
+      return Q_alpha;
+    }
 
     /// K_h = 4/3 Q_alpha sqrt(R) (N/m^1.5), or the given stiffness.
-    double stiffness() const { return K_h; }
+    double
+    stiffness() const
+    {
+      return K_h;
+    }
 
     /// Contact force F(alpha) = beta K_h alpha_+^{3/2} (N).
-    double force(const double alpha) const;
+    double
+    force(const double alpha) const;
 
     /// dF/dalpha (N/m).
-    double force_derivative(const double alpha) const;
+    double
+    force_derivative(const double alpha) const;
 
     /// Stored Hertz energy 2/5 beta K_h alpha_+^{5/2} (J).
-    double potential(const double alpha) const;
+    double
+    potential(const double alpha) const;
 
   private:
     const Parameters parameters;

@@ -49,26 +49,47 @@ namespace fgimpact
                                               SideSupport::simply_supported,
                                               SideSupport::simply_supported}};
 
-      static void declare_parameters(ParameterHandler &prm);
-      void        parse_parameters(ParameterHandler &prm);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
     };
 
     explicit PlateGeometry(const Parameters &parameters);
 
     /// Fill an empty triangulation with the subdivided brick.
-    void create_triangulation(Triangulation<3> &triangulation) const;
+    void
+    create_triangulation(Triangulation<3> &triangulation) const;
 
-    double length() const { return parameters.length; }
-    double width() const { return parameters.width; }
-    double thickness() const { return parameters.thickness; }
+    double
+    length() const
+    {
+      return parameters.length;
+    }
+    double
+    width() const
+    {
+      return parameters.width;
+    }
+    double
+    thickness() const
+    {
+      return parameters.thickness;
+    }
 
     /// Centre of the plate at height z (m).
-    Point<3> centre(const double z) const;
+    Point<3>
+    centre(const double z) const;
 
     /// Whether p lies inside the closed plate up to a relative tolerance.
-    bool contains(const Point<3> &p) const;
+    bool
+    contains(const Point<3> &p) const;
 
-    const Parameters &get_parameters() const { return parameters; }
+    const Parameters &
+    get_parameters() const
+    {
+      return parameters;
+    }
 
     /// The names of the four side faces, in the order of `supports`.
     static const std::array<std::string, 4> side_names;

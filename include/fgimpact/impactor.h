@@ -28,28 +28,49 @@ namespace fgimpact
       double youngs_modulus   = 207e9;
       double poissons_ratio   = 0.3;
 
-      static void declare_parameters(ParameterHandler &prm);
-      void        parse_parameters(ParameterHandler &prm);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
     };
 
     explicit Impactor(const Parameters &parameters);
 
     /// Mass m_i in kg: 4/3 pi R^3 rho_i unless given directly.
-    double mass() const;
+    double
+    mass() const;
 
-    double radius() const { return parameters.radius; }
-    double initial_velocity() const { return parameters.initial_velocity; }
+    double
+    radius() const
+    {
+      return parameters.radius;
+    }
+    double
+    initial_velocity() const
+    {
+      return parameters.initial_velocity;
+    }
 
     /// Indentation modulus of the impactor, Q_zi = E_i/(1 - nu_i^2) (Pa),
     /// infinite for a rigid impactor (Eq. 2.7).
-    double indentation_modulus() const;
+    double
+    indentation_modulus() const;
 
-    bool is_rigid() const { return !parameters.elastic; }
+    bool
+    is_rigid() const
+    {
+      return !parameters.elastic;
+    }
 
     /// Impact point on the top face (x, y) in m, given the plate size.
-    Point<2> impact_point(const double a, const double b) const;
+    Point<2>
+    impact_point(const double a, const double b) const;
 
-    const Parameters &get_parameters() const { return parameters; }
+    const Parameters &
+    get_parameters() const
+    {
+      return parameters;
+    }
 
   private:
     const Parameters parameters;

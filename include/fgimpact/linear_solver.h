@@ -32,29 +32,37 @@ namespace fgimpact
       double       tolerance      = 1e-12;
       unsigned int max_iterations = 1000;
 
-      static void declare_parameters(ParameterHandler &prm);
-      void        parse_parameters(ParameterHandler &prm);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
     };
 
     explicit EffectiveMatrixSolver(const Parameters &parameters);
 
     /// Factorize or precondition A; A must outlive this object.
-    void initialize(const TrilinosWrappers::SparseMatrix &A);
+    void
+    initialize(const TrilinosWrappers::SparseMatrix &A);
 
     /// Solve A x = b; x on input is the initial guess of CG.
-    void solve(TrilinosWrappers::MPI::Vector       &x,
-               const TrilinosWrappers::MPI::Vector &b);
+    void
+    solve(TrilinosWrappers::MPI::Vector       &x,
+          const TrilinosWrappers::MPI::Vector &b);
 
     /// CG iterations of the last solve (0 for direct).
-    unsigned int last_iterations() const { return iterations; }
+    unsigned int
+    last_iterations() const
+    {
+      return iterations;
+    }
 
   private:
-    const Parameters                                  parameters;
-    const TrilinosWrappers::SparseMatrix             *matrix = nullptr;
-    SolverControl                                     control;
-    std::unique_ptr<TrilinosWrappers::SolverDirect>   direct;
+    const Parameters                                    parameters;
+    const TrilinosWrappers::SparseMatrix               *matrix = nullptr;
+    SolverControl                                       control;
+    std::unique_ptr<TrilinosWrappers::SolverDirect>     direct;
     std::unique_ptr<TrilinosWrappers::PreconditionSSOR> preconditioner;
-    unsigned int                                      iterations = 0;
+    unsigned int                                        iterations = 0;
   };
 } // namespace fgimpact
 

@@ -42,40 +42,61 @@ namespace fgimpact
       double       power_law_index        = 1.;
       PropertyMode property_mode          = PropertyMode::graded;
 
-      static void declare_parameters(ParameterHandler &prm);
-      void        parse_parameters(ParameterHandler &prm);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
     };
 
     FunctionallyGradedMaterial(const Parameters &parameters,
                                const double      thickness);
 
     /// Metal volume fraction (z/h)^n at height z (m), clipped to [0, h].
-    double metal_volume_fraction(const double z) const;
+    double
+    metal_volume_fraction(const double z) const;
 
     /// Young's modulus E(z) in Pa.
-    double youngs_modulus(const double z) const;
+    double
+    youngs_modulus(const double z) const;
 
     /// Mass density rho(z) in kg/m^3.
-    double density(const double z) const;
+    double
+    density(const double z) const;
 
-    double poissons_ratio() const { return parameters.poissons_ratio; }
+    double
+    poissons_ratio() const
+    {
+      return parameters.poissons_ratio;
+    }
 
     /// Lame's first parameter per unit Young's modulus, lambda/E.
-    double lambda_per_E() const;
+    double
+    lambda_per_E() const;
 
     /// Shear modulus per unit Young's modulus, mu/E = 1/(2(1+nu)).
-    double mu_per_E() const;
+    double
+    mu_per_E() const;
 
     /// Total metal volume fraction of the whole thickness, Eq. 2.2:
     /// V_m = 1/(1+n).
-    double total_metal_volume_fraction() const;
+    double
+    total_metal_volume_fraction() const;
 
     /// Exact through-thickness integral of rho(z) dz (kg/m^2), used to check
     /// the assembled mass.
-    double mass_per_unit_area() const;
+    double
+    mass_per_unit_area() const;
 
-    const Parameters &get_parameters() const { return parameters; }
-    double            thickness() const { return h; }
+    const Parameters &
+    get_parameters() const
+    {
+      return parameters;
+    }
+    double
+    thickness() const
+    {
+      return h;
+    }
 
   private:
     const Parameters parameters;

@@ -34,35 +34,56 @@ namespace fgimpact
       double time_step = 1e-6;
       double end_time  = 400e-6;
 
-      static void declare_parameters(ParameterHandler &prm);
-      void        parse_parameters(ParameterHandler &prm);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
     };
 
     explicit NewmarkIntegrator(const Parameters &parameters);
 
-    double time_step() const { return dt; }
-    double beta() const { return parameters.beta; }
-    double gamma() const { return parameters.gamma; }
+    double
+    time_step() const
+    {
+      return dt;
+    }
+    double
+    beta() const
+    {
+      return parameters.beta;
+    }
+    double
+    gamma() const
+    {
+      return parameters.gamma;
+    }
 
     /// The factor a0 = 1/(beta dt^2) of M in the effective matrix K + a0 M.
-    double mass_factor() const { return a0; }
+    double
+    mass_factor() const
+    {
+      return a0;
+    }
 
     /// Number of steps to reach the end time (the last step may end past
     /// it by less than dt/2 of round-off).
-    unsigned int n_steps() const;
+    unsigned int
+    n_steps() const;
 
     /// The predictor r = a0 u + a1 v + a2 a (scalar version).
-    double predictor(const double u, const double v, const double a) const
+    double
+    predictor(const double u, const double v, const double a) const
     {
       return a0 * u + a1 * v + a2 * a;
     }
 
     /// The predictor r = a0 u + a1 v + a2 a (vector version).
     template <typename VectorType>
-    void predictor(const VectorType &u,
-                   const VectorType &v,
-                   const VectorType &a,
-                   VectorType       &r) const
+    void
+    predictor(const VectorType &u,
+              const VectorType &v,
+              const VectorType &a,
+              VectorType       &r) const
     {
       r.equ(a0, u);
       r.add(a1, v, a2, a);
@@ -72,7 +93,8 @@ namespace fgimpact
      * Given the new displacement u_new, overwrite u, v, a at t_n with their
      * values at t_{n+1} (scalar version).
      */
-    void update(const double u_new, double &u, double &v, double &a) const
+    void
+    update(const double u_new, double &u, double &v, double &a) const
     {
       const double a_new = a0 * (u_new - u) - a1 * v - a2 * a;
       v += dt * ((1. - parameters.gamma) * a + parameters.gamma * a_new);
@@ -82,10 +104,11 @@ namespace fgimpact
 
     /// Vector version of update().  No temporaries are allocated.
     template <typename VectorType>
-    void update(const VectorType &u_new,
-                VectorType       &u,
-                VectorType       &v,
-                VectorType       &a) const
+    void
+    update(const VectorType &u_new,
+           VectorType       &u,
+           VectorType       &v,
+           VectorType       &a) const
     {
       // v <- v + dt (1-gamma) a, using a_n before it is overwritten
       v.add(dt * (1. - parameters.gamma), a);

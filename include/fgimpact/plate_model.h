@@ -36,14 +36,15 @@ namespace fgimpact
   class PropertyInterpolator
   {
   public:
-    PropertyInterpolator(const FiniteElement<3>          &scalar_fe,
+    PropertyInterpolator(const FiniteElement<3>           &scalar_fe,
                          const std::vector<Point<3>>      &unit_points,
                          const FunctionallyGradedMaterial &material);
 
     /// E (Pa) and rho (kg/m^3) at the unit points of cell.
-    void values(const typename Triangulation<3>::cell_iterator &cell,
-                std::vector<double>                           &E,
-                std::vector<double>                           &rho) const;
+    void
+    values(const typename Triangulation<3>::cell_iterator &cell,
+           std::vector<double>                            &E,
+           std::vector<double>                            &rho) const;
 
   private:
     const FunctionallyGradedMaterial &material;
@@ -69,8 +70,10 @@ namespace fgimpact
     {
       unsigned int degree = 1;
 
-      static void declare_parameters(ParameterHandler &prm);
-      void        parse_parameters(ParameterHandler &prm);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
     };
 
     PlateModel(const Parameters                 &parameters,
@@ -79,19 +82,31 @@ namespace fgimpact
                const MPI_Comm                    mpi_communicator);
 
     /// Make the mesh, distribute DoFs, build constraints and assemble K, M.
-    void setup();
+    void
+    setup();
 
-    types::global_dof_index n_dofs() const { return dof_handler.n_dofs(); }
-    unsigned int n_active_cells() const;
+    types::global_dof_index
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+    unsigned int
+    n_active_cells() const;
 
-    const TrilinosWrappers::SparseMatrix &stiffness_matrix() const
+    const TrilinosWrappers::SparseMatrix &
+    stiffness_matrix() const
     {
       return stiffness;
     }
-    const TrilinosWrappers::SparseMatrix &mass_matrix() const { return mass; }
+    const TrilinosWrappers::SparseMatrix &
+    mass_matrix() const
+    {
+      return mass;
+    }
 
     /// Reinit v as a (non-ghosted) vector of locally owned DoFs.
-    void initialize_vector(TrilinosWrappers::MPI::Vector &v) const;
+    void
+    initialize_vector(TrilinosWrappers::MPI::Vector &v) const;
 
     /**
      * The top-surface (z = h) vertex nearest to (x, y) and the global index
@@ -99,24 +114,60 @@ namespace fgimpact
      * acts there, as in the paper.
      */
     std::pair<types::global_dof_index, Point<3>>
-    nearest_top_vertex_dof(const Point<2> &xy, const unsigned int component) const;
+    nearest_top_vertex_dof(const Point<2>    &xy,
+                           const unsigned int component) const;
 
     /// Sum of all mass matrix entries of one displacement component, i.e.
     /// the total mass of the plate in kg (partition of unity).
-    double total_mass() const;
+    double
+    total_mass() const;
 
-    const DoFHandler<3>             &get_dof_handler() const { return dof_handler; }
-    const AffineConstraints<double> &get_constraints() const { return constraints; }
-    const Mapping<3>                &get_mapping() const { return mapping; }
-    const FESystem<3>               &get_fe() const { return fe; }
-    const PlateGeometry             &get_geometry() const { return geometry; }
-    const FunctionallyGradedMaterial &get_material() const { return material; }
-    const IndexSet &locally_owned_dofs() const { return locally_owned; }
-    MPI_Comm        get_mpi_communicator() const { return mpi_communicator; }
+    const DoFHandler<3> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+    const AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+    const Mapping<3> &
+    get_mapping() const
+    {
+      return mapping;
+    }
+    const FESystem<3> &
+    get_fe() const
+    {
+      return fe;
+    }
+    const PlateGeometry &
+    get_geometry() const
+    {
+      return geometry;
+    }
+    const FunctionallyGradedMaterial &
+    get_material() const
+    {
+      return material;
+    }
+    const IndexSet &
+    locally_owned_dofs() const
+    {
+      return locally_owned;
+    }
+    MPI_Comm
+    get_mpi_communicator() const
+    {
+      return mpi_communicator;
+    }
 
   private:
-    void setup_constraints();
-    void assemble();
+    void
+    setup_constraints();
+    void
+    assemble();
 
     const Parameters                  parameters;
     const PlateGeometry              &geometry;

@@ -1,9 +1,9 @@
 #ifndef fgimpact_postprocessing_h
 #define fgimpact_postprocessing_h
 
-#include <deal.II/numerics/data_postprocessor.h>
-
 #include <deal.II/lac/trilinos_vector.h>
+
+#include <deal.II/numerics/data_postprocessor.h>
 
 #include <fgimpact/plate_model.h>
 
@@ -27,16 +27,19 @@ namespace fgimpact
   public:
     explicit StressPostprocessor(const FunctionallyGradedMaterial &material);
 
-    void evaluate_vector_field(
+    void
+    evaluate_vector_field(
       const DataPostprocessorInputs::Vector<3> &inputs,
-      std::vector<Vector<double>>              &computed_quantities) const override;
+      std::vector<Vector<double>> &computed_quantities) const override;
 
-    std::vector<std::string> get_names() const override;
+    std::vector<std::string>
+    get_names() const override;
 
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
     get_data_component_interpretation() const override;
 
-    UpdateFlags get_needed_update_flags() const override;
+    UpdateFlags
+    get_needed_update_flags() const override;
 
   private:
     const FunctionallyGradedMaterial &material;
@@ -56,10 +59,11 @@ namespace fgimpact
     VtuWriter(const PlateModel &plate, const std::string &directory);
 
     /// Write one snapshot at time t (s); u, v in m and m/s.
-    void write(const unsigned int                   step,
-               const double                         t,
-               const TrilinosWrappers::MPI::Vector &u,
-               const TrilinosWrappers::MPI::Vector &v);
+    void
+    write(const unsigned int                   step,
+          const double                         t,
+          const TrilinosWrappers::MPI::Vector &u,
+          const TrilinosWrappers::MPI::Vector &v);
 
   private:
     const PlateModel                           &plate;
@@ -78,10 +82,11 @@ namespace fgimpact
   {
   public:
     /// columns: name and number of decimals.
-    CsvWriter(const std::string                                 &filename,
-              const std::vector<std::pair<std::string, int>>    &columns);
+    CsvWriter(const std::string                              &filename,
+              const std::vector<std::pair<std::string, int>> &columns);
 
-    void write_row(const std::vector<double> &values);
+    void
+    write_row(const std::vector<double> &values);
 
   private:
     std::ofstream    out;

@@ -30,21 +30,32 @@ namespace fgimpact
   public:
     PointProbe(const PlateModel &plate, const Point<3> &location);
 
-    const Point<3> &location() const { return point; }
+    const Point<3> &
+    location() const
+    {
+      return point;
+    }
 
     /// Displacement (m).
-    Tensor<1, 3> displacement(const TrilinosWrappers::MPI::Vector &u) const;
+    Tensor<1, 3>
+    displacement(const TrilinosWrappers::MPI::Vector &u) const;
 
     /// Cauchy stress (Pa).
-    SymmetricTensor<2, 3> stress(const TrilinosWrappers::MPI::Vector &u) const;
+    SymmetricTensor<2, 3>
+    stress(const TrilinosWrappers::MPI::Vector &u) const;
 
     /// Number of cells whose stresses are averaged.
-    unsigned int n_cells() const { return n_adjacent_cells; }
+    unsigned int
+    n_cells() const
+    {
+      return n_adjacent_cells;
+    }
 
   private:
     using Weights = std::vector<std::pair<types::global_dof_index, double>>;
 
-    static double apply(const Weights &w, const TrilinosWrappers::MPI::Vector &u);
+    static double
+    apply(const Weights &w, const TrilinosWrappers::MPI::Vector &u);
 
     Point<3>               point;
     std::array<Weights, 3> displacement_weights;

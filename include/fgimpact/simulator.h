@@ -87,29 +87,39 @@ namespace fgimpact
       unsigned int log_interval     = 50;
       bool         print_timing     = true;
 
-      static void declare_parameters(ParameterHandler &prm);
-      void        parse_parameters(ParameterHandler &prm);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
 
       /// Check consistency between entries (one-line messages naming the
       /// parameter); throws ExcMessage.
-      void validate() const;
+      void
+      validate() const;
     };
 
-    ImpactSimulator(const Parameters &parameters, const MPI_Comm mpi_communicator);
+    ImpactSimulator(const Parameters &parameters,
+                    const MPI_Comm    mpi_communicator);
 
     /// Run the whole simulation and write history.csv, summary.txt and VTU
     /// files into the output directory (which must exist).
-    void run();
+    void
+    run();
 
-    const ImpactResults &get_results() const { return results; }
+    const ImpactResults &
+    get_results() const
+    {
+      return results;
+    }
 
   private:
-    void write_summary() const;
+    void
+    write_summary() const;
 
-    const Parameters parameters;
-    const MPI_Comm   mpi_communicator;
+    const Parameters   parameters;
+    const MPI_Comm     mpi_communicator;
     ConditionalOStream pcout;
-    ImpactResults    results;
+    ImpactResults      results;
   };
 } // namespace fgimpact
 

@@ -23,19 +23,20 @@ namespace
   {
     ParameterHandler prm;
     ImpactSimulator::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string("subsection Geometry\n set Subdivisions x = 10\n"
-                                " set Subdivisions y = 6\n set Subdivisions z = 2\nend\n"
-                                "subsection Output\n set Directory = out\n"
-                                " set Log interval = 0\n set Print timing = false\nend\n" +
-                                settings);
+    prm.parse_input_from_string(
+      "subsection Geometry\n set Subdivisions x = 10\n"
+      " set Subdivisions y = 6\n set Subdivisions z = 2\nend\n"
+      "subsection Output\n set Directory = out\n"
+      " set Log interval = 0\n set Print timing = false\nend\n" +
+      settings);
     ImpactSimulator::Parameters p;
     p.parse_parameters(prm);
     p.validate();
     std::filesystem::create_directories(p.output_directory);
     // The simulator's log is not part of this test's output.
     std::ostringstream log;
-    auto *old = std::cout.rdbuf(log.rdbuf());
-    ImpactSimulator simulator(p, MPI_COMM_WORLD);
+    auto              *old = std::cout.rdbuf(log.rdbuf());
+    ImpactSimulator    simulator(p, MPI_COMM_WORLD);
     simulator.run();
     std::cout.rdbuf(old);
     return simulator.get_results();
@@ -45,8 +46,8 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  bool ok = true;
+  Utilities::MPI::MPI_InitFinalize           mpi(argc, argv, 1);
+  bool                                       ok      = true;
   const std::pair<const char *, std::string> cases[] = {
     {"n = 1, V0 = 1 m/s", ""},
     {"homogeneous plate, V0 = 3 m/s",
@@ -59,10 +60,11 @@ main(int argc, char **argv)
      "subsection Time integration\n set Time step = 2e-6\n set End time = 600e-6\nend\n"}};
   for (const auto &[name, settings] : cases)
     {
-      const ImpactResults r = run(settings);
-      const bool energy   = r.max_energy_drift < 5e-3;
-      const bool momentum = r.momentum_balance_error < 5e-3;
-      const bool left     = std::isfinite(r.departure_velocity) && r.departure_velocity > 0;
+      const ImpactResults r        = run(settings);
+      const bool          energy   = r.max_energy_drift < 5e-3;
+      const bool          momentum = r.momentum_balance_error < 5e-3;
+      const bool          left =
+        std::isfinite(r.departure_velocity) && r.departure_velocity > 0;
       ok = ok && energy && momentum && left;
       std::printf("%s:\n  energy drift below 0.5 %%: %s\n"
                   "  momentum balance error below 0.5 %%: %s\n"

@@ -12,10 +12,10 @@ int
 main()
 {
   FunctionallyGradedMaterial::Parameters p; // paper's constituents
-  const double h = 0.02;
-  bool         ok = true;
+  const double                           h  = 0.02;
+  bool                                   ok = true;
   auto check = [&](const char *what, const double value, const double exact) {
-    const double err = std::abs(value - exact) / std::abs(exact);
+    const double err  = std::abs(value - exact) / std::abs(exact);
     const bool   pass = err <= 1e-15;
     ok                = ok && pass;
     std::printf("%-44s %s\n", what, pass ? "exact" : "WRONG");
@@ -32,8 +32,12 @@ main()
       check("  E(h) = E_m", m.youngs_modulus(h), 70e9);
       check("  rho(h) = rho_m", m.density(h), 2707.);
       // Bottom (z = 0) is pure ceramic except for n = 0 (pure metal).
-      check("  E(0) = (n = 0 ? E_m : E_c)", m.youngs_modulus(0.), n == 0 ? 70e9 : 380e9);
-      check("  rho(0) = (n = 0 ? rho_m : rho_c)", m.density(0.), n == 0 ? 2707. : 3800.);
+      check("  E(0) = (n = 0 ? E_m : E_c)",
+            m.youngs_modulus(0.),
+            n == 0 ? 70e9 : 380e9);
+      check("  rho(0) = (n = 0 ? rho_m : rho_c)",
+            m.density(0.),
+            n == 0 ? 2707. : 3800.);
       // Mid-plane: V = (1/2)^n.
       check("  E(h/2) = E_c + (E_m - E_c) 2^-n",
             m.youngs_modulus(h / 2),

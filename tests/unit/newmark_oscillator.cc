@@ -18,28 +18,33 @@ namespace
   const double u0 = 1e-3, v0 = 0.1;
   const double omega = std::sqrt(k / m);
 
-  double exact(const double t)
+  double
+  exact(const double t)
   {
     // particular solution F sin(Omega t) with F = f0/(k - m Omega^2)
     const double F = f0 / (k - m * Omega * Omega);
-    return u0 * std::cos(omega * t) + (v0 - F * Omega) / omega * std::sin(omega * t) +
+    return u0 * std::cos(omega * t) +
+           (v0 - F * Omega) / omega * std::sin(omega * t) +
            F * std::sin(Omega * t);
   }
 
   /// Returns the max error of u over [0, T].
-  double run(const double dt, const double T)
+  double
+  run(const double dt, const double T)
   {
     NewmarkIntegrator::Parameters p;
     p.time_step = dt;
     p.end_time  = T;
     const NewmarkIntegrator newmark(p);
-    double u = u0, v = v0, a = (0. - k * u0) / m; // a(0) from the equation, f(0) = 0
+    double                  u = u0, v = v0,
+           a         = (0. - k * u0) / m; // a(0) from the equation, f(0) = 0
     double max_error = 0;
     for (unsigned int n = 1; n <= newmark.n_steps(); ++n)
       {
-        const double t     = n * dt;
-        const double u_new = (f0 * std::sin(Omega * t) + m * newmark.predictor(u, v, a)) /
-                             (k + newmark.mass_factor() * m);
+        const double t = n * dt;
+        const double u_new =
+          (f0 * std::sin(Omega * t) + m * newmark.predictor(u, v, a)) /
+          (k + newmark.mass_factor() * m);
         newmark.update(u_new, u, v, a);
         max_error = std::max(max_error, std::abs(u - exact(t)));
       }
@@ -63,8 +68,11 @@ main()
       else
         {
           const double order = std::log2(previous / error);
-          ok = ok && std::abs(order - 2.) < 0.05;
-          std::printf("1/%-8.0f  %.1e        %.2f\n", 20. * std::pow(2., level), error / u0, order);
+          ok                 = ok && std::abs(order - 2.) < 0.05;
+          std::printf("1/%-8.0f  %.1e        %.2f\n",
+                      20. * std::pow(2., level),
+                      error / u0,
+                      order);
         }
       previous = error;
     }
@@ -75,7 +83,7 @@ main()
   p.time_step = 1e-3;
   const NewmarkIntegrator newmark(p);
   dealii::Vector<double>  u(2), v(2), a(2), r(2), u_new(2);
-  double                  us[2] = {1., -2.}, vs[2] = {0.5, 3.}, as[2] = {-4., 1.};
+  double us[2] = {1., -2.}, vs[2] = {0.5, 3.}, as[2] = {-4., 1.};
   for (unsigned int i = 0; i < 2; ++i)
     u(i) = us[i], v(i) = vs[i], a(i) = as[i];
   double diff = 0;
@@ -84,8 +92,8 @@ main()
       newmark.predictor(u, v, a, r);
       for (unsigned int i = 0; i < 2; ++i)
         {
-          const double kk = (i + 1) * 1e3;
-          u_new(i) = r(i) / (kk + newmark.mass_factor());
+          const double kk     = (i + 1) * 1e3;
+          u_new(i)            = r(i) / (kk + newmark.mass_factor());
           const double us_new = newmark.predictor(us[i], vs[i], as[i]) /
                                 (kk + newmark.mass_factor());
           newmark.update(us_new, us[i], vs[i], as[i]);

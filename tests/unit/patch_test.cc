@@ -22,7 +22,9 @@ using namespace fgimpact;
 
 namespace
 {
-  const Tensor<2, 3> G({{2e-4, 0.5e-4, -1e-4}, {1.5e-4, -3e-4, 0.2e-4}, {0.7e-4, -0.4e-4, 1e-4}});
+  const Tensor<2, 3> G({{2e-4, 0.5e-4, -1e-4},
+                        {1.5e-4, -3e-4, 0.2e-4},
+                        {0.7e-4, -0.4e-4, 1e-4}});
 
   class LinearField : public Function<3>
   {
@@ -30,14 +32,18 @@ namespace
     LinearField()
       : Function<3>(3)
     {}
-    double value(const Point<3> &p, const unsigned int c) const override
+    double
+    value(const Point<3> &p, const unsigned int c) const override
     {
       return 1e-5 * (c + 1) + (G * p)[c];
     }
   };
 
   bool
-  run(const unsigned int degree, const double n, const PropertyMode mode, const double E_c)
+  run(const unsigned int degree,
+      const double       n,
+      const PropertyMode mode,
+      const double       E_c)
   {
     PlateGeometry::Parameters gp;
     gp.subdivisions_x = 3;
@@ -58,11 +64,15 @@ namespace
     TrilinosWrappers::MPI::Vector u, r;
     plate.initialize_vector(u);
     plate.initialize_vector(r);
-    VectorTools::interpolate(plate.get_mapping(), plate.get_dof_handler(), LinearField(), u);
+    VectorTools::interpolate(plate.get_mapping(),
+                             plate.get_dof_handler(),
+                             LinearField(),
+                             u);
     plate.stiffness_matrix().vmult(r, u);
 
     // Interior DoFs: those not on any boundary face.
-    const IndexSet boundary = DoFTools::extract_boundary_dofs(plate.get_dof_handler());
+    const IndexSet boundary =
+      DoFTools::extract_boundary_dofs(plate.get_dof_handler());
     double interior = 0, all = 0;
     for (types::global_dof_index i = 0; i < plate.n_dofs(); ++i)
       {
@@ -75,22 +85,26 @@ namespace
     // A point between nodes (z = h/3 is not a node plane for nz = 2).
     const Point<3>   p(0.07, 0.031, geometry.thickness() / 3);
     const PointProbe probe(plate, p);
-    const double     E = material.youngs_modulus(mode == PropertyMode::graded ? p[2] : geometry.thickness() / 4);
+    const double     E = material.youngs_modulus(
+      mode == PropertyMode::graded ? p[2] : geometry.thickness() / 4);
     const SymmetricTensor<2, 3> exact =
       E * (material.lambda_per_E() * trace(eps) * unit_symmetric_tensor<3>() +
            2 * material.mu_per_E() * eps);
     const double stress_error = (probe.stress(u) - exact).norm() / exact.norm();
 
     const bool homogeneous = (E_c == 70e9);
-    const bool pass = (!homogeneous || interior <= 1e-12 * all) && stress_error <= 1e-12;
+    const bool pass =
+      (!homogeneous || interior <= 1e-12 * all) && stress_error <= 1e-12;
     std::printf("Q%u, %s material, %s elements: %s%s\n",
                 degree,
                 homogeneous ? "homogeneous" : "n = 1 graded",
                 mode == PropertyMode::graded ? "graded" : "homogeneous",
-                homogeneous ? (interior <= 1e-12 * all ? "interior residual zero, " :
-                                                         "INTERIOR RESIDUAL NONZERO, ") :
-                              "",
-                stress_error <= 1e-12 ? "probe stress exact" : "PROBE STRESS WRONG");
+                homogeneous ?
+                  (interior <= 1e-12 * all ? "interior residual zero, " :
+                                             "INTERIOR RESIDUAL NONZERO, ") :
+                  "",
+                stress_error <= 1e-12 ? "probe stress exact" :
+                                        "PROBE STRESS WRONG");
     return pass;
   }
 } // namespace
@@ -99,7 +113,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  bool ok = true;
+  bool                             ok = true;
   for (const unsigned int degree : {1u, 2u})
     for (const auto mode : {PropertyMode::graded, PropertyMode::homogeneous})
       ok = run(degree, 1., mode, 70e9) && ok;

@@ -44,7 +44,7 @@ namespace
 
     TrilinosWrappers::MPI::Vector ones;
     plate.initialize_vector(ones);
-    const auto &fe = plate.get_fe();
+    const auto                          &fe = plate.get_fe();
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
       {
@@ -72,7 +72,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  bool ok = true;
+  bool                             ok = true;
   auto report = [&](const char *what, const double value, const double exact) {
     const bool pass = std::abs(value / exact - 1) < 1e-13;
     ok              = ok && pass;
@@ -83,10 +83,12 @@ main(int argc, char **argv)
 
   const double exact_n1 = a * b * h * (3800. + 2707.) / 2;
   report("n = 1, Q1 graded: M total = int rho dV",
-         assembled_mass(1, 4, 1, PropertyMode::graded), exact_n1);
+         assembled_mass(1, 4, 1, PropertyMode::graded),
+         exact_n1);
   const double exact_n2 = a * b * h * (3800. + (2707. - 3800.) / 3.);
   report("n = 2, Q2 graded: M total = int rho dV",
-         assembled_mass(2, 2, 2, PropertyMode::graded), exact_n2);
+         assembled_mass(2, 2, 2, PropertyMode::graded),
+         exact_n2);
 
   // Trapezoidal and midpoint rules of rho(z) on nz layers.
   auto trapezoid = [](const double n, const unsigned int nz) {
@@ -102,9 +104,11 @@ main(int argc, char **argv)
     return a * b * s;
   };
   report("n = 2, Q1 graded: M total = trapezoidal rule of nodal rho",
-         assembled_mass(2, 4, 1, PropertyMode::graded), trapezoid(2, 4));
+         assembled_mass(2, 4, 1, PropertyMode::graded),
+         trapezoid(2, 4));
   report("n = 2, Q1 homogeneous: M total = midpoint rule of rho",
-         assembled_mass(2, 4, 1, PropertyMode::homogeneous), midpoint(2, 4));
+         assembled_mass(2, 4, 1, PropertyMode::homogeneous),
+         midpoint(2, 4));
 
   std::printf("n = 2, Q1: error of M total against int rho dV\n");
   std::printf("  nz   graded     order   homogeneous order\n");
@@ -113,14 +117,17 @@ main(int argc, char **argv)
     {
       const double e[2] = {
         std::abs(assembled_mass(2, nz, 1, PropertyMode::graded) / exact_n2 - 1),
-        std::abs(assembled_mass(2, nz, 1, PropertyMode::homogeneous) / exact_n2 - 1)};
+        std::abs(
+          assembled_mass(2, nz, 1, PropertyMode::homogeneous) / exact_n2 - 1)};
       if (nz == 2)
         std::printf("  %2u   %.2e          %.2e\n", nz, e[0], e[1]);
       else
         {
-          const double o0 = std::log2(previous[0] / e[0]), o1 = std::log2(previous[1] / e[1]);
+          const double o0 = std::log2(previous[0] / e[0]),
+                       o1 = std::log2(previous[1] / e[1]);
           ok = ok && std::abs(o0 - 2) < 0.01 && std::abs(o1 - 2) < 0.01;
-          std::printf("  %2u   %.2e   %.2f   %.2e   %.2f\n", nz, e[0], o0, e[1], o1);
+          std::printf(
+            "  %2u   %.2e   %.2f   %.2e   %.2f\n", nz, e[0], o0, e[1], o1);
         }
       previous[0] = e[0];
       previous[1] = e[1];

@@ -61,12 +61,15 @@ main(int argc, char **argv)
   std::cout.rdbuf(old);
   const ImpactResults &r = simulator.get_results();
 
-  bool ok = true;
+  bool ok    = true;
   auto check = [&](const char *what, const double value, const double exact) {
     const double e    = std::abs(value / exact - 1);
     const bool   pass = e < 0.01;
     ok                = ok && pass;
-    std::printf("%-28s closed form %10.4f, within 1 %%: %s\n", what, exact, pass ? "yes" : "NO");
+    std::printf("%-28s closed form %10.4f, within 1 %%: %s\n",
+                what,
+                exact,
+                pass ? "yes" : "NO");
   };
   std::printf("rigid half-space, m = %.5f kg, K = %.5e N/m^1.5:\n", m, K);
   check("peak force (N)", r.peak_contact_force, F_max);
