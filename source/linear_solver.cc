@@ -1,25 +1,113 @@
 #include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
 
 #include <fgimpact/linear_solver.h>
 
+#include <Epetra_CrsMatrix.h>
+
+#include <cholmod.h>
+
+#include <algorithm>
+
+#include <vector>
+
 namespace fgimpact
 {
+  /**
+   * CHOLMOD through its C interface: supernodal Cholesky, and
+   * cholmod_solve2 with workspaces kept between calls, so that a solve
+   * allocates nothing.
+   */
+  struct EffectiveMatrixSolver::Cholmod
+  {
+    Cholmod()
+    {
+      cholmod_start(&common);
+      common.supernodal = CHOLMOD_SUPERNODAL;
+    }
+
+    ~Cholmod()
+    {
+      cholmod_free_factor(&factor, &common);
+      cholmod_free_dense(&X, &common);
+      cholmod_free_dense(&Y, &common);
+      cholmod_free_dense(&E, &common);
+      cholmod_finish(&common);
+    }
+
+    /// Factorize the symmetric matrix given by its lower triangle.
+    void
+    factorize(const size_t                      n,
+              const std::vector<int>           &rows,
+              const std::vector<int>           &columns,
+              const std::vector<double>        &values)
+    {
+      cholmod_triplet *T = cholmod_allocate_triplet(
+        n, n, values.size(), /*stype: lower*/ -1, CHOLMOD_REAL, &common);
+      std::copy(rows.begin(), rows.end(), static_cast<int *>(T->i));
+      std::copy(columns.begin(), columns.end(), static_cast<int *>(T->j));
+      std::copy(values.begin(), values.end(), static_cast<double *>(T->x));
+      T->nnz           = values.size();
+      cholmod_sparse *A = cholmod_triplet_to_sparse(T, values.size(), &common);
+      cholmod_free_triplet(&T, &common);
+      factor = cholmod_analyze(A, &common);
+      cholmod_factorize(A, factor, &common);
+      cholmod_free_sparse(&A, &common);
+      AssertThrow(common.status == CHOLMOD_OK && factor->minor == n,
+                  ExcMessage("CHOLMOD could not factorize the effective "
+                             "matrix (not positive definite?)."));
+    }
+
+    /// x = A^{-1} b for arrays of length n.
+    void
+    solve(const size_t n, const double *b, double *x)
+    {
+      cholmod_dense B;
+      B.nrow  = n;
+      B.ncol  = 1;
+      B.nzmax = n;
+      B.d     = n;
+      B.x     = const_cast<double *>(b);
+      B.z     = nullptr;
+      B.xtype = CHOLMOD_REAL;
+      B.dtype = CHOLMOD_DOUBLE;
+      cholmod_solve2(CHOLMOD_A, factor, &B, nullptr, &X, nullptr, &Y, &E, &common);
+      const double *result = static_cast<const double *>(X->x);
+      std::copy(result, result + n, x);
+    }
+
+    cholmod_common  common;
+    cholmod_factor *factor = nullptr;
+    cholmod_dense  *X = nullptr, *Y = nullptr, *E = nullptr;
+  };
+
+
+
   void
   EffectiveMatrixSolver::Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
     {
-      prm.declare_entry("Type",
-                        "direct",
-                        Patterns::Selection("direct|cg"),
-                        "direct: factorize the effective matrix K + M/(beta "
-                        "dt^2) once and back-substitute every step. cg: "
-                        "conjugate gradients with SSOR, warm-started from "
-                        "the previous displacement.");
-      prm.declare_entry("Direct package",
-                        "Amesos_Klu",
-                        Patterns::Selection("Amesos_Klu|Amesos_Mumps"),
-                        "Trilinos Amesos package of the direct solver.");
+      prm.declare_entry(
+        "Type",
+        "auto",
+        Patterns::Selection("auto|cholmod|klu|mumps|cg"),
+        "Solver for the constant effective matrix K + M/(beta dt^2). "
+        "cholmod: supernodal Cholesky (SuiteSparse), factorized once. klu, "
+        "mumps: Trilinos Amesos direct solvers. cg: preconditioned conjugate "
+        "gradients warm-started from the previous step. auto: cholmod up to "
+        "'Auto direct limit' DoFs, cg above (doc/performance.md).");
+      prm.declare_entry("Preconditioner",
+                        "jacobi",
+                        Patterns::Selection("jacobi|ssor|amg"),
+                        "Preconditioner of cg. The effective matrix is "
+                        "dominated by M/(beta dt^2) for small dt, where "
+                        "jacobi is cheapest; amg (Trilinos ML) for large dt.");
+      prm.declare_entry("Auto direct limit",
+                        "300000",
+                        Patterns::Integer(0, 1000000000),
+                        "Largest number of DoFs for which 'auto' factorizes "
+                        "(cholmod); above it 'auto' uses cg.");
       prm.declare_entry("Tolerance",
                         "1e-12",
                         Patterns::Double(1e-16, 1e-2),
@@ -42,7 +130,8 @@ namespace fgimpact
     prm.enter_subsection("Linear solver");
     {
       type           = prm.get("Type");
-      direct_package = prm.get("Direct package");
+      preconditioner = prm.get("Preconditioner");
+      auto_limit     = prm.get_integer("Auto direct limit");
       tolerance      = prm.get_double("Tolerance");
       max_iterations = prm.get_integer("Max iterations");
     }
@@ -53,27 +142,90 @@ namespace fgimpact
 
   EffectiveMatrixSolver::EffectiveMatrixSolver(const Parameters &parameters)
     : parameters(parameters)
-    , control(parameters.max_iterations, 0.)
   {}
+
+
+
+  EffectiveMatrixSolver::~EffectiveMatrixSolver() = default;
 
 
 
   void
   EffectiveMatrixSolver::initialize(const TrilinosWrappers::SparseMatrix &A)
   {
-    matrix = &A;
-    if (parameters.type == "direct")
+    matrix        = &A;
+    resolved_type = parameters.type;
+    if (resolved_type == "auto")
+      resolved_type = (A.m() <= parameters.auto_limit ? "cholmod" : "cg");
+
+    if (resolved_type == "cholmod")
       {
-        direct = std::make_unique<TrilinosWrappers::SolverDirect>(
-          control,
+        AssertThrow(A.m() == A.local_size(),
+                    ExcMessage("Linear solver/Type = cholmod needs all DoFs "
+                               "on one MPI rank."));
+        // The lower triangle, straight from the Epetra rows (deal.II's
+        // entry iterators are much slower for this).
+        const Epetra_CrsMatrix &epetra = A.trilinos_matrix();
+        std::vector<int>        rows, columns;
+        std::vector<double>     values;
+        rows.reserve(epetra.NumMyNonzeros() / 2 + A.m());
+        columns.reserve(rows.capacity());
+        values.reserve(rows.capacity());
+        for (int local_row = 0; local_row < epetra.NumMyRows(); ++local_row)
+          {
+            int     n_entries;
+            double *row_values;
+            int    *row_columns;
+            epetra.ExtractMyRowView(local_row, n_entries, row_values, row_columns);
+            const int row = epetra.RowMap().GID(local_row);
+            for (int k = 0; k < n_entries; ++k)
+              {
+                const int column = epetra.ColMap().GID(row_columns[k]);
+                if (column <= row)
+                  {
+                    rows.push_back(row);
+                    columns.push_back(column);
+                    values.push_back(row_values[k]);
+                  }
+              }
+          }
+        cholmod = std::make_unique<Cholmod>();
+        cholmod->factorize(A.m(), rows, columns, values);
+      }
+    else if (resolved_type == "klu" || resolved_type == "mumps")
+      {
+        static SolverControl unused;
+        amesos = std::make_unique<TrilinosWrappers::SolverDirect>(
+          unused,
           TrilinosWrappers::SolverDirect::AdditionalData(
-            false, parameters.direct_package));
-        direct->initialize(A);
+            false, resolved_type == "klu" ? "Amesos_Klu" : "Amesos_Mumps"));
+        amesos->initialize(A);
       }
     else
       {
-        preconditioner = std::make_unique<TrilinosWrappers::PreconditionSSOR>();
-        preconditioner->initialize(A);
+        if (parameters.preconditioner == "jacobi")
+          {
+            auto p = std::make_unique<TrilinosWrappers::PreconditionJacobi>();
+            p->initialize(A);
+            preconditioner = std::move(p);
+          }
+        else if (parameters.preconditioner == "ssor")
+          {
+            auto p = std::make_unique<TrilinosWrappers::PreconditionSSOR>();
+            p->initialize(A);
+            preconditioner = std::move(p);
+          }
+        else
+          {
+            auto p = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+            TrilinosWrappers::PreconditionAMG::AdditionalData data;
+            data.elliptic              = true;
+            data.higher_order_elements = false;
+            data.smoother_sweeps       = 2;
+            data.aggregation_threshold = 0.02;
+            p->initialize(A, data);
+            preconditioner = std::move(p);
+          }
       }
   }
 
@@ -83,10 +235,17 @@ namespace fgimpact
   EffectiveMatrixSolver::solve(TrilinosWrappers::MPI::Vector       &x,
                                const TrilinosWrappers::MPI::Vector &b)
   {
-    if (direct)
+    iterations = 0;
+    if (cholmod)
       {
-        direct->solve(x, b);
-        iterations = 0;
+        cholmod->solve(b.local_size(),
+                       b.trilinos_vector()[0],
+                       x.trilinos_vector()[0]);
+        return;
+      }
+    if (amesos)
+      {
+        amesos->solve(x, b);
         return;
       }
     // A relative tolerance; the caller catches SolverControl::NoConvergence.

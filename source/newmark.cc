@@ -25,8 +25,10 @@ namespace fgimpact
                         "Dimensionless.");
       prm.declare_entry("Time step",
                         "1e-6",
-                        Patterns::Double(1e-12, 1.),
-                        "Time step dt. Unit: s.");
+                        Patterns::Double(0., 1.),
+                        "Time step dt; 0 = automatic, the explicit scheme's "
+                        "stability limit times the safety factor (explicit "
+                        "only). Unit: s.");
       prm.declare_entry("End time",
                         "400e-6",
                         Patterns::Double(1e-12, 1e3),

@@ -3,6 +3,7 @@
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/probes.h>
 #include <fgimpact/simulator.h>
+#include <fgimpact/time_stepper.h>
 
 #include <cmath>
 #include <cstdio>
@@ -23,23 +24,7 @@ namespace fgimpact
     PlateModel::Parameters::declare_parameters(prm);
     EffectiveMatrixSolver::Parameters::declare_parameters(prm);
 
-    prm.enter_subsection("Newton");
-    {
-      prm.declare_entry("Tolerance",
-                        "1e-3",
-                        Patterns::Double(1e-15, 0.1),
-                        "Newton stops when the relative change of the "
-                        "indentation between two iterations is below this "
-                        "(the paper: 0.1 %). Newton converges quadratically "
-                        "here, so the error left is about its square. "
-                        "Dimensionless.");
-      prm.declare_entry("Max iterations",
-                        "50",
-                        Patterns::Integer(1, 10000),
-                        "Iteration cap per time step; reaching it stops the "
-                        "run with an error naming the step.");
-    }
-    prm.leave_subsection();
+    TimeStepper::Parameters::declare_parameters(prm);
 
     prm.enter_subsection("Output");
     {
@@ -81,10 +66,7 @@ namespace fgimpact
     finite_element.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
 
-    prm.enter_subsection("Newton");
-    newton_tolerance      = prm.get_double("Tolerance");
-    newton_max_iterations = prm.get_integer("Max iterations");
-    prm.leave_subsection();
+    time_stepper.parse_parameters(prm);
 
     prm.enter_subsection("Output");
     output_directory = prm.get("Directory");
@@ -110,13 +92,18 @@ namespace fgimpact
                 ExcMessage("Impactor/Impact point y = " + std::to_string(p[1]) +
                            " m lies outside the open interval (0, b = " +
                            std::to_string(b) + " m)."));
+    AssertThrow(time_integration.time_step > 0 || time_stepper.explicit_scheme,
+                ExcMessage("Time integration/Time step = 0 (automatic) is "
+                           "only available with Scheme = explicit."));
     AssertThrow(time_integration.end_time >= time_integration.time_step,
                 ExcMessage("Time integration/End time is shorter than one "
                            "Time step."));
-    AssertThrow(time_integration.end_time / time_integration.time_step < 1e8,
+    AssertThrow(time_integration.time_step == 0 ||
+                  time_integration.end_time / time_integration.time_step < 1e8,
                 ExcMessage("Time integration/End time divided by Time step "
                            "exceeds 1e8 steps."));
-    AssertThrow(time_integration.beta >= time_integration.gamma / 4. - 1e-14,
+    AssertThrow(time_stepper.explicit_scheme ||
+                  time_integration.beta >= time_integration.gamma / 4. - 1e-14,
                 ExcMessage("Time integration/Newmark beta must be at least "
                            "gamma/4 for the unconditionally stable implicit "
                            "scheme (beta = 1/4, gamma = 1/2 is the default)."));
@@ -135,40 +122,6 @@ namespace fgimpact
 
 
 
-  namespace
-  {
-    /**
-     * Solve alpha + s F(alpha) = alpha_tilde for the indentation alpha by
-     * Newton's method.  R(alpha) = alpha + s F(alpha) - alpha_tilde is
-     * increasing and convex for alpha > 0, and R(alpha_tilde) >= 0, so
-     * Newton started at alpha_tilde decreases monotonically to the root.
-     * Returns the number of iterations; throws on failure.
-     */
-    unsigned int
-    solve_contact_newton(const HertzContactLaw &law,
-                         const double           s,
-                         const double           alpha_tilde,
-                         const double           tolerance,
-                         const unsigned int     max_iterations,
-                         double                &alpha)
-    {
-      alpha = alpha_tilde;
-      if (alpha_tilde <= 0.)
-        return 0; // no contact: F = 0 satisfies the equation exactly
-      for (unsigned int it = 1; it <= max_iterations; ++it)
-        {
-          const double R     = alpha + s * law.force(alpha) - alpha_tilde;
-          const double dR    = 1. + s * law.force_derivative(alpha);
-          const double delta = -R / dR;
-          alpha += delta;
-          if (!std::isfinite(alpha))
-            return std::numeric_limits<unsigned int>::max();
-          if (std::abs(delta) <= tolerance * std::abs(alpha))
-            return it;
-        }
-      return std::numeric_limits<unsigned int>::max();
-    }
-  } // namespace
 
 
 
@@ -188,8 +141,7 @@ namespace fgimpact
     const FunctionallyGradedMaterial material(parameters.material,
                                               geometry.thickness());
     const Impactor                   impactor(parameters.impactor);
-    const HertzContactLaw   contact_law(parameters.contact, material, impactor);
-    const NewmarkIntegrator newmark(parameters.time_integration);
+    const HertzContactLaw contact_law(parameters.contact, material, impactor);
 
     PlateModel plate(parameters.finite_element,
                      geometry,
@@ -197,11 +149,8 @@ namespace fgimpact
                      mpi_communicator);
     plate.setup();
 
-    const double       m_i     = impactor.mass();
-    const double       V0      = impactor.initial_velocity();
-    const double       dt      = newmark.time_step();
-    const double       a0      = newmark.mass_factor();
-    const unsigned int n_steps = newmark.n_steps();
+    const double m_i = impactor.mass();
+    const double V0  = impactor.initial_velocity();
 
     results.n_dofs            = plate.n_dofs();
     results.impactor_mass     = m_i;
@@ -238,8 +187,7 @@ namespace fgimpact
           << " m/s; Q_alpha = " << contact_law.contact_modulus() / 1e9
           << " GPa, beta K_h = " << results.contact_stiffness << " N/m^1.5\n"
           << "  contact node (" << contact_node[0] << ", " << contact_node[1]
-          << ", " << contact_node[2] << ") m; dt = " << dt * 1e6 << " us, "
-          << n_steps << " steps\n";
+          << ", " << contact_node[2] << ") m\n";
 
     if (node_offset > 1e-9 * geometry.length())
       pcout << "  note: no node lies at the impact point; the contact force "
@@ -247,39 +195,38 @@ namespace fgimpact
             << node_offset * 1e3 << " mm away (choose Subdivisions so that "
             << "a node lies under the impact point)\n";
 
-    // Effective matrix K + a0 M, constant: built and factorized once.
-    TrilinosWrappers::SparseMatrix effective;
-    effective.copy_from(plate.stiffness_matrix());
-    effective.add(a0, plate.mass_matrix());
     setup_timer.stop();
 
+    // The time stepper (implicit Newmark or explicit central difference)
+    // builds its matrices and fixes the time step.
     factorization_timer.restart();
-    EffectiveMatrixSolver solver(parameters.linear_solver);
-    solver.initialize(effective);
-
-    // Response c to a unit downward... (the load vector g has +1 at the
-    // contact node's z DoF; the contact force F pushes along -z, so the
-    // plate load is -F g and u = u* - F c with c = K_eff^{-1} g).
-    TrilinosWrappers::MPI::Vector g, c;
-    plate.initialize_vector(g);
-    plate.initialize_vector(c);
-    g(contact_dof) = 1.;
-    g.compress(VectorOperation::insert);
-    solver.solve(c, g);
-    // chi = g^T K_eff^{-1} g > 0: the contact node's dynamic compliance (m/N).
-    const double chi = c(contact_dof);
+    const std::unique_ptr<TimeStepper> stepper =
+      create_time_stepper(parameters.time_stepper,
+                          parameters.time_integration,
+                          parameters.linear_solver,
+                          plate,
+                          contact_law,
+                          contact_dof,
+                          m_i,
+                          V0);
+    stepper->initialize();
     factorization_timer.stop();
+    results.spmv_time  = stepper->spmv_time;
+    results.solve_time = stepper->solve_time;
+
+    const double       dt = stepper->time_step();
+    const unsigned int n_steps =
+      static_cast<unsigned int>(
+        std::ceil(parameters.time_integration.end_time / dt - 1e-9));
+    pcout << "  " << stepper->description() << "; dt = " << dt * 1e6
+          << " us, " << n_steps << " steps\n";
 
     // ------------------------------------------------------- time stepping
-    TrilinosWrappers::MPI::Vector u, v, a, u_new, r, rhs, Mv;
-    for (auto *vec : {&u, &v, &a, &u_new, &r, &rhs, &Mv})
-      plate.initialize_vector(*vec);
-
-    // Impactor state: displacement, velocity, acceleration, positive in the
-    // impact direction (-z).  Eq. 2.16: plate at rest, alpha(0) = 0,
-    // alpha'(0) = V0; a(0) = 0 because F(0) = 0.
-    double w_p = 0, v_p = V0, acc_p = 0;
-    double alpha = 0, F = 0;
+    // Impactor state, positive in the impact direction (-z).  Eq. 2.16:
+    // plate at rest, alpha(0) = 0, alpha'(0) = V0; a(0) = 0 as F(0) = 0.
+    ImpactorState ball;
+    ball.v = V0;
+    ContactState contact;
 
     const double E0 = 0.5 * m_i * V0 * V0;
 
@@ -318,20 +265,21 @@ namespace fgimpact
     double       impulse         = 0;
     unsigned int n_impacts       = 1;
 
-    auto record = [&](const unsigned int step,
-                      const double       t,
-                      const unsigned int newton_iterations) {
+    auto record = [&](const unsigned int step, const double t) {
+      const auto                 &u     = stepper->displacement();
       const Tensor<1, 3>          u_mid = mid_probe.displacement(u);
       const Tensor<1, 3>          u_top = top_probe.displacement(u);
       const SymmetricTensor<2, 3> sigma = mid_probe.stress(u);
       const double                W_mid = -u_mid[2];
       const double                W_top = -u_top[2];
       const double                W_c   = -u(contact_dof);
-      const double                E_imp = 0.5 * m_i * v_p * v_p;
-      const double E_kin = 0.5 * plate.mass_matrix().matrix_norm_square(v);
-      const double E_str = 0.5 * plate.stiffness_matrix().matrix_norm_square(u);
-      const double E_con = contact_law.potential(alpha);
-      const double E_total = E_imp + E_kin + E_str + E_con;
+      const double                F     = contact.force;
+      const double                alpha = contact.alpha;
+      const double                E_imp = 0.5 * m_i * ball.v * ball.v;
+      const double                E_kin = stepper->kinetic_energy();
+      const double                E_str = stepper->strain_energy();
+      const double                E_con = contact_law.potential(alpha);
+      const double                E_total = E_imp + E_kin + E_str + E_con;
 
       results.max_energy_drift =
         std::max(results.max_energy_drift, std::abs(E_total - E0) / E0);
@@ -344,13 +292,15 @@ namespace fgimpact
       results.max_midplane_deflection =
         std::max(results.max_midplane_deflection, W_mid);
       results.max_top_deflection = std::max(results.max_top_deflection, W_top);
+      results.max_newton_iterations =
+        std::max(results.max_newton_iterations, contact.newton_iterations);
 
       if (history)
         history->write_row({t * 1e6,
                             F,
                             alpha * 1e6,
-                            w_p * 1e6,
-                            v_p,
+                            ball.w * 1e6,
+                            ball.v,
                             W_mid * 1e6,
                             W_top * 1e6,
                             sigma[0][0] * 1e-6,
@@ -362,11 +312,11 @@ namespace fgimpact
                             E_con,
                             E_total,
                             W_c * 1e6,
-                            static_cast<double>(newton_iterations)});
+                            static_cast<double>(contact.newton_iterations)});
       if (vtu && step % parameters.vtu_interval == 0)
         {
           output_timer.start();
-          vtu->write(step, t, u, v);
+          vtu->write(step, t, u, stepper->velocity());
           output_timer.stop();
         }
       if (parameters.log_interval > 0 &&
@@ -387,89 +337,35 @@ namespace fgimpact
         }
     };
 
-    record(0, 0., 0);
+    record(0, 0.);
 
     loop_timer.restart();
     for (unsigned int step = 1; step <= n_steps; ++step)
       {
-        const double t = step * dt;
+        const double t         = step * dt;
+        const double alpha_old = contact.alpha;
+        const double F_old     = contact.force;
 
-        // Contact-free predictor: (K + a0 M) u* = M (a0 u + a1 v + a2 a).
-        newmark.predictor(u, v, a, r);
-        plate.mass_matrix().vmult(rhs, r);
-        u_new = u; // initial guess of an iterative solver
-        try
-          {
-            solver.solve(u_new, rhs);
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            AssertThrow(false,
-                        ExcMessage("the linear solver did not converge at "
-                                   "time step " +
-                                   std::to_string(step) +
-                                   " (t = " + std::to_string(t * 1e6) +
-                                   " us) after " + std::to_string(e.last_step) +
-                                   " iterations; raise Linear solver/Max "
-                                   "iterations or use the direct solver."));
-          }
+        stepper->advance(step, t, ball, contact);
 
-        // Impactor predictor: m a0 w = m r_p - F  =>  w = w~ - F/(m a0).
-        const double w_tilde = newmark.predictor(w_p, v_p, acc_p) / a0;
-        const double W_star  = -u_new(contact_dof);
-        const double s       = 1. / (m_i * a0) + chi;
-
-        const double       alpha_old = alpha;
-        const double       F_old     = F;
-        const unsigned int newton_iterations =
-          solve_contact_newton(contact_law,
-                               s,
-                               w_tilde - W_star,
-                               parameters.newton_tolerance,
-                               parameters.newton_max_iterations,
-                               alpha);
-        AssertThrow(
-          newton_iterations != std::numeric_limits<unsigned int>::max(),
-          ExcMessage("Newton for the contact did not converge at "
-                     "time step " +
-                     std::to_string(step) + " (t = " + std::to_string(t * 1e6) +
-                     " us) within " +
-                     std::to_string(parameters.newton_max_iterations) +
-                     " iterations; reduce Time integration/Time "
-                     "step or raise Newton/Max iterations."));
-        F = contact_law.force(alpha);
-        results.max_newton_iterations =
-          std::max(results.max_newton_iterations, newton_iterations);
-
-        // Back-substitute: plate and impactor at t_{n+1}.
-        u_new.add(-F, c);
-        newmark.update(u_new, u, v, a);
-        newmark.update(w_tilde - F / (m_i * a0), w_p, v_p, acc_p);
-
-        AssertThrow(std::isfinite(alpha) && std::isfinite(w_p) &&
-                      std::isfinite(u(contact_dof)),
-                    ExcMessage("the solution is not finite (NaN or Inf) at "
-                               "time step " +
-                               std::to_string(step) +
-                               " (t = " + std::to_string(t * 1e6) + " us)."));
-
-        // Trapezoidal impulse: exact for the average acceleration rule,
-        // m (v_{n+1} - v_n) = -dt (F_n + F_{n+1})/2.
-        impulse += 0.5 * dt * (F_old + F);
+        // Trapezoidal impulse: consistent with both schemes' impactor
+        // update, m (v_{n+1} - v_n) = -dt (F_n + F_{n+1})/2 for gamma = 1/2.
+        impulse += 0.5 * dt * (F_old + contact.force);
 
         // Contact episodes; separation time by linear interpolation of the
         // indentation's zero crossing (second-order accurate).
-        const bool now_in_contact = (alpha > 0.);
+        const bool now_in_contact = (contact.alpha > 0.);
         if (in_contact && !now_in_contact && !separated_once)
           {
-            separated_once  = true;
-            separation_time = t - dt + dt * alpha_old / (alpha_old - alpha);
+            separated_once = true;
+            separation_time =
+              t - dt + dt * alpha_old / (alpha_old - contact.alpha);
           }
         if (!in_contact && now_in_contact)
           ++n_impacts;
         in_contact = now_in_contact;
 
-        record(step, t, newton_iterations);
+        record(step, t);
       }
     loop_timer.stop();
 
@@ -478,11 +374,11 @@ namespace fgimpact
     results.n_impacts        = n_impacts;
     results.contact_duration = separation_time;
     results.departure_velocity =
-      in_contact ? std::numeric_limits<double>::quiet_NaN() : -v_p;
+      in_contact ? std::numeric_limits<double>::quiet_NaN() : -ball.v;
     // Momentum balance of the impactor: int F dt = m (V0 + V_departure),
     // evaluated at the end of the run with its current velocity.
     results.momentum_balance_error =
-      std::abs(impulse - m_i * (V0 - v_p)) / (m_i * V0);
+      std::abs(impulse - m_i * (V0 - ball.v)) / (m_i * V0);
 
     if (in_contact || !separated_once)
       pcout << "  WARNING: the impactor is still in contact at the end time; "
@@ -571,6 +467,8 @@ namespace fgimpact
     put("time_loop_s", r.time_loop_time, 3);
     put("time_per_step_ms", 1e3 * r.time_loop_time / r.n_time_steps, 4);
     put("output_s", r.output_time, 3);
+    put("spmv_ms", 1e3 * r.spmv_time, 4);
+    put("solve_ms", 1e3 * r.solve_time, 4);
     put("wall_time_s", r.wall_time, 3);
   }
 } // namespace fgimpact

@@ -3,7 +3,6 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -17,52 +16,57 @@ namespace fgimpact
   using namespace dealii;
 
   /**
-   * Solves with the constant, symmetric positive definite effective matrix
-   * K + a0 M many times: a sparse direct factorization computed once
-   * (Trilinos Amesos: KLU or MUMPS), or preconditioned CG started from the
-   * caller's initial guess.
+   * Solves many times with the constant, symmetric positive definite
+   * effective matrix K + a0 M:
+   *  - cholmod: supernodal sparse Cholesky (SuiteSparse CHOLMOD), factorized once; fastest back-substitution measured here
+   *    (doc/performance.md). Needs all DoFs on one MPI rank.
+   *  - klu, mumps: Trilinos Amesos direct solvers, factorized once.
+   *  - cg: conjugate gradients started from the caller's initial guess (the
+   *    previous step), with a Jacobi, SSOR or algebraic multigrid (Trilinos
+   *    ML) preconditioner; for meshes too large to factorize.
+   *  - auto: cholmod up to `Auto direct limit` DoFs, cg + jacobi above.
    */
   class EffectiveMatrixSolver
   {
   public:
     struct Parameters
     {
-      std::string  type           = "direct";
-      std::string  direct_package = "Amesos_Klu";
+      std::string  type           = "auto";
+      std::string  preconditioner = "jacobi";
+      unsigned int auto_limit     = 300000;
       double       tolerance      = 1e-12;
       unsigned int max_iterations = 1000;
 
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
+      static void declare_parameters(ParameterHandler &prm);
+      void        parse_parameters(ParameterHandler &prm);
     };
 
     explicit EffectiveMatrixSolver(const Parameters &parameters);
+    ~EffectiveMatrixSolver();
 
     /// Factorize or precondition A; A must outlive this object.
-    void
-    initialize(const TrilinosWrappers::SparseMatrix &A);
+    void initialize(const TrilinosWrappers::SparseMatrix &A);
 
-    /// Solve A x = b; x on input is the initial guess of CG.
-    void
-    solve(TrilinosWrappers::MPI::Vector       &x,
-          const TrilinosWrappers::MPI::Vector &b);
+    /// Solve A x = b; on input x is the initial guess of cg.
+    void solve(TrilinosWrappers::MPI::Vector       &x,
+               const TrilinosWrappers::MPI::Vector &b);
 
-    /// CG iterations of the last solve (0 for direct).
-    unsigned int
-    last_iterations() const
-    {
-      return iterations;
-    }
+    /// The solver actually used ("auto" resolved).
+    const std::string &type() const { return resolved_type; }
+
+    /// CG iterations of the last solve (0 for direct solvers).
+    unsigned int last_iterations() const { return iterations; }
 
   private:
-    const Parameters                                    parameters;
-    const TrilinosWrappers::SparseMatrix               *matrix = nullptr;
-    SolverControl                                       control;
-    std::unique_ptr<TrilinosWrappers::SolverDirect>     direct;
-    std::unique_ptr<TrilinosWrappers::PreconditionSSOR> preconditioner;
-    unsigned int                                        iterations = 0;
+    struct Cholmod; // pimpl: keeps CHOLMOD out of the headers
+
+    const Parameters                                      parameters;
+    std::string                                           resolved_type;
+    const TrilinosWrappers::SparseMatrix                 *matrix = nullptr;
+    std::unique_ptr<Cholmod>                              cholmod;
+    std::unique_ptr<TrilinosWrappers::SolverDirect>       amesos;
+    std::unique_ptr<TrilinosWrappers::PreconditionBase>   preconditioner;
+    unsigned int                                          iterations = 0;
   };
 } // namespace fgimpact
 

@@ -12,6 +12,7 @@
 #include <fgimpact/material.h>
 #include <fgimpact/newmark.h>
 #include <fgimpact/plate_model.h>
+#include <fgimpact/time_stepper.h>
 
 #include <string>
 
@@ -47,6 +48,8 @@ namespace fgimpact
     double       factorization_time      = 0; // s
     double       time_loop_time          = 0; // s
     double       output_time             = 0; // s
+    double       spmv_time               = 0; // s, one K_eff vmult
+    double       solve_time              = 0; // s, one solve with K_eff
     double       wall_time               = 0; // s
   };
 
@@ -78,9 +81,7 @@ namespace fgimpact
       NewmarkIntegrator::Parameters          time_integration;
       PlateModel::Parameters                 finite_element;
       EffectiveMatrixSolver::Parameters      linear_solver;
-
-      double       newton_tolerance      = 1e-3;
-      unsigned int newton_max_iterations = 50;
+      TimeStepper::Parameters                time_stepper;
 
       std::string  output_directory = "output";
       unsigned int vtu_interval     = 0;
