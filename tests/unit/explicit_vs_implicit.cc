@@ -1,0 +1,99 @@
+// The explicit path (central difference, lumped mass, automatic stable
+// step) against the implicit one (average acceleration, consistent mass,
+// dt = 0.5 us) on a small mesh: peak contact force within 1 %, contact
+// duration within 1 %; and the explicit run conserves energy and momentum.
+// Also: a time step above the stability limit is refused.
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <fgimpact/simulator.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+using namespace fgimpact;
+
+namespace
+{
+  ImpactResults
+  run(const std::string &settings)
+  {
+    ParameterHandler prm;
+    ImpactSimulator::Parameters::declare_parameters(prm);
+    prm.parse_input_from_string(
+      "subsection Geometry\n set Subdivisions x = 10\n set Subdivisions y = 6\n"
+      " set Subdivisions z = 2\nend\n"
+      "subsection Output\n set Directory = out\n set Log interval = 0\n"
+      " set Print timing = false\nend\n" +
+      settings);
+    ImpactSimulator::Parameters p;
+    p.parse_parameters(prm);
+    p.validate();
+    std::filesystem::create_directories(p.output_directory);
+    std::ostringstream log;
+    auto              *old = std::cout.rdbuf(log.rdbuf());
+    ImpactSimulator    simulator(p, MPI_COMM_WORLD);
+    try
+      {
+        simulator.run();
+      }
+    catch (...)
+      {
+        std::cout.rdbuf(old);
+        throw;
+      }
+    std::cout.rdbuf(old);
+    return simulator.get_results();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const ImpactResults implicit_run =
+    run("subsection Time integration\n set Time step = 0.5e-6\nend\n");
+  const ImpactResults explicit_run =
+    run("subsection Time integration\n set Scheme = explicit\n"
+        " set Time step = 0\nend\n");
+
+  const double dF = std::abs(explicit_run.peak_contact_force /
+                               implicit_run.peak_contact_force -
+                             1);
+  const double dT = std::abs(explicit_run.contact_duration /
+                               implicit_run.contact_duration -
+                             1);
+  bool ok = dF < 0.01 && dT < 0.01 && explicit_run.max_energy_drift < 5e-3 &&
+            explicit_run.momentum_balance_error < 5e-3;
+  std::printf("explicit vs implicit peak force within 1 %%: %s\n",
+              dF < 0.01 ? "yes" : "NO");
+  std::printf("explicit vs implicit contact duration within 1 %%: %s\n",
+              dT < 0.01 ? "yes" : "NO");
+  std::printf("explicit energy drift below 0.5 %%: %s\n",
+              explicit_run.max_energy_drift < 5e-3 ? "yes" : "NO");
+  std::printf("explicit momentum balance error below 0.5 %%: %s\n",
+              explicit_run.momentum_balance_error < 5e-3 ? "yes" : "NO");
+
+  // 2 us is about twice the stability limit on this mesh (1.0 us).
+  bool refused = false;
+  try
+    {
+      run("subsection Time integration\n set Scheme = explicit\n"
+          " set Time step = 2e-6\nend\n");
+    }
+  catch (const ExceptionBase &e)
+    {
+      std::ostringstream message;
+      e.print_info(message);
+      refused =
+        message.str().find("exceeds the stability limit") != std::string::npos;
+    }
+  ok = ok && refused;
+  std::printf("unstable explicit time step refused: %s\n", refused ? "yes" : "NO");
+  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+  return ok ? 0 : 1;
+}
