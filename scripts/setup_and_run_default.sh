@@ -6,7 +6,8 @@ cd "$(dirname "$0")/.."
 export DEBIAN_FRONTEND=noninteractive
 apt-get update
 apt-get install -y --no-install-recommends \
-  libdeal.ii-dev numdiff cmake make g++ perl openmpi-bin python3-matplotlib
+  libdeal.ii-dev numdiff cmake make g++ perl openmpi-bin \
+  libsuitesparse-dev libeigen3-dev libopenblas0-serial python3-matplotlib
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j2 --target fgimpact
 ./build/fgimpact prm/default.prm

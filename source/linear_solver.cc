@@ -4,11 +4,8 @@
 #include <fgimpact/linear_solver.h>
 
 #include <Epetra_CrsMatrix.h>
-
-#include <cholmod.h>
-
 #include <algorithm>
-
+#include <cholmod.h>
 #include <vector>
 
 namespace fgimpact
@@ -37,17 +34,17 @@ namespace fgimpact
 
     /// Factorize the symmetric matrix given by its lower triangle.
     void
-    factorize(const size_t                      n,
-              const std::vector<int>           &rows,
-              const std::vector<int>           &columns,
-              const std::vector<double>        &values)
+    factorize(const size_t               n,
+              const std::vector<int>    &rows,
+              const std::vector<int>    &columns,
+              const std::vector<double> &values)
     {
       cholmod_triplet *T = cholmod_allocate_triplet(
         n, n, values.size(), /*stype: lower*/ -1, CHOLMOD_REAL, &common);
       std::copy(rows.begin(), rows.end(), static_cast<int *>(T->i));
       std::copy(columns.begin(), columns.end(), static_cast<int *>(T->j));
       std::copy(values.begin(), values.end(), static_cast<double *>(T->x));
-      T->nnz           = values.size();
+      T->nnz            = values.size();
       cholmod_sparse *A = cholmod_triplet_to_sparse(T, values.size(), &common);
       cholmod_free_triplet(&T, &common);
       factor = cholmod_analyze(A, &common);
@@ -71,7 +68,8 @@ namespace fgimpact
       B.z     = nullptr;
       B.xtype = CHOLMOD_REAL;
       B.dtype = CHOLMOD_DOUBLE;
-      cholmod_solve2(CHOLMOD_A, factor, &B, nullptr, &X, nullptr, &Y, &E, &common);
+      cholmod_solve2(
+        CHOLMOD_A, factor, &B, nullptr, &X, nullptr, &Y, &E, &common);
       const double *result = static_cast<const double *>(X->x);
       std::copy(result, result + n, x);
     }
@@ -176,7 +174,10 @@ namespace fgimpact
             int     n_entries;
             double *row_values;
             int    *row_columns;
-            epetra.ExtractMyRowView(local_row, n_entries, row_values, row_columns);
+            epetra.ExtractMyRowView(local_row,
+                                    n_entries,
+                                    row_values,
+                                    row_columns);
             const int row = epetra.RowMap().GID(local_row);
             for (int k = 0; k < n_entries; ++k)
               {

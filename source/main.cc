@@ -147,7 +147,6 @@ main(int argc, char *argv[])
         prm.parse_input(prm_file);
       parameters.parse_parameters(prm);
       parameters.validate();
-      prepare_output_directory(parameters.output_directory);
     }
   catch (const ExceptionBase &e)
     {
@@ -167,12 +166,25 @@ main(int argc, char *argv[])
 
   try
     {
+      ImpactSimulator simulator(parameters, MPI_COMM_WORLD);
+      // Everything that can fail on bad input is checked before any file
+      // is written: setup() writes nothing.
+      try
+        {
+          simulator.setup();
+          prepare_output_directory(parameters.output_directory);
+        }
+      catch (const ExceptionBase &e)
+        {
+          if (root)
+            std::cerr << "fgimpact: error: " << message_of(e) << '\n';
+          return 1;
+        }
       if (root)
         {
           std::ofstream out(parameters.output_directory + "/parameters.prm");
           prm.print_parameters(out, ParameterHandler::PRM);
         }
-      ImpactSimulator simulator(parameters, MPI_COMM_WORLD);
       simulator.run();
     }
   catch (const ExceptionBase &e)

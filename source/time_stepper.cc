@@ -131,11 +131,11 @@ namespace fgimpact
     class ImplicitNewmarkStepper : public TimeStepper
     {
     public:
-      ImplicitNewmarkStepper(const Parameters                        &parameters,
-                             const NewmarkIntegrator::Parameters     &newmark,
+      ImplicitNewmarkStepper(const Parameters                    &parameters,
+                             const NewmarkIntegrator::Parameters &newmark,
                              const EffectiveMatrixSolver::Parameters &solver,
                              const PlateModel                        &plate,
-                             const HertzContactLaw         &contact_law,
+                             const HertzContactLaw        &contact_law,
                              const types::global_dof_index contact_dof,
                              const double                  impactor_mass)
         : parameters(parameters)
@@ -156,8 +156,8 @@ namespace fgimpact
         solver.initialize(effective);
         iterative = (solver.type() == "cg");
 
-        for (auto *vector : {&u, &v, &a, &Mu, &Mv, &Ma, &u_new, &Mu_new,
-                             &rhs, &c, &g})
+        for (auto *vector :
+             {&u, &v, &a, &Mu, &Mv, &Ma, &u_new, &Mu_new, &rhs, &c, &g})
           plate.initialize_vector(*vector);
         g(contact_dof) = 1.;
         g.compress(VectorOperation::insert);
@@ -231,23 +231,22 @@ namespace fgimpact
                                parameters.newton_tolerance,
                                parameters.newton_max_iterations,
                                contact.alpha);
-        AssertThrow(contact.newton_iterations !=
-                      std::numeric_limits<unsigned int>::max(),
-                    ExcMessage(
-                      "Newton for the contact did not converge at " +
-                      at_step(step, t) + " within " +
-                      std::to_string(parameters.newton_max_iterations) +
-                      " iterations; reduce Time integration/Time step or "
-                      "raise Newton/Max iterations."));
-        contact.force = contact_law.force(contact.alpha);
+        AssertThrow(
+          contact.newton_iterations != std::numeric_limits<unsigned int>::max(),
+          ExcMessage("Newton for the contact did not converge at " +
+                     at_step(step, t) + " within " +
+                     std::to_string(parameters.newton_max_iterations) +
+                     " iterations; reduce Time integration/Time step or "
+                     "raise Newton/Max iterations."));
+        contact.force  = contact_law.force(contact.alpha);
         const double F = contact.force;
 
         // Back-substitute: plate and impactor at t_{n+1}.
         u_new.add(-F, c);
         plate.mass_matrix().vmult(Mu_new, u_new);
         // u^T K u from K_eff u = M r_n - F g:  K u = M r_n - F g - a0 M u.
-        strain = 0.5 * (u_new * rhs - F * u_new(contact_dof) -
-                        a0 * (u_new * Mu_new));
+        strain =
+          0.5 * (u_new * rhs - F * u_new(contact_dof) - a0 * (u_new * Mu_new));
 
         newmark.update(u_new, u, v, a);
         newmark.update(Mu_new, Mu, Mv, Ma);
@@ -300,19 +299,19 @@ namespace fgimpact
       }
 
     private:
-      const Parameters                parameters;
-      const NewmarkIntegrator         newmark;
-      EffectiveMatrixSolver           solver;
-      const PlateModel               &plate;
-      const HertzContactLaw          &contact_law;
-      const types::global_dof_index   contact_dof;
-      const double                    m_i;
-      TrilinosWrappers::SparseMatrix  effective;
-      TrilinosWrappers::MPI::Vector   u, v, a, Mu, Mv, Ma, u_new, Mu_new, rhs;
-      TrilinosWrappers::MPI::Vector   c, g;
-      double                          chi     = 0;
-      bool                            iterative = false;
-      double                          kinetic = 0, strain = 0;
+      const Parameters               parameters;
+      const NewmarkIntegrator        newmark;
+      EffectiveMatrixSolver          solver;
+      const PlateModel              &plate;
+      const HertzContactLaw         &contact_law;
+      const types::global_dof_index  contact_dof;
+      const double                   m_i;
+      TrilinosWrappers::SparseMatrix effective;
+      TrilinosWrappers::MPI::Vector  u, v, a, Mu, Mv, Ma, u_new, Mu_new, rhs;
+      TrilinosWrappers::MPI::Vector  c, g;
+      double                         chi       = 0;
+      bool                           iterative = false;
+      double                         kinetic = 0, strain = 0;
     };
 
 
@@ -331,9 +330,9 @@ namespace fgimpact
                                const NewmarkIntegrator::Parameters &newmark,
                                const PlateModel                    &plate,
                                const HertzContactLaw               &contact_law,
-                               const types::global_dof_index contact_dof,
-                               const double                  impactor_mass,
-                               const double                  impact_velocity)
+                               const types::global_dof_index        contact_dof,
+                               const double impactor_mass,
+                               const double impact_velocity)
         : parameters(parameters)
         , requested_dt(newmark.time_step)
         , plate(plate)
@@ -347,7 +346,8 @@ namespace fgimpact
       initialize() override
       {
         Timer timer;
-        for (auto *vector : {&u, &v, &a, &Ku, &inverse_mass, &lumped_mass, &x, &y})
+        for (auto *vector :
+             {&u, &v, &a, &Ku, &inverse_mass, &lumped_mass, &x, &y})
           plate.initialize_vector(*vector);
 
         // Row-sum lumping: M_L = M 1 (positive for FE_Q(1) and FE_Q(2)).
@@ -361,8 +361,8 @@ namespace fgimpact
                                    "non-positive entry"));
             // Constrained DoFs stay at rest: zero inverse mass.
             const bool constrained = constraints.is_constrained(i);
-            lumped_mass(i)  = constrained ? 0. : inverse_mass(i);
-            inverse_mass(i) = constrained ? 0. : 1. / inverse_mass(i);
+            lumped_mass(i)         = constrained ? 0. : inverse_mass(i);
+            inverse_mass(i)        = constrained ? 0. : 1. / inverse_mass(i);
           }
         inverse_mass.compress(VectorOperation::insert);
         lumped_mass.compress(VectorOperation::insert);
@@ -509,15 +509,16 @@ namespace fgimpact
         return lambda;
       }
 
-      const Parameters               parameters;
-      const double                   requested_dt;
-      const PlateModel              &plate;
-      const HertzContactLaw         &contact_law;
-      const types::global_dof_index  contact_dof;
-      const double                   m_i, V0;
-      double                         dt = 0, stable_dt = 0;
-      TrilinosWrappers::MPI::Vector  u, v, a, Ku, inverse_mass, lumped_mass, x, y;
-      double                         kinetic = 0, strain = 0;
+      const Parameters              parameters;
+      const double                  requested_dt;
+      const PlateModel             &plate;
+      const HertzContactLaw        &contact_law;
+      const types::global_dof_index contact_dof;
+      const double                  m_i, V0;
+      double                        dt = 0, stable_dt = 0;
+      TrilinosWrappers::MPI::Vector u, v, a, Ku, inverse_mass, lumped_mass, x,
+        y;
+      double kinetic = 0, strain = 0;
     };
   } // namespace
 

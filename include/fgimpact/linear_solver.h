@@ -18,8 +18,9 @@ namespace fgimpact
   /**
    * Solves many times with the constant, symmetric positive definite
    * effective matrix K + a0 M:
-   *  - cholmod: supernodal sparse Cholesky (SuiteSparse CHOLMOD), factorized once; fastest back-substitution measured here
-   *    (doc/performance.md). Needs all DoFs on one MPI rank.
+   *  - cholmod: supernodal sparse Cholesky (SuiteSparse CHOLMOD), factorized
+   * once; fastest back-substitution measured here (doc/performance.md). Needs
+   * all DoFs on one MPI rank.
    *  - klu, mumps: Trilinos Amesos direct solvers, factorized once.
    *  - cg: conjugate gradients started from the caller's initial guess (the
    *    previous step), with a Jacobi, SSOR or algebraic multigrid (Trilinos
@@ -37,36 +38,48 @@ namespace fgimpact
       double       tolerance      = 1e-12;
       unsigned int max_iterations = 1000;
 
-      static void declare_parameters(ParameterHandler &prm);
-      void        parse_parameters(ParameterHandler &prm);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
     };
 
     explicit EffectiveMatrixSolver(const Parameters &parameters);
     ~EffectiveMatrixSolver();
 
     /// Factorize or precondition A; A must outlive this object.
-    void initialize(const TrilinosWrappers::SparseMatrix &A);
+    void
+    initialize(const TrilinosWrappers::SparseMatrix &A);
 
     /// Solve A x = b; on input x is the initial guess of cg.
-    void solve(TrilinosWrappers::MPI::Vector       &x,
-               const TrilinosWrappers::MPI::Vector &b);
+    void
+    solve(TrilinosWrappers::MPI::Vector       &x,
+          const TrilinosWrappers::MPI::Vector &b);
 
     /// The solver actually used ("auto" resolved).
-    const std::string &type() const { return resolved_type; }
+    const std::string &
+    type() const
+    {
+      return resolved_type;
+    }
 
     /// CG iterations of the last solve (0 for direct solvers).
-    unsigned int last_iterations() const { return iterations; }
+    unsigned int
+    last_iterations() const
+    {
+      return iterations;
+    }
 
   private:
     struct Cholmod; // pimpl: keeps CHOLMOD out of the headers
 
-    const Parameters                                      parameters;
-    std::string                                           resolved_type;
-    const TrilinosWrappers::SparseMatrix                 *matrix = nullptr;
-    std::unique_ptr<Cholmod>                              cholmod;
-    std::unique_ptr<TrilinosWrappers::SolverDirect>       amesos;
-    std::unique_ptr<TrilinosWrappers::PreconditionBase>   preconditioner;
-    unsigned int                                          iterations = 0;
+    const Parameters                                    parameters;
+    std::string                                         resolved_type;
+    const TrilinosWrappers::SparseMatrix               *matrix = nullptr;
+    std::unique_ptr<Cholmod>                            cholmod;
+    std::unique_ptr<TrilinosWrappers::SolverDirect>     amesos;
+    std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;
+    unsigned int                                        iterations = 0;
   };
 } // namespace fgimpact
 

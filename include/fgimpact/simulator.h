@@ -4,6 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <fgimpact/contact_law.h>
 #include <fgimpact/geometry.h>
@@ -12,8 +13,10 @@
 #include <fgimpact/material.h>
 #include <fgimpact/newmark.h>
 #include <fgimpact/plate_model.h>
+#include <fgimpact/probes.h>
 #include <fgimpact/time_stepper.h>
 
+#include <memory>
 #include <string>
 
 namespace fgimpact
@@ -102,8 +105,17 @@ namespace fgimpact
     ImpactSimulator(const Parameters &parameters,
                     const MPI_Comm    mpi_communicator);
 
-    /// Run the whole simulation and write history.csv, summary.txt and VTU
-    /// files into the output directory (which must exist).
+    /**
+     * Build the mesh, matrices and time stepper, and check what can only be
+     * checked then (the contact node, the explicit stability limit).
+     * Writes no file, so a failure here leaves no output behind.
+     */
+    void
+    setup();
+
+    /// Run the simulation (calling setup() if not done) and write
+    /// history.csv, summary.txt and VTU files into the output directory,
+    /// which must exist.
     void
     run();
 
@@ -121,6 +133,18 @@ namespace fgimpact
     const MPI_Comm     mpi_communicator;
     ConditionalOStream pcout;
     ImpactResults      results;
+    Timer              total_timer;
+
+    std::unique_ptr<PlateGeometry>              geometry_ptr;
+    std::unique_ptr<FunctionallyGradedMaterial> material_ptr;
+    std::unique_ptr<Impactor>                   impactor_ptr;
+    std::unique_ptr<HertzContactLaw>            contact_law_ptr;
+    std::unique_ptr<PlateModel>                 plate_ptr;
+    std::unique_ptr<TimeStepper>                stepper;
+    std::unique_ptr<PointProbe>                 mid_probe, top_probe;
+    types::global_dof_index                     contact_dof = 0;
+    double                                      dt          = 0;
+    unsigned int                                n_steps     = 0;
   };
 } // namespace fgimpact
 

@@ -54,34 +54,44 @@ namespace fgimpact
       double       newton_tolerance      = 1e-3;
       unsigned int newton_max_iterations = 50;
 
-      static void declare_parameters(ParameterHandler &prm);
-      void        parse_parameters(ParameterHandler &prm);
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
     };
 
     virtual ~TimeStepper() = default;
 
     /// Build matrices/factorizations; fixes the time step.
-    virtual void initialize() = 0;
+    virtual void
+    initialize() = 0;
 
     /// The time step in use (s).
-    virtual double time_step() const = 0;
+    virtual double
+    time_step() const = 0;
 
     /// Advance from t_n to t_{n+1} = t (s); `step` and t only label errors.
-    virtual void advance(const unsigned int step,
-                         const double       t,
-                         ImpactorState     &impactor,
-                         ContactState      &contact) = 0;
+    virtual void
+    advance(const unsigned int step,
+            const double       t,
+            ImpactorState     &impactor,
+            ContactState      &contact) = 0;
 
-    virtual const TrilinosWrappers::MPI::Vector &displacement() const = 0;
-    virtual const TrilinosWrappers::MPI::Vector &velocity() const     = 0;
+    virtual const TrilinosWrappers::MPI::Vector &
+    displacement() const = 0;
+    virtual const TrilinosWrappers::MPI::Vector &
+    velocity() const = 0;
 
     /// Kinetic energy 1/2 v^T M v and strain energy 1/2 u^T K u of the
     /// plate (J), without extra matrix-vector products.
-    virtual double kinetic_energy() const = 0;
-    virtual double strain_energy() const  = 0;
+    virtual double
+    kinetic_energy() const = 0;
+    virtual double
+    strain_energy() const = 0;
 
     /// Name of the scheme and linear solver, for the log.
-    virtual std::string description() const = 0;
+    virtual std::string
+    description() const = 0;
 
     /// Costs measured in initialize() for the benchmark (s): one
     /// matrix-vector product with the matrix of the step, and one solve

@@ -40,6 +40,11 @@ main()
     {"bad selection",
      "subsection Boundary conditions\n set Face x min = pinned\nend\n",
      "Face x min"},
+    {"explicit time step above the stability limit",
+     "subsection Geometry\n set Subdivisions x = 4\n set Subdivisions y = 2\n"
+     " set Subdivisions z = 1\nend\nsubsection Time integration\n"
+     " set Scheme = explicit\n set Time step = 1e-5\nend\n",
+     "Time step"},
     {"unwritable output directory", "", "Output/Directory"}};
 
   bool ok = true;
