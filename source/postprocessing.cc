@@ -93,7 +93,33 @@ namespace fgimpact
     : plate(plate)
     , directory(directory)
     , postprocessor(plate.get_material())
-  {}
+  {
+    // DataOut reads ghost values: ghosted copies, allocated once.
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(plate.get_dof_handler(), relevant);
+    u_ghosted.reinit(plate.locally_owned_dofs(),
+                     relevant,
+                     plate.get_mpi_communicator());
+    v_ghosted.reinit(u_ghosted);
+  }
+
+
+
+  VtuWriter::~VtuWriter()
+  {
+    // Never throw from a destructor: errors surface through finish().
+    if (pending.valid())
+      pending.wait();
+  }
+
+
+
+  void
+  VtuWriter::finish()
+  {
+    if (pending.valid())
+      pending.get();
+  }
 
 
 
@@ -103,42 +129,58 @@ namespace fgimpact
                    const TrilinosWrappers::MPI::Vector &u,
                    const TrilinosWrappers::MPI::Vector &v)
   {
-    const auto &dof_handler = plate.get_dof_handler();
-    // DataOut reads ghost values: copy into ghosted vectors.
-    IndexSet relevant;
-    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-    TrilinosWrappers::MPI::Vector u_ghosted(plate.locally_owned_dofs(),
-                                            relevant,
-                                            plate.get_mpi_communicator());
-    TrilinosWrappers::MPI::Vector v_ghosted(u_ghosted);
+    finish(); // the previous snapshot still reads u_ghosted, v_ghosted
     u_ghosted = u;
     v_ghosted = v;
 
-    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      vector_field(3, DataComponentInterpretation::component_is_part_of_vector);
+    const MPI_Comm     comm    = plate.get_mpi_communicator();
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const std::string  base   = "solution_" + Utilities::int_to_string(step, 5);
+    const std::string  record = base + ".pvtu";
 
-    DataOut<3> data_out;
-    data_out.attach_dof_handler(dof_handler);
-    data_out.add_data_vector(u_ghosted,
-                             std::vector<std::string>(3, "displacement_m"),
-                             DataOut<3>::type_dof_data,
-                             vector_field);
-    data_out.add_data_vector(v_ghosted,
-                             std::vector<std::string>(3, "velocity_m_s"),
-                             DataOut<3>::type_dof_data,
-                             vector_field);
-    data_out.add_data_vector(u_ghosted, postprocessor);
-    data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
+    // Patches and files in the background; no MPI calls there (the piece
+    // names are known), so MPI need not be thread safe.
+    pending = std::async(
+      std::launch::async, [this, t, step, rank, n_ranks, base, record]() {
+        const std::vector<
+          DataComponentInterpretation::DataComponentInterpretation>
+          vector_field(
+            3, DataComponentInterpretation::component_is_part_of_vector);
+        DataOut<3> data_out;
+        data_out.attach_dof_handler(plate.get_dof_handler());
+        data_out.add_data_vector(u_ghosted,
+                                 std::vector<std::string>(3, "displacement_m"),
+                                 DataOut<3>::type_dof_data,
+                                 vector_field);
+        data_out.add_data_vector(v_ghosted,
+                                 std::vector<std::string>(3, "velocity_m_s"),
+                                 DataOut<3>::type_dof_data,
+                                 vector_field);
+        data_out.add_data_vector(u_ghosted, postprocessor);
+        data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
 
-    DataOutBase::VtkFlags flags;
-    flags.time  = t;
-    flags.cycle = step;
-    data_out.set_flags(flags);
+        DataOutBase::VtkFlags flags;
+        flags.time  = t;
+        flags.cycle = step;
+        data_out.set_flags(flags);
 
-    const std::string record = data_out.write_vtu_with_pvtu_record(
-      directory + "/", "solution", step, plate.get_mpi_communicator(), 5);
+        std::ofstream piece(directory + "/" + base + "." +
+                            Utilities::int_to_string(rank) + ".vtu");
+        data_out.write_vtu(piece);
+        AssertThrow(piece, ExcMessage("cannot write " + base + ".vtu"));
+        if (rank == 0)
+          {
+            std::vector<std::string> pieces;
+            for (unsigned int r = 0; r < n_ranks; ++r)
+              pieces.push_back(base + "." + Utilities::int_to_string(r) +
+                               ".vtu");
+            std::ofstream pvtu(directory + "/" + record);
+            data_out.write_pvtu_record(pvtu, pieces);
+          }
+      });
 
-    if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+    if (rank == 0)
       {
         times_and_names.emplace_back(t, record);
         std::ofstream pvd(directory + "/solution.pvd");

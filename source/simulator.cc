@@ -387,6 +387,12 @@ namespace fgimpact
 
         record(step, t);
       }
+    if (vtu)
+      {
+        output_timer.start();
+        vtu->finish();
+        output_timer.stop();
+      }
     loop_timer.stop();
 
     results.n_time_steps     = n_steps;

@@ -8,6 +8,7 @@
 #include <fgimpact/plate_model.h>
 
 #include <fstream>
+#include <future>
 #include <string>
 #include <utility>
 #include <vector>
@@ -58,18 +59,32 @@ namespace fgimpact
   public:
     VtuWriter(const PlateModel &plate, const std::string &directory);
 
-    /// Write one snapshot at time t (s); u, v in m and m/s.
+    /// Waits for the last snapshot to be written.
+    ~VtuWriter();
+
+    /**
+     * Write one snapshot at time t (s); u, v in m and m/s.  The vectors
+     * are copied and the patches are built and written in a background
+     * task, off the time loop's critical path; the next call (or the
+     * destructor) waits for it.
+     */
     void
     write(const unsigned int                   step,
           const double                         t,
           const TrilinosWrappers::MPI::Vector &u,
           const TrilinosWrappers::MPI::Vector &v);
 
+    /// Wait for the pending snapshot, rethrowing its errors.
+    void
+    finish();
+
   private:
     const PlateModel                           &plate;
     const std::string                           directory;
     StressPostprocessor                         postprocessor;
+    TrilinosWrappers::MPI::Vector               u_ghosted, v_ghosted;
     std::vector<std::pair<double, std::string>> times_and_names;
+    std::future<void>                           pending;
   };
 
 
