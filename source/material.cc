@@ -48,11 +48,14 @@ namespace fgimpact
       prm.declare_entry(
         "Property mode",
         "graded",
-        Patterns::Selection("graded|homogeneous"),
+        Patterns::Selection("graded|homogeneous|pointwise"),
         "graded: E and rho are interpolated from their nodal values with the "
         "element shape functions at every quadrature point (graded finite "
         "elements, Eq. 3.3). homogeneous: one value per element, evaluated "
-        "at the element centre (conventional elements).");
+        "at the element centre (conventional elements). pointwise: E(z) and "
+        "rho(z) of Eq. 2.1 evaluated at every quadrature point (no "
+        "interpolation; for steep gradients, large n, where the graded "
+        "interpolant smears the metal skin over the top element).");
     }
     prm.leave_subsection();
   }
@@ -71,9 +74,10 @@ namespace fgimpact
       ceramic_density        = prm.get_double("Ceramic density");
       poissons_ratio         = prm.get_double("Poisson's ratio");
       power_law_index        = prm.get_double("Power-law index");
-      property_mode =
-        (prm.get("Property mode") == "graded" ? PropertyMode::graded :
-                                                PropertyMode::homogeneous);
+      const std::string mode = prm.get("Property mode");
+      property_mode          = (mode == "graded"      ? PropertyMode::graded :
+                                mode == "homogeneous" ? PropertyMode::homogeneous :
+                                                        PropertyMode::pointwise);
     }
     prm.leave_subsection();
   }

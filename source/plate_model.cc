@@ -23,6 +23,8 @@ namespace fgimpact
     , nodal_E(scalar_fe.n_dofs_per_cell())
     , nodal_rho(scalar_fe.n_dofs_per_cell())
   {
+    for (const auto &p : unit_points)
+      unit_point_z.push_back(p[2]);
     const auto &support = scalar_fe.get_unit_support_points();
     for (const auto &p : support)
       unit_support_z.push_back(p[2]);
@@ -49,6 +51,17 @@ namespace fgimpact
     // highest corner.
     const double z0 = cell->vertex(0)[2];
     const double hz = cell->vertex(7)[2] - z0;
+
+    if (material.get_parameters().property_mode == PropertyMode::pointwise)
+      {
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const double z = z0 + unit_point_z[q] * hz;
+            E[q]           = material.youngs_modulus(z);
+            rho[q]         = material.density(z);
+          }
+        return;
+      }
 
     if (material.get_parameters().property_mode == PropertyMode::homogeneous)
       {

@@ -58,8 +58,9 @@ namespace fgimpact
   {
     const auto   cell = inputs.template get_cell<3>();
     const double zc   = cell->center()[2];
-    const bool   graded =
-      material.get_parameters().property_mode == PropertyMode::graded;
+    // Output points are nodes, where the graded interpolant equals E(z).
+    const bool graded =
+      material.get_parameters().property_mode != PropertyMode::homogeneous;
 
     for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
       {

@@ -1,8 +1,10 @@
 #include <deal.II/base/timer.h>
 
+#include <fgimpact/modal_analysis.h>
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/probes.h>
 #include <fgimpact/simulator.h>
+#include <fgimpact/static_analysis.h>
 #include <fgimpact/time_stepper.h>
 
 #include <cmath>
@@ -16,7 +18,16 @@ namespace fgimpact
   void
   ImpactSimulator::Parameters::declare_parameters(ParameterHandler &prm)
   {
+    prm.declare_entry("Problem type",
+                      "impact",
+                      Patterns::Selection("impact|static|modal"),
+                      "impact: the sphere strikes the plate (time history). "
+                      "static: K u = f under the load of subsection Static. "
+                      "modal: the lowest natural frequencies and mode "
+                      "shapes (subsection Modal).");
     PlateGeometry::Parameters::declare_parameters(prm);
+    StaticAnalysis::Parameters::declare_parameters(prm);
+    ModalAnalysis::Parameters::declare_parameters(prm);
     FunctionallyGradedMaterial::Parameters::declare_parameters(prm);
     HertzContactLaw::Parameters::declare_parameters(prm);
     Impactor::Parameters::declare_parameters(prm);
@@ -58,6 +69,9 @@ namespace fgimpact
   void
   ImpactSimulator::Parameters::parse_parameters(ParameterHandler &prm)
   {
+    problem_type = prm.get("Problem type");
+    static_analysis.parse_parameters(prm);
+    modal.parse_parameters(prm);
     geometry.parse_parameters(prm);
     material.parse_parameters(prm);
     contact.parse_parameters(prm);
@@ -158,7 +172,8 @@ namespace fgimpact
     const auto [dof, contact_node] = plate.nearest_top_vertex_dof(
       impactor.impact_point(geometry.length(), geometry.width()), 2);
     contact_dof = dof;
-    AssertThrow(!plate.get_constraints().is_constrained(contact_dof),
+    AssertThrow(parameters.problem_type != "impact" ||
+                  !plate.get_constraints().is_constrained(contact_dof),
                 ExcMessage("Impactor/Impact point: the nearest top-surface "
                            "node lies on a supported face; move the impact "
                            "point inside the plate."));
@@ -182,7 +197,9 @@ namespace fgimpact
           << " DoFs (Q" << plate.get_fe().degree << ", "
           << (parameters.material.property_mode == PropertyMode::graded ?
                 "graded" :
-                "homogeneous")
+              parameters.material.property_mode == PropertyMode::homogeneous ?
+                "homogeneous" :
+                "pointwise")
           << " elements), n = " << parameters.material.power_law_index << '\n'
           << "  impactor mass " << m_i << " kg, V0 = " << V0
           << " m/s; Q_alpha = " << contact_law.contact_modulus() / 1e9
@@ -197,6 +214,8 @@ namespace fgimpact
             << "a node lies under the impact point)\n";
 
     results.setup_time = setup_timer.wall_time();
+    if (parameters.problem_type != "impact")
+      return;
 
     // The time stepper (implicit Newmark or explicit central difference)
     // builds its matrices and fixes the time step.
@@ -226,8 +245,75 @@ namespace fgimpact
   void
   ImpactSimulator::run()
   {
-    if (!stepper)
+    if (!plate_ptr)
       setup();
+    if (parameters.problem_type == "static")
+      run_static();
+    else if (parameters.problem_type == "modal")
+      run_modal();
+    else
+      run_impact();
+  }
+
+
+
+  void
+  ImpactSimulator::run_static()
+  {
+    StaticAnalysis analysis(parameters.static_analysis,
+                            parameters.linear_solver,
+                            *plate_ptr,
+                            impactor_ptr->impact_point(geometry_ptr->length(),
+                                                       geometry_ptr->width()));
+    analysis.solve();
+    analysis.write_output(parameters.output_directory);
+    const auto &r = analysis.get_results();
+    char        line[300];
+    std::snprintf(line,
+                  sizeof(line),
+                  "  static deflection at the centre: bottom %.6f um, mid "
+                  "%.6f um, top %.6f um\n"
+                  "  sigma_xx at the centre: bottom %.4f MPa, mid %.4f MPa, "
+                  "top %.4f MPa\n",
+                  r.deflection[0] * 1e6,
+                  r.deflection[1] * 1e6,
+                  r.deflection[2] * 1e6,
+                  r.sigma_xx[0] * 1e-6,
+                  r.sigma_xx[1] * 1e-6,
+                  r.sigma_xx[2] * 1e-6);
+    pcout << line;
+  }
+
+
+
+  void
+  ImpactSimulator::run_modal()
+  {
+    ModalAnalysis analysis(parameters.modal,
+                           parameters.linear_solver,
+                           *plate_ptr);
+    analysis.solve();
+    analysis.write_output(parameters.output_directory);
+    pcout << "  " << analysis.get_modes().size() << " modes after "
+          << analysis.n_iterations() << " subspace iterations:\n";
+    for (unsigned int j = 0; j < analysis.get_modes().size(); ++j)
+      {
+        char line[120];
+        std::snprintf(line,
+                      sizeof(line),
+                      "  mode %2u  %12.4f Hz  w-energy fraction %.3f\n",
+                      j + 1,
+                      analysis.get_modes()[j].frequency,
+                      analysis.get_modes()[j].w_fraction);
+        pcout << line;
+      }
+  }
+
+
+
+  void
+  ImpactSimulator::run_impact()
+  {
     const PlateGeometry   &geometry    = *geometry_ptr;
     const Impactor        &impactor    = *impactor_ptr;
     const HertzContactLaw &contact_law = *contact_law_ptr;

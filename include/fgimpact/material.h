@@ -17,7 +17,11 @@ namespace fgimpact
     graded,
     /// One value per element, taken at the element centre (conventional
     /// piecewise homogeneous elements).
-    homogeneous
+    homogeneous,
+    /// E(z), rho(z) of Eq. 2.1 evaluated at every quadrature point: no
+    /// interpolation, so a steep gradient (large n) is not smeared over an
+    /// element.
+    pointwise
   };
 
   /**

@@ -29,7 +29,8 @@ namespace fgimpact
   /**
    * Evaluates E(z) and rho(z) at fixed unit-cell points of any cell, either
    * graded (nodal values of the scalar base element interpolated with its
-   * shape functions, Eq. 3.3) or homogeneous (the value at the cell centre).
+   * shape functions, Eq. 3.3), homogeneous (the value at the cell centre) or
+   * pointwise (E(z), rho(z) at the points themselves).
    * The shape function table is computed once; cells must be axis-aligned
    * bricks (all cells of this program are).
    */
@@ -48,6 +49,8 @@ namespace fgimpact
 
   private:
     const FunctionallyGradedMaterial &material;
+    /// z coordinate of each evaluation point on the unit cell.
+    std::vector<double> unit_point_z;
     /// z coordinate of each scalar support point on the unit cell.
     std::vector<double> unit_support_z;
     /// shape_values[k][q] = N_k(unit point q).

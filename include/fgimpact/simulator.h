@@ -11,9 +11,11 @@
 #include <fgimpact/impactor.h>
 #include <fgimpact/linear_solver.h>
 #include <fgimpact/material.h>
+#include <fgimpact/modal_analysis.h>
 #include <fgimpact/newmark.h>
 #include <fgimpact/plate_model.h>
 #include <fgimpact/probes.h>
+#include <fgimpact/static_analysis.h>
 #include <fgimpact/time_stepper.h>
 
 #include <memory>
@@ -85,6 +87,9 @@ namespace fgimpact
       PlateModel::Parameters                 finite_element;
       EffectiveMatrixSolver::Parameters      linear_solver;
       TimeStepper::Parameters                time_stepper;
+      std::string                            problem_type = "impact";
+      StaticAnalysis::Parameters             static_analysis;
+      ModalAnalysis::Parameters              modal;
 
       std::string  output_directory = "output";
       unsigned int vtu_interval     = 0;
@@ -126,6 +131,12 @@ namespace fgimpact
     }
 
   private:
+    void
+    run_impact();
+    void
+    run_static();
+    void
+    run_modal();
     void
     write_summary() const;
 

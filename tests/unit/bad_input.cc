@@ -95,10 +95,11 @@ main()
     fs::remove_all("newton_out");
     {
       std::ofstream prm("newton.prm");
-      prm << "subsection Geometry\n set Subdivisions x = 4\n set Subdivisions y "
-             "= 2\n set Subdivisions z = 1\nend\n"
-             "subsection Newton\n set Tolerance = 1e-15\n set Max iterations = "
-             "1\nend\nsubsection Output\n set Directory = newton_out\nend\n";
+      prm
+        << "subsection Geometry\n set Subdivisions x = 4\n set Subdivisions y "
+           "= 2\n set Subdivisions z = 1\nend\n"
+           "subsection Newton\n set Tolerance = 1e-15\n set Max iterations = "
+           "1\nend\nsubsection Output\n set Directory = newton_out\nend\n";
     }
     const int status =
       std::system((std::string(FGIMPACT_EXECUTABLE) +
@@ -107,15 +108,16 @@ main()
     std::ifstream     err("newton.stderr");
     std::stringstream buffer;
     buffer << err.rdbuf();
-    const std::string text      = buffer.str();
-    const bool        exit_two  = WIFEXITED(status) && WEXITSTATUS(status) == 2;
-    const bool        one_line  = std::count(text.begin(), text.end(), '\n') == 1;
-    const bool        names_step = text.find("time step 1 ") != std::string::npos;
-    ok = ok && exit_two && one_line && names_step;
-    std::printf("Newton failure: exit code 2 %s, one line %s, names the time step %s\n",
-                exit_two ? "yes" : "NO",
-                one_line ? "yes" : "NO",
-                names_step ? "yes" : "NO");
+    const std::string text     = buffer.str();
+    const bool        exit_two = WIFEXITED(status) && WEXITSTATUS(status) == 2;
+    const bool one_line   = std::count(text.begin(), text.end(), '\n') == 1;
+    const bool names_step = text.find("time step 1 ") != std::string::npos;
+    ok                    = ok && exit_two && one_line && names_step;
+    std::printf(
+      "Newton failure: exit code 2 %s, one line %s, names the time step %s\n",
+      exit_two ? "yes" : "NO",
+      one_line ? "yes" : "NO",
+      names_step ? "yes" : "NO");
     if (!(one_line && names_step))
       std::printf("  stderr was: %s\n", text.c_str());
   }

@@ -12,11 +12,10 @@
 //  - convergence of the thickness integration (N and 2N sub-layers) and of
 //    the frequency scan (grid refined twice).
 
-#include <exact/plate_exact.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exact/plate_exact.h>
 #include <functional>
 #include <tuple>
 #include <vector>
@@ -135,17 +134,17 @@ namespace
 int
 main()
 {
-  const double Em = 70e9, rho_m = 2707., Ec = 380e9, rho_c = 3800.;
-  const double nu = 0.3, a = 0.2, b = 0.1, h = 0.02, q0 = 1e6;
-  const Plate  metal  = homogeneous_plate(Em, rho_m, nu, a, b, h);
-  const Plate  fgm1   = power_law_plate(1., a, b, h);
-  const Plate  fgm5   = power_law_plate(5., a, b, h);
-  const double lambda = Em * nu / ((1 + nu) * (1 - 2 * nu));
-  const double mu     = Em / (2 * (1 + nu));
-  const double c_L = std::sqrt((lambda + 2 * mu) / rho_m);
-  const double c_T = std::sqrt(mu / rho_m);
+  const double       Em = 70e9, rho_m = 2707., Ec = 380e9, rho_c = 3800.;
+  const double       nu = 0.3, a = 0.2, b = 0.1, h = 0.02, q0 = 1e6;
+  const Plate        metal  = homogeneous_plate(Em, rho_m, nu, a, b, h);
+  const Plate        fgm1   = power_law_plate(1., a, b, h);
+  const Plate        fgm5   = power_law_plate(5., a, b, h);
+  const double       lambda = Em * nu / ((1 + nu) * (1 - 2 * nu));
+  const double       mu     = Em / (2 * (1 + nu));
+  const double       c_L    = std::sqrt((lambda + 2 * mu) / rho_m);
+  const double       c_T    = std::sqrt(mu / rho_m);
   const RayleighLamb rl{c_L, c_T, h / 2};
-  auto wave_number = [&](const unsigned m, const unsigned n) {
+  auto               wave_number = [&](const unsigned m, const unsigned n) {
     return M_PI * std::sqrt((m / a) * (m / a) + (n / b) * (n / b));
   };
 
@@ -172,16 +171,19 @@ main()
                   wS / (2 * M_PI));
       std::snprintf(line, sizeof line, "  lowest root is flexural");
       report(line, modes[0].type == ModeType::flexural);
-      std::snprintf(line, sizeof line, "  flexural = antisymmetric Rayleigh-Lamb");
+      std::snprintf(line,
+                    sizeof line,
+                    "  flexural = antisymmetric Rayleigh-Lamb");
       report(line, wF > 0 && rel(wF, wA) < 1e-8);
-      std::snprintf(line, sizeof line, "  extensional = symmetric Rayleigh-Lamb");
+      std::snprintf(line,
+                    sizeof line,
+                    "  extensional = symmetric Rayleigh-Lamb");
       report(line, wE > 0 && rel(wE, wS) < 1e-8);
       std::snprintf(line, sizeof line, "  in-plane shear = c_T k (tol 1e-10)");
       report(line, wSH > 0 && rel(wSH, c_T * k) < 1e-10);
       // Flexural mode of a homogeneous plate: W symmetric about mid-plane.
       const auto &shape = modes[0].shape;
-      report("  flexural W(0) = W(h)",
-             rel(shape.W(0.), shape.W(h)) < 1e-8);
+      report("  flexural W(0) = W(h)", rel(shape.W(0.), shape.W(h)) < 1e-8);
     }
 
   // ---------------------------------------------------------------------
@@ -210,8 +212,8 @@ main()
     // deflection exceeds Kirchhoff by about 12 percent, close to Mindlin's
     // w_M / w_K = 1 + D k^2 / (kappa G h), kappa = 5/6.
     const double k11 = wave_number(1, 1);
-    const double rM  = 1 + Em * h * h / (12 * (1 - nu * nu)) * k11 * k11 /
-                            (5. / 6. * mu);
+    const double rM =
+      1 + Em * h * h / (12 * (1 - nu * nu)) * k11 * k11 / (5. / 6. * mu);
     std::printf("  Mindlin (kappa = 5/6) w_M / w_Kirchhoff, h/a = 0.1: %.6f\n",
                 rM);
     report("  h/a = 0.1: 3D exceeds Kirchhoff by 5-20%, Mindlin within 2%",
@@ -221,7 +223,7 @@ main()
     // fundamental frequency omega^2 = D* k^4 / int rho dz.
     const double hh = 0.001 * a, k = wave_number(1, 1);
     const double nind = 1.;
-    const double A0 = hh * (Ec + (Em - Ec) / (nind + 1)) / (1 - nu * nu);
+    const double A0   = hh * (Ec + (Em - Ec) / (nind + 1)) / (1 - nu * nu);
     const double B0 =
       hh * hh * (Ec / 2 + (Em - Ec) / (nind + 2)) / (1 - nu * nu);
     const double D0 =
@@ -232,7 +234,7 @@ main()
     const auto   s     = static_sinusoidal(thin, q0, 1, 1);
     const double rs =
       centre_deflection(s, hh / 2, a, b) / (q0 / (Dstar * std::pow(k, 4)));
-    const double wCPT = k * k * std::sqrt(Dstar / I0);
+    const double wCPT  = k * k * std::sqrt(Dstar / I0);
     const auto   modes = natural_frequencies(thin, 1, 1, 1);
     const double rf    = modes[0].omega / wCPT;
     std::printf("  graded n = 1, h/a = 0.001: w_3D / w_CPT = %.6f, "
@@ -251,22 +253,31 @@ main()
     {
       const Plate p = power_law_plate(nind, a, b, h);
       Options     o1, o2;
-      o1.layers       = 256;
-      o2.layers       = 512;
-      const double w1 = centre_deflection(static_sinusoidal(p, q0, 1, 1, o1),
-                                          h / 2, a, b);
-      const double w2 = centre_deflection(static_sinusoidal(p, q0, 1, 1, o2),
-                                          h / 2, a, b);
+      o1.layers = 256;
+      o2.layers = 512;
+      const double w1 =
+        centre_deflection(static_sinusoidal(p, q0, 1, 1, o1), h / 2, a, b);
+      const double w2 =
+        centre_deflection(static_sinusoidal(p, q0, 1, 1, o2), h / 2, a, b);
       const double s1 = static_sinusoidal(p, q0, 1, 1, o1).sigma_xx(h);
       const double s2 = static_sinusoidal(p, q0, 1, 1, o2).sigma_xx(h);
       const double f1 = natural_frequencies(p, 1, 1, 1, 0., o1)[0].omega;
       const double f2 = natural_frequencies(p, 1, 1, 1, 0., o2)[0].omega;
-      char line[200];
-      std::snprintf(line, sizeof line, "  n = %g: centre deflection, rel. diff < 1e-9", nind);
+      char         line[200];
+      std::snprintf(line,
+                    sizeof line,
+                    "  n = %g: centre deflection, rel. diff < 1e-9",
+                    nind);
       report(line, rel(w1, w2) < 1e-9);
-      std::snprintf(line, sizeof line, "  n = %g: sigma_xx(h), rel. diff < 1e-9", nind);
+      std::snprintf(line,
+                    sizeof line,
+                    "  n = %g: sigma_xx(h), rel. diff < 1e-9",
+                    nind);
       report(line, rel(s1, s2) < 1e-9);
-      std::snprintf(line, sizeof line, "  n = %g: first flexural frequency, rel. diff < 1e-9", nind);
+      std::snprintf(line,
+                    sizeof line,
+                    "  n = %g: first flexural frequency, rel. diff < 1e-9",
+                    nind);
       report(line, rel(f1, f2) < 1e-9);
     }
   {
@@ -281,12 +292,15 @@ main()
         const auto r2    = natural_frequencies(fgm1, m, n, 6, 0., fine);
         bool       same  = r1.size() == r2.size();
         for (std::size_t i = 0; same && i < r1.size(); ++i)
-          same = rel(r1[i].omega, r2[i].omega) < 1e-12 &&
-                 r1[i].type == r2[i].type;
+          same =
+            rel(r1[i].omega, r2[i].omega) < 1e-12 && r1[i].type == r2[i].type;
         char line[200];
-        std::snprintf(line, sizeof line,
-                      "  n = 1, (m,n) = (%u,%u): 6 roots unchanged on 4x finer scan",
-                      m, n);
+        std::snprintf(
+          line,
+          sizeof line,
+          "  n = 1, (m,n) = (%u,%u): 6 roots unchanged on 4x finer scan",
+          m,
+          n);
         report(line, same);
         std::printf("    types:");
         for (const auto &md : r1)
@@ -302,11 +316,12 @@ main()
   // ---------------------------------------------------------------------
   std::printf("4. Reference numbers, q0 = %g Pa, (m,n) = (1,1), "
               "a = %g, b = %g, h = %g m\n",
-              q0, a, b, h);
-  for (const auto &[name, plate] :
-       std::vector<std::pair<const char *, Plate>>{{"homogeneous (metal)",
-                                                    metal},
-                                                   {"graded n = 1", fgm1}})
+              q0,
+              a,
+              b,
+              h);
+  for (const auto &[name, plate] : std::vector<std::pair<const char *, Plate>>{
+         {"homogeneous (metal)", metal}, {"graded n = 1", fgm1}})
     {
       std::printf("  %s\n", name);
       const auto s = static_sinusoidal(plate, q0, 1, 1);

@@ -55,18 +55,16 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const ImpactResults implicit_run =
+  const ImpactResults              implicit_run =
     run("subsection Time integration\n set Time step = 0.5e-6\nend\n");
   const ImpactResults explicit_run =
     run("subsection Time integration\n set Scheme = explicit\n"
         " set Time step = 0\nend\n");
 
-  const double dF = std::abs(explicit_run.peak_contact_force /
-                               implicit_run.peak_contact_force -
-                             1);
-  const double dT = std::abs(explicit_run.contact_duration /
-                               implicit_run.contact_duration -
-                             1);
+  const double dF = std::abs(
+    explicit_run.peak_contact_force / implicit_run.peak_contact_force - 1);
+  const double dT =
+    std::abs(explicit_run.contact_duration / implicit_run.contact_duration - 1);
   bool ok = dF < 0.01 && dT < 0.01 && explicit_run.max_energy_drift < 5e-3 &&
             explicit_run.momentum_balance_error < 5e-3;
   std::printf("explicit vs implicit peak force within 1 %%: %s\n",
@@ -93,7 +91,8 @@ main(int argc, char **argv)
         message.str().find("exceeds the stability limit") != std::string::npos;
     }
   ok = ok && refused;
-  std::printf("unstable explicit time step refused: %s\n", refused ? "yes" : "NO");
+  std::printf("unstable explicit time step refused: %s\n",
+              refused ? "yes" : "NO");
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
   return ok ? 0 : 1;
 }

@@ -35,7 +35,10 @@ main(int argc, char **argv)
   ip.initial_velocity = 2.;
   const Impactor        impactor(ip);
   const HertzContactLaw law(HertzContactLaw::Parameters(), material, impactor);
-  PlateModel plate(PlateModel::Parameters(), geometry, material, MPI_COMM_WORLD);
+  PlateModel            plate(PlateModel::Parameters(),
+                   geometry,
+                   material,
+                   MPI_COMM_WORLD);
   plate.setup();
   const auto contact_dof =
     plate.nearest_top_vertex_dof(impactor.impact_point(0.2, 0.1), 2).first;
@@ -50,19 +53,19 @@ main(int argc, char **argv)
   TimeStepper::Parameters tp;
   tp.newton_tolerance = 1e-14;
   EffectiveMatrixSolver::Parameters sp;
-  sp.type = "cholmod";
-  auto stepper =
-    create_time_stepper(tp, np, sp, plate, law, contact_dof, m, ip.initial_velocity);
+  sp.type      = "cholmod";
+  auto stepper = create_time_stepper(
+    tp, np, sp, plate, law, contact_dof, m, ip.initial_velocity);
   stepper->initialize();
   ImpactorState ball;
   ball.v = ip.initial_velocity;
   ContactState contact;
 
   // The monolithic system: DoFs 0..n-1 the plate, n the impactor.
-  const unsigned int n = plate.n_dofs();
+  const unsigned int     n = plate.n_dofs();
   DynamicSparsityPattern dsp(n + 1, n + 1);
-  const auto &K = plate.stiffness_matrix();
-  const auto &M = plate.mass_matrix();
+  const auto            &K = plate.stiffness_matrix();
+  const auto            &M = plate.mass_matrix();
   for (unsigned int i = 0; i < n; ++i)
     for (auto it = K.begin(i); it != K.end(i); ++it)
       dsp.add(i, it->column());
@@ -72,11 +75,10 @@ main(int argc, char **argv)
   SparsityPattern sparsity;
   sparsity.copy_from(dsp);
   SparseMatrix<double> J(sparsity);
-  Vector<double>       u(n), v(n), a(n), r(n), Mr(n), u_it(n), R(n + 1),
-    dx(n + 1);
-  double w = 0, wv = ip.initial_velocity, wa = 0;
+  Vector<double> u(n), v(n), a(n), r(n), Mr(n), u_it(n), R(n + 1), dx(n + 1);
+  double         w = 0, wv = ip.initial_velocity, wa = 0;
 
-  double max_u_difference = 0, max_F_difference = 0, peak_F = 0;
+  double       max_u_difference = 0, max_F_difference = 0, peak_F = 0;
   unsigned int max_iterations = 0;
   for (unsigned int step = 1; step <= 100; ++step)
     {
@@ -89,10 +91,10 @@ main(int argc, char **argv)
             s += it->value() * r(it->column());
           Mr(i) = s;
         }
-      const double rp = newmark.predictor(w, wv, wa);
-      u_it            = u;
-      double w_it     = w;
-      unsigned int it = 0;
+      const double rp   = newmark.predictor(w, wv, wa);
+      u_it              = u;
+      double       w_it = w;
+      unsigned int it   = 0;
       for (; it < 50; ++it)
         {
           const double alpha = w_it + u_it(contact_dof);
@@ -104,8 +106,7 @@ main(int argc, char **argv)
               double s = 0;
               for (auto e = K.begin(i); e != K.end(i); ++e)
                 {
-                  const double kij =
-                    e->value() + a0 * M.el(i, e->column());
+                  const double kij = e->value() + a0 * M.el(i, e->column());
                   J.set(i, e->column(), kij);
                   s += kij * u_it(e->column());
                 }
@@ -145,8 +146,9 @@ main(int argc, char **argv)
           scale = std::max(scale, std::abs(u(i)));
         }
       max_u_difference = std::max(max_u_difference, diff / scale);
-      max_F_difference = std::max(max_F_difference, std::abs(contact.force - F_mono));
-      peak_F           = std::max(peak_F, F_mono);
+      max_F_difference =
+        std::max(max_F_difference, std::abs(contact.force - F_mono));
+      peak_F = std::max(peak_F, F_mono);
     }
 
   const bool ok_u = max_u_difference < 1e-10;
@@ -155,7 +157,9 @@ main(int argc, char **argv)
               "needs up to %s iterations\n",
               peak_F,
               max_iterations <= 6 ? "6" : "MORE THAN 6");
-  std::printf("displacements equal to 1e-10 relative: %s\n", ok_u ? "yes" : "NO");
-  std::printf("contact forces equal to 1e-10 relative: %s\n", ok_F ? "yes" : "NO");
+  std::printf("displacements equal to 1e-10 relative: %s\n",
+              ok_u ? "yes" : "NO");
+  std::printf("contact forces equal to 1e-10 relative: %s\n",
+              ok_F ? "yes" : "NO");
   return ok_u && ok_F ? 0 : 1;
 }

@@ -1,0 +1,93 @@
+#ifndef fgimpact_static_analysis_h
+#define fgimpact_static_analysis_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/linear_solver.h>
+#include <fgimpact/plate_model.h>
+
+#include <string>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * Static deflection of the plate, K u = f, under a load on the top face:
+   * a sinusoidal pressure q0 sin(pi x/a) sin(pi y/b) (which has an exact 3D
+   * solution for simply supported plates), a uniform pressure q0, or a
+   * point force P at the top node nearest to a point.  Loads act downward
+   * (-z).
+   */
+  class StaticAnalysis
+  {
+  public:
+    enum class Load
+    {
+      sinusoidal,
+      uniform,
+      point
+    };
+
+    struct Parameters
+    {
+      Load   load        = Load::sinusoidal;
+      double pressure    = 1e6; // q0, Pa
+      double point_force = 1e3; // P, N
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /// Results at the plate centre, deflection positive downward (m),
+    /// stresses (Pa) at the bottom, middle and top of the centre line.
+    struct Results
+    {
+      double       deflection[3]; // z = 0, h/2, h
+      double       sigma_xx[3], sigma_yy[3], sigma_zz[3];
+      unsigned int n_dofs;
+    };
+
+    StaticAnalysis(const Parameters                        &parameters,
+                   const EffectiveMatrixSolver::Parameters &solver,
+                   const PlateModel                        &plate,
+                   const Point<2>                          &load_point);
+
+    /// Assemble the load and solve.
+    void
+    solve();
+
+    const Results &
+    get_results() const
+    {
+      return results;
+    }
+
+    const TrilinosWrappers::MPI::Vector &
+    displacement() const
+    {
+      return u;
+    }
+
+    /// Write summary.txt and a VTU file of the fields into directory.
+    void
+    write_output(const std::string &directory) const;
+
+  private:
+    void
+    assemble_load(TrilinosWrappers::MPI::Vector &f) const;
+
+    const Parameters                        parameters;
+    const EffectiveMatrixSolver::Parameters solver_parameters;
+    const PlateModel                       &plate;
+    const Point<2>                          load_point;
+    TrilinosWrappers::MPI::Vector           u;
+    Results                                 results;
+  };
+} // namespace fgimpact
+
+#endif

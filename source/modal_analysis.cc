@@ -1,0 +1,226 @@
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <fgimpact/modal_analysis.h>
+#include <fgimpact/postprocessing.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace fgimpact
+{
+  void
+  ModalAnalysis::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Modal");
+    {
+      prm.declare_entry("Number of modes",
+                        "6",
+                        Patterns::Integer(1, 500),
+                        "How many of the lowest natural frequencies (above "
+                        "the shift) to compute.");
+      prm.declare_entry("Shift",
+                        "0",
+                        Patterns::Double(0., 1e9),
+                        "Shift sigma of shift-invert, as a frequency; the "
+                        "modes nearest above it converge first. 0 needs a "
+                        "supported plate (K positive definite). Unit: Hz.");
+      prm.declare_entry("Tolerance",
+                        "1e-10",
+                        Patterns::Double(1e-15, 1e-2),
+                        "Stop when the relative change of every requested "
+                        "omega^2 between two iterations is below this. "
+                        "Dimensionless.");
+      prm.declare_entry("Max iterations",
+                        "200",
+                        Patterns::Integer(1, 100000),
+                        "Subspace iterations cap; reaching it is an error.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ModalAnalysis::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Modal");
+    {
+      n_modes        = prm.get_integer("Number of modes");
+      shift          = prm.get_double("Shift");
+      tolerance      = prm.get_double("Tolerance");
+      max_iterations = prm.get_integer("Max iterations");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  ModalAnalysis::ModalAnalysis(const Parameters &parameters,
+                               const EffectiveMatrixSolver::Parameters &solver,
+                               const PlateModel                        &plate)
+    : parameters(parameters)
+    , solver_parameters(solver)
+    , plate(plate)
+  {}
+
+
+
+  void
+  ModalAnalysis::solve()
+  {
+    const auto        &K = plate.stiffness_matrix();
+    const auto        &M = plate.mass_matrix();
+    const unsigned int n = parameters.n_modes;
+    const unsigned int p = std::min<unsigned int>(2 * n + 8, plate.n_dofs());
+    const double       sigma = std::pow(2. * M_PI * parameters.shift, 2);
+
+    // The shifted operator K - sigma M, factorized once.
+    TrilinosWrappers::SparseMatrix shifted;
+    shifted.copy_from(K);
+    if (sigma != 0.)
+      shifted.add(-sigma, M);
+    EffectiveMatrixSolver solver(solver_parameters);
+    solver.initialize(shifted);
+
+    // Unconstrained DoFs mask: constrained rows of K and M carry
+    // artificial diagonal entries whose ratios are not plate modes.
+    TrilinosWrappers::MPI::Vector mask, w_mask, tmp, Mx;
+    for (auto *v : {&mask, &w_mask, &tmp, &Mx})
+      plate.initialize_vector(*v);
+    const auto                          &fe = plate.get_fe();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            if (!plate.get_constraints().is_constrained(dofs[i]))
+              {
+                mask(dofs[i]) = 1.;
+                w_mask(dofs[i]) =
+                  (fe.system_to_component_index(i).first == 2 ? 1. : 0.);
+              }
+        }
+    mask.compress(VectorOperation::insert);
+    w_mask.compress(VectorOperation::insert);
+
+    // Start block: deterministic, all length scales present.
+    std::vector<TrilinosWrappers::MPI::Vector> X(p), Y(p);
+    for (unsigned int j = 0; j < p; ++j)
+      {
+        plate.initialize_vector(X[j]);
+        plate.initialize_vector(Y[j]);
+        for (const auto i : X[j].locally_owned_elements())
+          X[j](i) = std::sin(0.37 + 1.7 * j + 12.9898 * i * (j + 1));
+        X[j].compress(VectorOperation::insert);
+        X[j].scale(mask);
+      }
+
+    std::vector<double> lambda(p, 0.), lambda_old(p, 0.);
+    for (iterations = 1; iterations <= parameters.max_iterations; ++iterations)
+      {
+        // Y = (K - sigma M)^{-1} M X
+        for (unsigned int j = 0; j < p; ++j)
+          {
+            M.vmult(Mx, X[j]);
+            Mx.scale(mask);
+            Y[j] = 0.;
+            solver.solve(Y[j], Mx);
+            Y[j].scale(mask);
+          }
+        // Rayleigh-Ritz: (Y^T K Y) q = lambda (Y^T M Y) q.
+        LAPACKFullMatrix<double> Kr(p, p), Mr(p, p);
+        for (unsigned int j = 0; j < p; ++j)
+          {
+            K.vmult(tmp, Y[j]);
+            M.vmult(Mx, Y[j]);
+            for (unsigned int i = 0; i <= j; ++i)
+              {
+                Kr(i, j) = Kr(j, i) = Y[i] * tmp;
+                Mr(i, j) = Mr(j, i) = Y[i] * Mx;
+              }
+          }
+        std::vector<Vector<double>> q(p, Vector<double>(p));
+        Kr.compute_generalized_eigenvalues_symmetric(Mr, q);
+        for (unsigned int j = 0; j < p; ++j)
+          lambda[j] = Kr.eigenvalue(j).real();
+        // X = Y Q (M-orthonormal Ritz vectors, ascending lambda).
+        for (unsigned int j = 0; j < p; ++j)
+          {
+            X[j] = 0.;
+            for (unsigned int i = 0; i < p; ++i)
+              X[j].add(q[j](i), Y[i]);
+          }
+
+        bool converged = iterations > 1;
+        for (unsigned int j = 0; j < n; ++j)
+          converged = converged && std::abs(lambda[j] - lambda_old[j]) <=
+                                     parameters.tolerance * std::abs(lambda[j]);
+        lambda_old = lambda;
+        if (converged)
+          break;
+      }
+    AssertThrow(iterations <= parameters.max_iterations,
+                ExcMessage("Modal/Max iterations reached before the "
+                           "frequencies converged."));
+
+    modes.clear();
+    shapes.clear();
+    for (unsigned int j = 0; j < n; ++j)
+      {
+        M.vmult(Mx, X[j]);
+        const double total = X[j] * Mx;
+        tmp                = X[j];
+        tmp.scale(w_mask);
+        M.vmult(Mx, tmp);
+        modes.push_back({std::sqrt(std::max(lambda[j], 0.)) / (2. * M_PI),
+                         (tmp * Mx) / total});
+        shapes.push_back(X[j]);
+      }
+  }
+
+
+
+  void
+  ModalAnalysis::write_output(const std::string &directory) const
+  {
+    if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+      {
+        std::ofstream csv(directory + "/frequencies.csv");
+        csv << "mode, frequency_Hz, w_energy_fraction\n";
+        std::ofstream summary(directory + "/summary.txt");
+        char          line[200];
+        for (unsigned int j = 0; j < modes.size(); ++j)
+          {
+            std::snprintf(line,
+                          sizeof(line),
+                          "%u, %.4f, %.6f\n",
+                          j + 1,
+                          modes[j].frequency,
+                          modes[j].w_fraction);
+            csv << line;
+            std::snprintf(line,
+                          sizeof(line),
+                          "frequency_%u_Hz = %.4f\n",
+                          j + 1,
+                          modes[j].frequency);
+            summary << line;
+          }
+        summary << "n_dofs = " << plate.n_dofs() << '\n'
+                << "subspace_iterations = " << iterations << '\n';
+      }
+    // Mode shapes scaled to a unit maximum displacement, as VTU "time"
+    // steps 1..N (ParaView's time bar then steps through the modes).
+    TrilinosWrappers::MPI::Vector zero;
+    plate.initialize_vector(zero);
+    VtuWriter vtu(plate, directory);
+    for (unsigned int j = 0; j < shapes.size(); ++j)
+      {
+        TrilinosWrappers::MPI::Vector shape = shapes[j];
+        shape /= shape.linfty_norm();
+        vtu.write(j + 1, modes[j].frequency, shape, zero);
+      }
+    vtu.finish();
+  }
+} // namespace fgimpact

@@ -1,0 +1,192 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <fgimpact/postprocessing.h>
+#include <fgimpact/probes.h>
+#include <fgimpact/static_analysis.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace fgimpact
+{
+  void
+  StaticAnalysis::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Static");
+    {
+      prm.declare_entry("Load",
+                        "sinusoidal",
+                        Patterns::Selection("sinusoidal|uniform|point"),
+                        "Load on the top face, downward: sinusoidal = "
+                        "q0 sin(pi x/a) sin(pi y/b) (exact 3D solution exists "
+                        "for simply supported plates), uniform = q0, point = "
+                        "a force P at the top node nearest to the impact "
+                        "point.");
+      prm.declare_entry("Pressure",
+                        "1e6",
+                        Patterns::Double(-1e12, 1e12),
+                        "Amplitude q0 of the sinusoidal or uniform pressure. "
+                        "Unit: Pa.");
+      prm.declare_entry("Point force",
+                        "1000",
+                        Patterns::Double(-1e12, 1e12),
+                        "Point force P of Load = point. Unit: N.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  StaticAnalysis::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Static");
+    {
+      const std::string l = prm.get("Load");
+      load                = (l == "sinusoidal" ? Load::sinusoidal :
+                             l == "uniform"    ? Load::uniform :
+                                                 Load::point);
+      pressure            = prm.get_double("Pressure");
+      point_force         = prm.get_double("Point force");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  StaticAnalysis::StaticAnalysis(
+    const Parameters                        &parameters,
+    const EffectiveMatrixSolver::Parameters &solver,
+    const PlateModel                        &plate,
+    const Point<2>                          &load_point)
+    : parameters(parameters)
+    , solver_parameters(solver)
+    , plate(plate)
+    , load_point(load_point)
+  {}
+
+
+
+  void
+  StaticAnalysis::assemble_load(TrilinosWrappers::MPI::Vector &f) const
+  {
+    plate.initialize_vector(f);
+    if (parameters.load == Load::point)
+      {
+        const auto dof = plate.nearest_top_vertex_dof(load_point, 2).first;
+        f(dof)         = -parameters.point_force;
+        f.compress(VectorOperation::insert);
+        return;
+      }
+
+    const auto                          &fe = plate.get_fe();
+    const double                         a  = plate.get_geometry().length();
+    const double                         b  = plate.get_geometry().width();
+    const QGauss<2>                      quadrature(fe.degree + 2);
+    FEFaceValues<3>                      fe_face(plate.get_mapping(),
+                            fe,
+                            quadrature,
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
+    Vector<double>                       cell_f(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto face : cell->face_indices())
+          if (cell->face(face)->at_boundary() &&
+              cell->face(face)->boundary_id() == 5) // top, z = h
+            {
+              fe_face.reinit(cell, face);
+              cell_f = 0;
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                {
+                  const Point<3> &p = fe_face.quadrature_point(q);
+                  const double    q_load =
+                    parameters.pressure *
+                    (parameters.load == Load::sinusoidal ?
+                       std::sin(M_PI * p[0] / a) * std::sin(M_PI * p[1] / b) :
+                       1.);
+                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                    if (fe.system_to_component_index(i).first == 2)
+                      cell_f(i) -=
+                        q_load * fe_face.shape_value(i, q) * fe_face.JxW(q);
+                }
+              cell->get_dof_indices(dofs);
+              plate.get_constraints().distribute_local_to_global(cell_f,
+                                                                 dofs,
+                                                                 f);
+            }
+    f.compress(VectorOperation::add);
+  }
+
+
+
+  void
+  StaticAnalysis::solve()
+  {
+    TrilinosWrappers::MPI::Vector f;
+    assemble_load(f);
+    plate.initialize_vector(u);
+    EffectiveMatrixSolver solver(solver_parameters);
+    solver.initialize(plate.stiffness_matrix());
+    solver.solve(u, f);
+    plate.get_constraints().distribute(u);
+
+    const double h = plate.get_geometry().thickness();
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        const PointProbe probe(plate, plate.get_geometry().centre(0.5 * k * h));
+        const SymmetricTensor<2, 3> sigma = probe.stress(u);
+        results.deflection[k]             = -probe.displacement(u)[2];
+        results.sigma_xx[k]               = sigma[0][0];
+        results.sigma_yy[k]               = sigma[1][1];
+        results.sigma_zz[k]               = sigma[2][2];
+      }
+    results.n_dofs = plate.n_dofs();
+  }
+
+
+
+  void
+  StaticAnalysis::write_output(const std::string &directory) const
+  {
+    if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+      {
+        std::ofstream out(directory + "/summary.txt");
+        char          line[200];
+        const char   *where[3] = {"bottom", "mid", "top"};
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            std::snprintf(line,
+                          sizeof(line),
+                          "static_deflection_%s_um = %.6f\n",
+                          where[k],
+                          results.deflection[k] * 1e6);
+            out << line;
+          }
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            std::snprintf(line,
+                          sizeof(line),
+                          "sigma_xx_%s_MPa = %.6f\nsigma_yy_%s_MPa = %.6f\n"
+                          "sigma_zz_%s_MPa = %.6f\n",
+                          where[k],
+                          results.sigma_xx[k] * 1e-6,
+                          where[k],
+                          results.sigma_yy[k] * 1e-6,
+                          where[k],
+                          results.sigma_zz[k] * 1e-6);
+            out << line;
+          }
+        out << "n_dofs = " << results.n_dofs << '\n';
+      }
+    TrilinosWrappers::MPI::Vector zero;
+    plate.initialize_vector(zero);
+    VtuWriter vtu(plate, directory);
+    vtu.write(0, 0., u, zero);
+    vtu.finish();
+  }
+} // namespace fgimpact
