@@ -30,7 +30,8 @@ namespace fgimpact
    */
   struct ImpactResults
   {
-    double       peak_contact_force      = 0; // N
+    double       peak_contact_force      = 0; // N, parabola through 3 samples
+    double       max_sampled_force       = 0; // N, largest sample
     double       time_of_peak_force      = 0; // s
     double       contact_duration        = 0; // s, NaN if still in contact
     double       departure_velocity      = 0; // m/s, rebound positive
