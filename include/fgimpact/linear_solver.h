@@ -32,11 +32,12 @@ namespace fgimpact
   public:
     struct Parameters
     {
-      std::string  type           = "auto";
-      std::string  preconditioner = "jacobi";
-      unsigned int auto_limit     = 300000;
-      double       tolerance      = 1e-12;
-      unsigned int max_iterations = 1000;
+      std::string  type             = "auto";
+      std::string  preconditioner   = "jacobi";
+      unsigned int auto_limit       = 300000;
+      std::string  cholmod_ordering = "amd";
+      double       tolerance        = 1e-12;
+      unsigned int max_iterations   = 1000;
 
       static void
       declare_parameters(ParameterHandler &prm);
