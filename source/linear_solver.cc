@@ -1,3 +1,5 @@
+#include <deal.II/dofs/dof_tools.h>
+
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
@@ -111,10 +113,13 @@ namespace fgimpact
                         "dominated by M/(beta dt^2) for small dt, where "
                         "jacobi is cheapest; amg (Trilinos ML) for large dt.");
       prm.declare_entry("Auto direct limit",
-                        "300000",
+                        "700000",
                         Patterns::Integer(0, 1000000000),
                         "Largest number of DoFs for which 'auto' factorizes "
-                        "(cholmod); above it 'auto' uses cg.");
+                        "(cholmod); above it 'auto' uses cg. cholmod was "
+                        "faster than cg at every size measured (up to "
+                        "665,091 DoFs, where its factor needs ~10 GB); the "
+                        "limit is set by memory (doc/performance.md).");
       prm.declare_entry("CHOLMOD ordering",
                         "amd",
                         Patterns::Selection("auto|amd|metis|nesdis"),
@@ -123,7 +128,7 @@ namespace fgimpact
                         "meshes measured (doc/performance.md); auto lets "
                         "CHOLMOD try several.");
       prm.declare_entry("Tolerance",
-                        "1e-12",
+                        "1e-10",
                         Patterns::Double(1e-16, 1e-2),
                         "Relative residual tolerance of cg, |r| <= tol |b|. "
                         "Dimensionless.");
@@ -166,7 +171,8 @@ namespace fgimpact
 
 
   void
-  EffectiveMatrixSolver::initialize(const TrilinosWrappers::SparseMatrix &A)
+  EffectiveMatrixSolver::initialize(const TrilinosWrappers::SparseMatrix &A,
+                                    const DoFHandler<3> *dof_handler)
   {
     matrix        = &A;
     resolved_type = parameters.type;
@@ -237,6 +243,12 @@ namespace fgimpact
           {
             auto p = std::make_unique<TrilinosWrappers::PreconditionAMG>();
             TrilinosWrappers::PreconditionAMG::AdditionalData data;
+            // The near null space of elasticity: at least the three
+            // translations (rotations are not extracted by deal.II 9.4).
+            if (dof_handler)
+              DoFTools::extract_constant_modes(*dof_handler,
+                                               ComponentMask(3, true),
+                                               data.constant_modes);
             data.elliptic              = true;
             data.higher_order_elements = false;
             data.smoother_sweeps       = 2;

@@ -153,7 +153,7 @@ namespace fgimpact
         Timer timer;
         effective.copy_from(plate.stiffness_matrix());
         effective.add(newmark.mass_factor(), plate.mass_matrix());
-        solver.initialize(effective);
+        solver.initialize(effective, &plate.get_dof_handler());
         iterative = (solver.type() == "cg");
 
         for (auto *vector :
@@ -203,7 +203,14 @@ namespace fgimpact
         // products (no matrix-vector product).
         newmark.predictor(Mu, Mv, Ma, rhs);
         if (iterative)
-          u_new = u; // warm start: the previous displacement
+          {
+            // Warm start: u* = u_{n+1} + F c with the explicit predictor
+            // u_{n+1} ~ u + dt v + dt^2/2 a and the last contact force.
+            const double dt = newmark.time_step();
+            u_new           = u;
+            u_new.add(dt, v, 0.5 * dt * dt, a);
+            u_new.add(contact.force, c);
+          }
         try
           {
             solver.solve(u_new, rhs);
@@ -299,14 +306,16 @@ namespace fgimpact
       }
 
     private:
-      const Parameters               parameters;
-      const NewmarkIntegrator        newmark;
+      const Parameters        parameters;
+      const NewmarkIntegrator newmark;
+      // Declared before the solver, which refers to it: members are
+      // destroyed in reverse order (Amesos_Mumps crashed otherwise).
+      TrilinosWrappers::SparseMatrix effective;
       EffectiveMatrixSolver          solver;
       const PlateModel              &plate;
       const HertzContactLaw         &contact_law;
       const types::global_dof_index  contact_dof;
       const double                   m_i;
-      TrilinosWrappers::SparseMatrix effective;
       TrilinosWrappers::MPI::Vector  u, v, a, Mu, Mv, Ma, u_new, Mu_new, rhs;
       TrilinosWrappers::MPI::Vector  c, g;
       double                         chi       = 0;

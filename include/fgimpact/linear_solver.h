@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <deal.II/dofs/dof_handler.h>
+
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -48,9 +50,14 @@ namespace fgimpact
     explicit EffectiveMatrixSolver(const Parameters &parameters);
     ~EffectiveMatrixSolver();
 
-    /// Factorize or precondition A; A must outlive this object.
+    /**
+     * Factorize or precondition A; A must outlive this object.  The DoF
+     * handler, if given, supplies the translation modes that algebraic
+     * multigrid needs for elasticity.
+     */
     void
-    initialize(const TrilinosWrappers::SparseMatrix &A);
+    initialize(const TrilinosWrappers::SparseMatrix &A,
+               const DoFHandler<3>                  *dof_handler = nullptr);
 
     /// Solve A x = b; on input x is the initial guess of cg.
     void
