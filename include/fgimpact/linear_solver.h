@@ -36,9 +36,9 @@ namespace fgimpact
     {
       std::string  type             = "auto";
       std::string  preconditioner   = "jacobi";
-      unsigned int auto_limit       = 300000;
+      unsigned int auto_limit       = 700000;
       std::string  cholmod_ordering = "amd";
-      double       tolerance        = 1e-12;
+      double       tolerance        = 1e-10;
       unsigned int max_iterations   = 1000;
 
       static void
