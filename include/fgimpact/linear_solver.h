@@ -37,7 +37,7 @@ namespace fgimpact
       std::string  type             = "auto";
       std::string  preconditioner   = "jacobi";
       unsigned int auto_limit       = 700000;
-      std::string  cholmod_ordering = "amd";
+      std::string  cholmod_ordering = "auto";
       double       tolerance        = 1e-10;
       unsigned int max_iterations   = 1000;
 

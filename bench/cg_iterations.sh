@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# CG iteration counts of the implicit path (the program does not print
+# them): counts the calls of dealii::SolverControl::check under gdb, once
+# per CG iteration plus once per solve.  Two runs per case, 1 step and
+# N steps: the difference gives the iterations of a warm-started time step
+# (start = the previous displacement), the 1-step run the iterations of the
+# 4 solves from a zero start made during initialization (unit force, and
+# the 3 in-run reference solves behind solve_ms).
+#
+#   bench/cg_iterations.sh [--out DIR] [nx:ny:nz:preconditioner:N ...]
+#
+# Timings under gdb are meaningless; only the counts are used.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+out=output/bench/cg_iterations
+if [ "${1:-}" = --out ]; then out=$2; shift 2; fi
+cases=("$@")
+[ ${#cases[@]} -gt 0 ] || cases=(40:20:4:jacobi:100 40:20:4:ssor:50 40:20:4:amg:20
+  80:40:8:jacobi:20 80:40:8:amg:10 120:60:8:jacobi:10 120:60:8:amg:5
+  160:80:16:jacobi:5)
+
+command -v gdb > /dev/null || { SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"; $SUDO apt-get install -y gdb; }
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+exe=$out/fgimpact_bench
+cp "${FGIMPACT:-build/fgimpact}" "$exe"
+cat > "$out/count.gdb" <<'GDB'
+set breakpoint pending on
+set pagination off
+break dealii::SolverControl::check
+ignore 1 2000000000
+run
+info breakpoints
+GDB
+
+hits() { # prm
+  gdb -batch -x "$out/count.gdb" --args "$exe" "$1" 2>&1 |
+    sed -n 's/.*breakpoint already hit \([0-9]*\) time.*/\1/p'
+}
+
+echo "| mesh | preconditioner | CG iterations per time step (warm start) | CG iterations from a zero start | steps counted |"
+echo "|---|---|---|---|---|"
+for c in "${cases[@]}"; do
+  IFS=: read -r nx ny nz pc n <<< "$c"
+  for steps in 1 "$n"; do
+    cat > "$out/${nx}x${ny}x${nz}_${pc}_$steps.prm" <<PRM
+include prm/default.prm
+subsection Geometry
+  set Subdivisions x = $nx
+  set Subdivisions y = $ny
+  set Subdivisions z = $nz
+end
+subsection Time integration
+  set End time = ${steps}e-6
+end
+subsection Linear solver
+  set Type = cg
+  set Preconditioner = $pc
+end
+subsection Output
+  set Directory    = $out/run_${nx}x${ny}x${nz}_${pc}_$steps
+  set VTU interval = 0
+  set Log interval = 0
+end
+PRM
+  done
+  h1=$(hits "$out/${nx}x${ny}x${nz}_${pc}_1.prm")
+  hn=$(hits "$out/${nx}x${ny}x${nz}_${pc}_$n.prm")
+  awk -v h1="$h1" -v hn="$hn" -v n="$n" -v mesh="${nx}x${ny}x${nz}" -v pc="$pc" 'BEGIN {
+    w = (hn - h1) / (n - 1) - 1;     # hits per step = iterations + 1
+    z = (h1 - (w + 1)) / 4 - 1;      # 4 zero-start solves in the 1-step run
+    printf "| %s | %s | %.1f | %.1f | %d |\n", mesh, pc, w, z, n - 1 }'
+done
