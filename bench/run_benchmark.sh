@@ -5,7 +5,7 @@
 #
 #   bench/run_benchmark.sh [--quick] [--slow] [--out DIR]
 #
-#   --quick   only the two smallest meshes (about 2 minutes)
+#   --quick   only the two smallest meshes (about 2.5 minutes; all: 23 min)
 #   --slow    also the rows skipped by default for time (KLU on 89,667 DoFs)
 #   --out DIR results directory (default output/bench)
 #

@@ -127,8 +127,7 @@ namespace fgimpact
                         "tries AMD and METIS and keeps the smaller factor; "
                         "forcing amd was up to 2x slower to factorize and "
                         "used 40 % more memory from 89,667 DoFs up "
-                        "(doc/performance.md)."); auto lets "
-                        "CHOLMOD try several.");
+                        "(doc/performance.md).");
       prm.declare_entry("Tolerance",
                         "1e-10",
                         Patterns::Double(1e-16, 1e-2),
