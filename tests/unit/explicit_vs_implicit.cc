@@ -14,52 +14,21 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <test_tools.h>
 
 using namespace fgimpact;
 
-namespace
-{
-  ImpactResults
-  run(const std::string &settings)
-  {
-    ParameterHandler prm;
-    ImpactSimulator::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(
-      "subsection Geometry\n set Subdivisions x = 10\n set Subdivisions y = 6\n"
-      " set Subdivisions z = 2\nend\n"
-      "subsection Output\n set Directory = out\n set Log interval = 0\n"
-      " set Print timing = false\nend\n" +
-      settings);
-    ImpactSimulator::Parameters p;
-    p.parse_parameters(prm);
-    p.validate();
-    std::filesystem::create_directories(p.output_directory);
-    std::ostringstream log;
-    auto              *old = std::cout.rdbuf(log.rdbuf());
-    ImpactSimulator    simulator(p, MPI_COMM_WORLD);
-    try
-      {
-        simulator.run();
-      }
-    catch (...)
-      {
-        std::cout.rdbuf(old);
-        throw;
-      }
-    std::cout.rdbuf(old);
-    return simulator.get_results();
-  }
-} // namespace
+using fgimpact_tests::run_impact;
 
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const ImpactResults              implicit_run =
-    run("subsection Time integration\n set Time step = 0.5e-6\nend\n");
+    run_impact("subsection Time integration\n set Time step = 0.5e-6\nend\n");
   const ImpactResults explicit_run =
-    run("subsection Time integration\n set Scheme = explicit\n"
-        " set Time step = 0\nend\n");
+    run_impact("subsection Time integration\n set Scheme = explicit\n"
+               " set Time step = 0\nend\n");
 
   const double dF = std::abs(
     explicit_run.peak_contact_force / implicit_run.peak_contact_force - 1);
@@ -80,8 +49,8 @@ main(int argc, char **argv)
   bool refused = false;
   try
     {
-      run("subsection Time integration\n set Scheme = explicit\n"
-          " set Time step = 2e-6\nend\n");
+      run_impact("subsection Time integration\n set Scheme = explicit\n"
+                 " set Time step = 2e-6\nend\n");
     }
   catch (const ExceptionBase &e)
     {

@@ -13,35 +13,11 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <test_tools.h>
 
 using namespace fgimpact;
 
-namespace
-{
-  ImpactResults
-  run(const std::string &settings)
-  {
-    ParameterHandler prm;
-    ImpactSimulator::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(
-      "subsection Geometry\n set Subdivisions x = 10\n"
-      " set Subdivisions y = 6\n set Subdivisions z = 2\nend\n"
-      "subsection Output\n set Directory = out\n"
-      " set Log interval = 0\n set Print timing = false\nend\n" +
-      settings);
-    ImpactSimulator::Parameters p;
-    p.parse_parameters(prm);
-    p.validate();
-    std::filesystem::create_directories(p.output_directory);
-    // The simulator's log is not part of this test's output.
-    std::ostringstream log;
-    auto              *old = std::cout.rdbuf(log.rdbuf());
-    ImpactSimulator    simulator(p, MPI_COMM_WORLD);
-    simulator.run();
-    std::cout.rdbuf(old);
-    return simulator.get_results();
-  }
-} // namespace
+using fgimpact_tests::run_impact;
 
 int
 main(int argc, char **argv)
@@ -60,7 +36,7 @@ main(int argc, char **argv)
      "subsection Time integration\n set Time step = 2e-6\n set End time = 600e-6\nend\n"}};
   for (const auto &[name, settings] : cases)
     {
-      const ImpactResults r        = run(settings);
+      const ImpactResults r        = run_impact(settings);
       const bool          energy   = r.max_energy_drift < 5e-3;
       const bool          momentum = r.momentum_balance_error < 5e-3;
       const bool          left =

@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <test_tools.h>
 
 using namespace fgimpact;
 
@@ -30,24 +31,7 @@ namespace
   ImpactResults
   run(const std::string &settings)
   {
-    ParameterHandler prm;
-    ImpactSimulator::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(
-      "subsection Geometry\n set Subdivisions x = 10\n set Subdivisions y = 6\n"
-      " set Subdivisions z = 2\nend\n"
-      "subsection Output\n set Directory = out\n set Log interval = 0\n"
-      " set Print timing = false\nend\n" +
-      settings);
-    ImpactSimulator::Parameters p;
-    p.parse_parameters(prm);
-    p.validate();
-    std::filesystem::create_directories(p.output_directory);
-    std::ostringstream log;
-    auto              *old = std::cout.rdbuf(log.rdbuf());
-    ImpactSimulator    simulator(p, MPI_COMM_WORLD);
-    simulator.run();
-    std::cout.rdbuf(old);
-    const ImpactResults r = simulator.get_results();
+    const ImpactResults r = fgimpact_tests::run_impact(settings);
     if (verbose)
       std::fprintf(stderr,
                    "F %.6g N, contact %.6g us, V_dep %.6g, drift %.3e, "

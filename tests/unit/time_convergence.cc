@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <test_tools.h>
 
 using namespace fgimpact;
 
@@ -26,27 +27,13 @@ namespace
   ImpactResults
   run(const double dt)
   {
-    ParameterHandler prm;
-    ImpactSimulator::Parameters::declare_parameters(prm);
     std::ostringstream settings;
-    settings
-      << "subsection Geometry\n set Subdivisions x = 20\n"
-      << " set Subdivisions y = 10\n set Subdivisions z = 2\nend\n"
-      << "subsection Time integration\n set Time step = " << dt
-      << "\n set End time = 130e-6\nend\n"
-      << "subsection Newton\n set Tolerance = 1e-12\nend\n"
-      << "subsection Output\n set Directory = out\n set Log interval = 0\n"
-      << " set Print timing = false\nend\n";
-    prm.parse_input_from_string(settings.str());
-    ImpactSimulator::Parameters p;
-    p.parse_parameters(prm);
-    std::filesystem::create_directories(p.output_directory);
-    std::ostringstream log;
-    auto              *old = std::cout.rdbuf(log.rdbuf());
-    ImpactSimulator    simulator(p, MPI_COMM_WORLD);
-    simulator.run();
-    std::cout.rdbuf(old);
-    return simulator.get_results();
+    settings << "subsection Geometry\n set Subdivisions x = 20\n"
+             << " set Subdivisions y = 10\n set Subdivisions z = 2\nend\n"
+             << "subsection Time integration\n set Time step = " << dt
+             << "\n set End time = 130e-6\nend\n"
+             << "subsection Newton\n set Tolerance = 1e-12\nend\n";
+    return fgimpact_tests::run_impact(settings.str());
   }
 } // namespace
 
