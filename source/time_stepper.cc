@@ -275,26 +275,6 @@ namespace fgimpact
                                at_step(step, t) + "."));
       }
 
-      const TrilinosWrappers::MPI::Vector &
-      displacement() const override
-      {
-        return u;
-      }
-      const TrilinosWrappers::MPI::Vector &
-      velocity() const override
-      {
-        return v;
-      }
-      double
-      kinetic_energy() const override
-      {
-        return kinetic;
-      }
-      double
-      strain_energy() const override
-      {
-        return strain;
-      }
       std::string
       description() const override
       {
@@ -316,11 +296,10 @@ namespace fgimpact
       const HertzContactLaw         &contact_law;
       const types::global_dof_index  contact_dof;
       const double                   m_i;
-      TrilinosWrappers::MPI::Vector  u, v, a, Mu, Mv, Ma, u_new, Mu_new, rhs;
+      TrilinosWrappers::MPI::Vector  a, Mu, Mv, Ma, u_new, Mu_new, rhs;
       TrilinosWrappers::MPI::Vector  c, g;
       double                         chi       = 0;
       bool                           iterative = false;
-      double                         kinetic = 0, strain = 0;
     };
 
 
@@ -458,26 +437,6 @@ namespace fgimpact
                                "safety factor."));
       }
 
-      const TrilinosWrappers::MPI::Vector &
-      displacement() const override
-      {
-        return u;
-      }
-      const TrilinosWrappers::MPI::Vector &
-      velocity() const override
-      {
-        return v;
-      }
-      double
-      kinetic_energy() const override
-      {
-        return kinetic;
-      }
-      double
-      strain_energy() const override
-      {
-        return strain;
-      }
       std::string
       description() const override
       {
@@ -525,9 +484,7 @@ namespace fgimpact
       const types::global_dof_index contact_dof;
       const double                  m_i, V0;
       double                        dt = 0, stable_dt = 0;
-      TrilinosWrappers::MPI::Vector u, v, a, Ku, inverse_mass, lumped_mass, x,
-        y;
-      double kinetic = 0, strain = 0;
+      TrilinosWrappers::MPI::Vector a, Ku, inverse_mass, lumped_mass, x, y;
     };
   } // namespace
 

@@ -77,17 +77,31 @@ namespace fgimpact
             ImpactorState     &impactor,
             ContactState      &contact) = 0;
 
-    virtual const TrilinosWrappers::MPI::Vector &
-    displacement() const = 0;
-    virtual const TrilinosWrappers::MPI::Vector &
-    velocity() const = 0;
+    /// Plate displacement (m) and velocity (m/s) at the current time.
+    const TrilinosWrappers::MPI::Vector &
+    displacement() const
+    {
+      return u;
+    }
+    const TrilinosWrappers::MPI::Vector &
+    velocity() const
+    {
+      return v;
+    }
 
     /// Kinetic energy 1/2 v^T M v and strain energy 1/2 u^T K u of the
-    /// plate (J), without extra matrix-vector products.
-    virtual double
-    kinetic_energy() const = 0;
-    virtual double
-    strain_energy() const = 0;
+    /// plate (J), kept up to date by advance() without extra matrix-vector
+    /// products.
+    double
+    kinetic_energy() const
+    {
+      return kinetic;
+    }
+    double
+    strain_energy() const
+    {
+      return strain;
+    }
 
     /// Name of the scheme and linear solver, for the log.
     virtual std::string
@@ -99,6 +113,11 @@ namespace fgimpact
     double spmv_time          = 0;
     double solve_time         = 0;
     double factorization_time = 0;
+
+  protected:
+    /// The state every scheme keeps and advance() updates.
+    TrilinosWrappers::MPI::Vector u, v;
+    double                        kinetic = 0, strain = 0;
   };
 
 
