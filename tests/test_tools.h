@@ -11,6 +11,7 @@
 
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 
@@ -51,6 +52,52 @@ namespace fgimpact_tests
         std::cout.rdbuf(old);
         throw;
       }
+  }
+
+
+  /// A plate model with its geometry and material kept alive together.
+  struct PlateCase
+  {
+    std::unique_ptr<fgimpact::PlateGeometry>              geometry;
+    std::unique_ptr<fgimpact::FunctionallyGradedMaterial> material;
+    std::unique_ptr<fgimpact::PlateModel>                 plate;
+  };
+
+  /**
+   * The paper's plate (0.2 x 0.1 x thickness m, simply supported, default
+   * constituents) with power-law index n, assembled on nx x ny x nz
+   * elements of the given degree and property mode.
+   */
+  inline PlateCase
+  make_plate(const unsigned int           nx,
+             const unsigned int           ny,
+             const unsigned int           nz,
+             const unsigned int           degree,
+             const double                 n,
+             const fgimpact::PropertyMode mode = fgimpact::PropertyMode::graded,
+             const double                 thickness = 0.02)
+  {
+    fgimpact::PlateGeometry::Parameters gp;
+    gp.thickness      = thickness;
+    gp.subdivisions_x = nx;
+    gp.subdivisions_y = ny;
+    gp.subdivisions_z = nz;
+    fgimpact::FunctionallyGradedMaterial::Parameters mp;
+    mp.power_law_index = n;
+    mp.property_mode   = mode;
+    fgimpact::PlateModel::Parameters fp;
+    fp.degree = degree;
+
+    PlateCase c;
+    c.geometry = std::make_unique<fgimpact::PlateGeometry>(gp);
+    c.material =
+      std::make_unique<fgimpact::FunctionallyGradedMaterial>(mp, thickness);
+    c.plate = std::make_unique<fgimpact::PlateModel>(fp,
+                                                     *c.geometry,
+                                                     *c.material,
+                                                     MPI_COMM_WORLD);
+    c.plate->setup();
+    return c;
   }
 } // namespace fgimpact_tests
 

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exact/plate_exact.h>
+#include <test_tools.h>
 
 using namespace fgimpact;
 
@@ -32,19 +33,8 @@ namespace
               const unsigned int nz,
               const PropertyMode mode = PropertyMode::graded)
   {
-    PlateGeometry::Parameters gp;
-    gp.subdivisions_x = nx;
-    gp.subdivisions_y = ny;
-    gp.subdivisions_z = nz;
-    const PlateGeometry                    geometry(gp);
-    FunctionallyGradedMaterial::Parameters mp;
-    mp.power_law_index = n;
-    mp.property_mode   = mode;
-    const FunctionallyGradedMaterial material(mp, geometry.thickness());
-    PlateModel::Parameters           fp;
-    fp.degree = degree;
-    PlateModel plate(fp, geometry, material, MPI_COMM_WORLD);
-    plate.setup();
+    const auto  c     = fgimpact_tests::make_plate(nx, ny, nz, degree, n, mode);
+    const auto &plate = *c.plate;
     ModalAnalysis::Parameters mp2;
     mp2.n_modes = 8;
     EffectiveMatrixSolver::Parameters lp;

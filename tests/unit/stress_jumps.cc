@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exact/plate_exact.h>
+#include <test_tools.h>
 
 using namespace fgimpact;
 
@@ -38,21 +39,12 @@ main(int argc, char **argv)
   for (const unsigned int degree : {1u, 2u})
     for (const auto mode : {PropertyMode::graded, PropertyMode::homogeneous})
       {
-        const unsigned int        d  = degree - 1;
-        const unsigned int        m  = (mode == PropertyMode::graded ? 0 : 1);
-        const unsigned int        nz = (degree == 1 ? 8 : 4);
-        PlateGeometry::Parameters gp;
-        gp.subdivisions_x = 20;
-        gp.subdivisions_y = 10;
-        gp.subdivisions_z = nz;
-        const PlateGeometry                    geometry(gp);
-        FunctionallyGradedMaterial::Parameters mp;
-        mp.property_mode = mode;
-        const FunctionallyGradedMaterial material(mp, h);
-        PlateModel::Parameters           fp;
-        fp.degree = degree;
-        PlateModel plate(fp, geometry, material, MPI_COMM_WORLD);
-        plate.setup();
+        const unsigned int d  = degree - 1;
+        const unsigned int m  = (mode == PropertyMode::graded ? 0 : 1);
+        const unsigned int nz = (degree == 1 ? 8 : 4);
+        const auto c = fgimpact_tests::make_plate(20, 10, nz, degree, 1., mode);
+        const auto                       &plate    = *c.plate;
+        const auto                       &geometry = *c.geometry;
         EffectiveMatrixSolver::Parameters lp;
         lp.type = "cholmod";
         StaticAnalysis analysis(StaticAnalysis::Parameters(),

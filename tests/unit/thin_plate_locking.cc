@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exact/plate_exact.h>
+#include <test_tools.h>
 
 using namespace fgimpact;
 
@@ -28,19 +29,9 @@ namespace
         const unsigned int ny,
         const unsigned int nz)
   {
-    PlateGeometry::Parameters gp;
-    gp.thickness      = h;
-    gp.subdivisions_x = nx;
-    gp.subdivisions_y = ny;
-    gp.subdivisions_z = nz;
-    const PlateGeometry                    geometry(gp);
-    FunctionallyGradedMaterial::Parameters mp;
-    mp.power_law_index = 0; // pure metal
-    const FunctionallyGradedMaterial material(mp, h);
-    PlateModel::Parameters           fp;
-    fp.degree = degree;
-    PlateModel plate(fp, geometry, material, MPI_COMM_WORLD);
-    plate.setup();
+    const auto c = fgimpact_tests::make_plate(
+      nx, ny, nz, degree, 0., PropertyMode::graded, h);
+    const auto                       &plate = *c.plate;
     EffectiveMatrixSolver::Parameters lp;
     lp.type = "cholmod";
     StaticAnalysis analysis(StaticAnalysis::Parameters(),
