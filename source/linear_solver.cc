@@ -219,9 +219,8 @@ namespace fgimpact
       }
     else if (resolved_type == "klu" || resolved_type == "mumps")
       {
-        static SolverControl unused;
         amesos = std::make_unique<TrilinosWrappers::SolverDirect>(
-          unused,
+          amesos_control,
           TrilinosWrappers::SolverDirect::AdditionalData(
             false, resolved_type == "klu" ? "Amesos_Klu" : "Amesos_Mumps"));
         amesos->initialize(A);
@@ -269,7 +268,7 @@ namespace fgimpact
     iterations = 0;
     if (cholmod)
       {
-        cholmod->solve(b.local_size(),
+        cholmod->solve(b.locally_owned_size(),
                        b.trilinos_vector()[0],
                        x.trilinos_vector()[0]);
         return;

@@ -65,9 +65,16 @@ namespace fgimpact
 
 
   unsigned int
+  NewmarkIntegrator::number_of_steps(const double end_time, const double dt)
+  {
+    return static_cast<unsigned int>(std::ceil(end_time / dt - 1e-9));
+  }
+
+
+
+  unsigned int
   NewmarkIntegrator::n_steps() const
   {
-    return static_cast<unsigned int>(
-      std::ceil(parameters.end_time / dt - 1e-9));
+    return number_of_steps(parameters.end_time, dt);
   }
 } // namespace fgimpact

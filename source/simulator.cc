@@ -233,9 +233,10 @@ namespace fgimpact
     results.spmv_time          = stepper->spmv_time;
     results.solve_time         = stepper->solve_time;
 
-    dt      = stepper->time_step();
-    n_steps = static_cast<unsigned int>(
-      std::ceil(parameters.time_integration.end_time / dt - 1e-9));
+    dt = stepper->time_step();
+    n_steps =
+      NewmarkIntegrator::number_of_steps(parameters.time_integration.end_time,
+                                         dt);
     pcout << "  " << stepper->description() << "; dt = " << dt * 1e6 << " us, "
           << n_steps << " steps\n";
   }
@@ -314,13 +315,11 @@ namespace fgimpact
   void
   ImpactSimulator::run_impact()
   {
-    const PlateGeometry   &geometry    = *geometry_ptr;
     const Impactor        &impactor    = *impactor_ptr;
     const HertzContactLaw &contact_law = *contact_law_ptr;
     const PlateModel      &plate       = *plate_ptr;
     const double           m_i         = impactor.mass();
     const double           V0          = impactor.initial_velocity();
-    (void)geometry;
     // Plain timers (not TimerOutput, whose destructor writes to the screen
     // when an exception such as a Newton failure is on its way out).
     Timer loop_timer, output_timer;

@@ -5,6 +5,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -81,9 +82,11 @@ namespace fgimpact
   private:
     struct Cholmod; // pimpl: keeps CHOLMOD out of the headers
 
-    const Parameters                                    parameters;
-    std::string                                         resolved_type;
-    const TrilinosWrappers::SparseMatrix               *matrix = nullptr;
+    const Parameters                      parameters;
+    std::string                           resolved_type;
+    const TrilinosWrappers::SparseMatrix *matrix = nullptr;
+    /// Amesos keeps a reference to a SolverControl it does not use.
+    SolverControl                                       amesos_control;
     std::unique_ptr<Cholmod>                            cholmod;
     std::unique_ptr<TrilinosWrappers::SolverDirect>     amesos;
     std::unique_ptr<TrilinosWrappers::PreconditionBase> preconditioner;

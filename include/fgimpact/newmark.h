@@ -70,6 +70,11 @@ namespace fgimpact
     unsigned int
     n_steps() const;
 
+    /// Steps of length dt to reach end_time (the last may end past it by
+    /// round-off); shared with the explicit scheme, whose dt is computed.
+    static unsigned int
+    number_of_steps(const double end_time, const double dt);
+
     /// The predictor r = a0 u + a1 v + a2 a (scalar version).
     double
     predictor(const double u, const double v, const double a) const
