@@ -104,8 +104,9 @@ namespace fgimpact
         "Solver for the constant effective matrix K + M/(beta dt^2). "
         "cholmod: supernodal Cholesky (SuiteSparse), factorized once. klu, "
         "mumps: Trilinos Amesos direct solvers. cg: preconditioned conjugate "
-        "gradients warm-started from the previous step. auto: cholmod up to "
-        "'Auto direct limit' DoFs, cg above (doc/performance.md).");
+        "gradients warm-started from the previous step. auto: up to "
+        "'Auto direct limit' DoFs cholmod on one MPI rank and mumps on "
+        "several; cg above (doc/performance.md).");
       prm.declare_entry("Preconditioner",
                         "jacobi",
                         Patterns::Selection("jacobi|ssor|amg"),
@@ -177,14 +178,21 @@ namespace fgimpact
   {
     matrix        = &A;
     resolved_type = parameters.type;
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(A.get_mpi_communicator());
+    // On one rank CHOLMOD; on several the distributed MUMPS, while the
+    // factor fits (the same limit); CG above.
     if (resolved_type == "auto")
-      resolved_type = (A.m() <= parameters.auto_limit ? "cholmod" : "cg");
+      resolved_type = (A.m() > parameters.auto_limit ? "cg" :
+                       n_ranks == 1                  ? "cholmod" :
+                                                       "mumps");
 
     if (resolved_type == "cholmod")
       {
-        AssertThrow(A.m() == A.local_size(),
-                    ExcMessage("Linear solver/Type = cholmod needs all DoFs "
-                               "on one MPI rank."));
+        AssertThrow(n_ranks == 1,
+                    ExcMessage("Linear solver/Type = cholmod runs on one MPI "
+                               "rank only; use mumps, cg or auto on " +
+                               std::to_string(n_ranks) + " ranks."));
         // The lower triangle, straight from the Epetra rows (deal.II's
         // entry iterators are much slower for this).
         const Epetra_CrsMatrix &epetra = A.trilinos_matrix();

@@ -127,16 +127,6 @@ main(int argc, char *argv[])
         }
     }
 
-  // The time loop reads the contact node's DoF directly; distributed runs
-  // (contact node and probes owned by any rank) are not implemented yet.
-  if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-    {
-      if (root)
-        std::cerr << "fgimpact: error: runs on more than one MPI rank are "
-                     "not supported yet; run on one rank\n";
-      return 1;
-    }
-
   ParameterHandler            prm;
   ImpactSimulator::Parameters parameters;
   // Input errors: everything is checked before any file is written.
@@ -172,7 +162,20 @@ main(int argc, char *argv[])
       try
         {
           simulator.setup();
-          prepare_output_directory(parameters.output_directory);
+          // Rank 0 makes and checks the directory; every rank learns the
+          // outcome, so that all stop together.
+          std::string error;
+          if (root)
+            try
+              {
+                prepare_output_directory(parameters.output_directory);
+              }
+            catch (const ExceptionBase &e)
+              {
+                error = message_of(e);
+              }
+          error = Utilities::MPI::broadcast(MPI_COMM_WORLD, error, 0);
+          AssertThrow(error.empty(), ExcMessage(error));
         }
       catch (const ExceptionBase &e)
         {

@@ -95,7 +95,8 @@ namespace fgimpact
         {
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (!plate.get_constraints().is_constrained(dofs[i]))
+            if (plate.locally_owned_dofs().is_element(dofs[i]) &&
+                !plate.get_constraints().is_constrained(dofs[i]))
               {
                 mask(dofs[i]) = 1.;
                 w_mask(dofs[i]) =

@@ -11,6 +11,8 @@
 
 #include <fgimpact/plate_model.h>
 
+#include <algorithm>
+#include <array>
 #include <limits>
 
 namespace fgimpact
@@ -288,25 +290,62 @@ namespace fgimpact
   PlateModel::nearest_top_vertex_dof(const Point<2>    &xy,
                                      const unsigned int component) const
   {
-    const Point<3>          target(xy[0], xy[1], geometry.thickness());
-    double                  best_distance = std::numeric_limits<double>::max();
-    types::global_dof_index best_dof      = numbers::invalid_dof_index;
-    Point<3>                best_point;
+    const Point<3> target(xy[0], xy[1], geometry.thickness());
+    // The best candidate of this rank: (distance, x, y, z, dof), compared
+    // lexicographically so that every partition picks the same vertex.
+    using Candidate = std::array<double, 5>;
+    Candidate best  = {{std::numeric_limits<double>::max(), 0, 0, 0, -1.}};
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->at_boundary())
         for (const unsigned int v : cell->vertex_indices())
           {
-            const double d = cell->vertex(v).distance(target);
-            if (d < best_distance)
-              {
-                best_distance = d;
-                best_point    = cell->vertex(v);
-                best_dof      = cell->vertex_dof_index(v, component);
-              }
+            const Point<3> &p = cell->vertex(v);
+            const Candidate candidate{
+              {p.distance(target),
+               p[0],
+               p[1],
+               p[2],
+               static_cast<double>(cell->vertex_dof_index(v, component))}};
+            if (std::lexicographical_compare(candidate.begin(),
+                                             candidate.begin() + 4,
+                                             best.begin(),
+                                             best.begin() + 4))
+              best = candidate;
           }
-    // One rank for now; under MPI the owner of the minimum would broadcast.
-    return {best_dof, best_point};
+
+    const std::vector<Candidate> all =
+      Utilities::MPI::all_gather(mpi_communicator, best);
+    for (const auto &candidate : all)
+      if (std::lexicographical_compare(candidate.begin(),
+                                       candidate.begin() + 4,
+                                       best.begin(),
+                                       best.begin() + 4))
+        best = candidate;
+    return {static_cast<types::global_dof_index>(best[4]),
+            Point<3>(best[1], best[2], best[3])};
+  }
+
+
+
+  double
+  PlateModel::dof_value(const TrilinosWrappers::MPI::Vector &v,
+                        const types::global_dof_index        dof) const
+  {
+    const double local = locally_owned.is_element(dof) ? v(dof) : 0.;
+    return Utilities::MPI::sum(local, mpi_communicator);
+  }
+
+
+
+  unsigned int
+  PlateModel::dof_owner(const types::global_dof_index dof) const
+  {
+    const unsigned int local =
+      locally_owned.is_element(dof) ?
+        Utilities::MPI::this_mpi_process(mpi_communicator) :
+        0;
+    return Utilities::MPI::max(local, mpi_communicator);
   }
 
 

@@ -140,46 +140,50 @@ namespace fgimpact
     const std::string  base   = "solution_" + Utilities::int_to_string(step, 5);
     const std::string  record = base + ".pvtu";
 
-    // Patches and files in the background; no MPI calls there (the piece
-    // names are known), so MPI need not be thread safe.
-    pending = std::async(
-      std::launch::async, [this, t, step, rank, n_ranks, base, record]() {
-        const std::vector<
-          DataComponentInterpretation::DataComponentInterpretation>
-          vector_field(
-            3, DataComponentInterpretation::component_is_part_of_vector);
-        DataOut<3> data_out;
-        data_out.attach_dof_handler(plate.get_dof_handler());
-        data_out.add_data_vector(u_ghosted,
-                                 std::vector<std::string>(3, "displacement_m"),
-                                 DataOut<3>::type_dof_data,
-                                 vector_field);
-        data_out.add_data_vector(v_ghosted,
-                                 std::vector<std::string>(3, "velocity_m_s"),
-                                 DataOut<3>::type_dof_data,
-                                 vector_field);
-        data_out.add_data_vector(u_ghosted, postprocessor);
-        data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
+    // Patches and files, in the background on one rank. On several ranks
+    // DataOut on the distributed mesh makes MPI calls of its own, which
+    // collided with the time loop's collectives (MPI_ERR_TRUNCATE, or a
+    // hang inside MUMPS): there the snapshot is written synchronously.
+    auto write_files = [this, t, step, rank, n_ranks, base, record]() {
+      const std::vector<
+        DataComponentInterpretation::DataComponentInterpretation>
+                 vector_field(3,
+                     DataComponentInterpretation::component_is_part_of_vector);
+      DataOut<3> data_out;
+      data_out.attach_dof_handler(plate.get_dof_handler());
+      data_out.add_data_vector(u_ghosted,
+                               std::vector<std::string>(3, "displacement_m"),
+                               DataOut<3>::type_dof_data,
+                               vector_field);
+      data_out.add_data_vector(v_ghosted,
+                               std::vector<std::string>(3, "velocity_m_s"),
+                               DataOut<3>::type_dof_data,
+                               vector_field);
+      data_out.add_data_vector(u_ghosted, postprocessor);
+      data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
 
-        DataOutBase::VtkFlags flags;
-        flags.time  = t;
-        flags.cycle = step;
-        data_out.set_flags(flags);
+      DataOutBase::VtkFlags flags;
+      flags.time  = t;
+      flags.cycle = step;
+      data_out.set_flags(flags);
 
-        std::ofstream piece(directory + "/" + base + "." +
-                            Utilities::int_to_string(rank) + ".vtu");
-        data_out.write_vtu(piece);
-        AssertThrow(piece, ExcMessage("cannot write " + base + ".vtu"));
-        if (rank == 0)
-          {
-            std::vector<std::string> pieces;
-            for (unsigned int r = 0; r < n_ranks; ++r)
-              pieces.push_back(base + "." + Utilities::int_to_string(r) +
-                               ".vtu");
-            std::ofstream pvtu(directory + "/" + record);
-            data_out.write_pvtu_record(pvtu, pieces);
-          }
-      });
+      std::ofstream piece(directory + "/" + base + "." +
+                          Utilities::int_to_string(rank) + ".vtu");
+      data_out.write_vtu(piece);
+      AssertThrow(piece, ExcMessage("cannot write " + base + ".vtu"));
+      if (rank == 0)
+        {
+          std::vector<std::string> pieces;
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            pieces.push_back(base + "." + Utilities::int_to_string(r) + ".vtu");
+          std::ofstream pvtu(directory + "/" + record);
+          data_out.write_pvtu_record(pvtu, pieces);
+        }
+    };
+    if (n_ranks == 1)
+      pending = std::async(std::launch::async, write_files);
+    else
+      write_files();
 
     if (rank == 0)
       {

@@ -20,26 +20,54 @@ namespace fgimpact
 
   PointProbe::PointProbe(const PlateModel &plate, const Point<3> &location)
     : point(location)
+    , mpi_communicator(plate.get_mpi_communicator())
   {
     const auto &dof_handler = plate.get_dof_handler();
     const auto &fe          = plate.get_fe();
-    const auto  cells       = GridTools::find_all_active_cells_around_point(
-      plate.get_mapping(), dof_handler, location, 1e-10);
-    AssertThrow(!cells.empty(),
+
+    // The locally owned cells that contain the point (within round-off of
+    // their size); on a face, edge or vertex there are several, possibly on
+    // several ranks.
+    std::vector<std::pair<DoFHandler<3>::active_cell_iterator, Point<3>>> cells;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const double tolerance = 1e-10 * cell->diameter();
+          bool         inside    = true;
+          for (unsigned int d = 0; d < 3; ++d)
+            inside = inside && location[d] >= cell->vertex(0)[d] - tolerance &&
+                     location[d] <= cell->vertex(7)[d] + tolerance;
+          if (inside)
+            cells.emplace_back(
+              cell,
+              GeometryInfo<3>::project_to_unit_cell(
+                plate.get_mapping().transform_real_to_unit_cell(cell,
+                                                                location)));
+        }
+    n_adjacent_cells =
+      Utilities::MPI::sum(static_cast<unsigned int>(cells.size()),
+                          mpi_communicator);
+    AssertThrow(n_adjacent_cells > 0,
                 ExcMessage("A probe point lies outside the plate."));
-    n_adjacent_cells = cells.size();
 
     const double lambda_per_E = plate.get_material().lambda_per_E();
     const double mu_per_E     = plate.get_material().mu_per_E();
+    const double w            = 1. / n_adjacent_cells;
 
-    std::array<std::map<types::global_dof_index, double>, 3> disp;
-    std::array<std::map<types::global_dof_index, double>, 6> stress;
+    // The weights of the 3 displacement and 6 stress components, summed
+    // into distributed vectors so that each ends up on the rank that owns
+    // its DoF: evaluation then needs no ghost values.
+    std::array<TrilinosWrappers::MPI::Vector, 9> weights;
+    for (auto &vector : weights)
+      vector.reinit(plate.locally_owned_dofs(),
+                    plate.locally_relevant_dofs(),
+                    mpi_communicator,
+                    /*vector_writable=*/true);
     std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
 
     for (const auto &[cell, unit_point] : cells)
       {
-        const Quadrature<3> quadrature(std::vector<Point<3>>{
-          GeometryInfo<3>::project_to_unit_cell(unit_point)});
+        const Quadrature<3> quadrature(std::vector<Point<3>>{unit_point});
         FEValues<3>         fe_values(plate.get_mapping(),
                               fe,
                               quadrature,
@@ -54,7 +82,6 @@ namespace fgimpact
         properties.values(cell, E, rho);
         const double lambda = lambda_per_E * E[0];
         const double mu     = mu_per_E * E[0];
-        const double w      = 1. / cells.size();
 
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
@@ -62,7 +89,7 @@ namespace fgimpact
             const auto         g = fe_values.shape_grad(i, 0);
             // The displacement is continuous: each cell gives the same
             // value, so averaging is harmless.
-            disp[c][local_dofs[i]] += w * fe_values.shape_value(i, 0);
+            weights[c](local_dofs[i]) += w * fe_values.shape_value(i, 0);
             // sigma_ab = lambda g_c delta_ab + mu (delta_ac g_b + delta_bc g_a)
             for (unsigned int s = 0; s < 6; ++s)
               {
@@ -75,17 +102,20 @@ namespace fgimpact
                 if (b == c)
                   value += mu * g[a];
                 if (value != 0.)
-                  stress[s][local_dofs[i]] += w * value;
+                  weights[3 + s](local_dofs[i]) += w * value;
               }
           }
       }
 
-    for (unsigned int c = 0; c < 3; ++c)
-      for (const auto &entry : disp[c])
-        if (entry.second != 0.)
-          displacement_weights[c].push_back(entry);
-    for (unsigned int s = 0; s < 6; ++s)
-      stress_weights[s].assign(stress[s].begin(), stress[s].end());
+    for (unsigned int k = 0; k < 9; ++k)
+      {
+        weights[k].compress(VectorOperation::add);
+        Weights &list =
+          (k < 3 ? displacement_weights[k] : stress_weights[k - 3]);
+        for (const auto dof : plate.locally_owned_dofs())
+          if (weights[k](dof) != 0.)
+            list.emplace_back(dof, weights[k](dof));
+      }
   }
 
 
@@ -104,9 +134,16 @@ namespace fgimpact
   Tensor<1, 3>
   PointProbe::displacement(const TrilinosWrappers::MPI::Vector &u) const
   {
+    std::array<double, 3> local;
+    for (unsigned int c = 0; c < 3; ++c)
+      local[c] = apply(displacement_weights[c], u);
+    std::array<double, 3> global;
+    Utilities::MPI::sum(ArrayView<const double>(local),
+                        mpi_communicator,
+                        ArrayView<double>(global));
     Tensor<1, 3> d;
     for (unsigned int c = 0; c < 3; ++c)
-      d[c] = apply(displacement_weights[c], u);
+      d[c] = global[c];
     return d;
   }
 
@@ -115,9 +152,16 @@ namespace fgimpact
   SymmetricTensor<2, 3>
   PointProbe::stress(const TrilinosWrappers::MPI::Vector &u) const
   {
+    std::array<double, 6> local;
+    for (unsigned int s = 0; s < 6; ++s)
+      local[s] = apply(stress_weights[s], u);
+    std::array<double, 6> global;
+    Utilities::MPI::sum(ArrayView<const double>(local),
+                        mpi_communicator,
+                        ArrayView<double>(global));
     SymmetricTensor<2, 3> sigma;
     for (unsigned int s = 0; s < 6; ++s)
-      sigma[voigt[s][0]][voigt[s][1]] = apply(stress_weights[s], u);
+      sigma[voigt[s][0]][voigt[s][1]] = global[s];
     return sigma;
   }
 } // namespace fgimpact

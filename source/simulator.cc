@@ -172,8 +172,18 @@ namespace fgimpact
     const auto [dof, contact_node] = plate.nearest_top_vertex_dof(
       impactor.impact_point(geometry.length(), geometry.width()), 2);
     contact_dof = dof;
-    AssertThrow(parameters.problem_type != "impact" ||
-                  !plate.get_constraints().is_constrained(contact_dof),
+    // Only the owner knows for sure whether the DoF is constrained.
+    const bool contact_dof_constrained =
+      Utilities::MPI::max((plate.locally_owned_dofs().is_element(contact_dof) &&
+                           plate.get_constraints().is_constrained(
+                             contact_dof)) ?
+                            1u :
+                            0u,
+                          mpi_communicator) == 1u;
+    contact_owner              = plate.dof_owner(contact_dof);
+    results.contact_node_owner = contact_owner;
+    results.n_mpi_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
+    AssertThrow(parameters.problem_type != "impact" || !contact_dof_constrained,
                 ExcMessage("Impactor/Impact point: the nearest top-surface "
                            "node lies on a supported face; move the impact "
                            "point inside the plate."));
@@ -205,7 +215,19 @@ namespace fgimpact
           << " m/s; Q_alpha = " << contact_law.contact_modulus() / 1e9
           << " GPa, beta K_h = " << results.contact_stiffness << " N/m^1.5\n"
           << "  contact node (" << contact_node[0] << ", " << contact_node[1]
-          << ", " << contact_node[2] << ") m\n";
+          << ", " << contact_node[2] << ") m, owned by MPI rank "
+          << contact_owner << '\n';
+    {
+      const unsigned int n_ranks =
+        Utilities::MPI::n_mpi_processes(mpi_communicator);
+      const auto owned =
+        Utilities::MPI::min_max_avg(static_cast<double>(
+                                      plate.locally_owned_dofs().n_elements()),
+                                    mpi_communicator);
+      pcout << "  " << n_ranks << " MPI rank" << (n_ranks > 1 ? "s" : "")
+            << ", DoFs per rank min " << owned.min << " / max " << owned.max
+            << '\n';
+    }
 
     if (node_offset > 1e-9 * geometry.length())
       pcout << "  note: no node lies at the impact point; the contact force "
@@ -379,7 +401,7 @@ namespace fgimpact
       const SymmetricTensor<2, 3> sigma   = mid_probe->stress(u);
       const double                W_mid   = -u_mid[2];
       const double                W_top   = -u_top[2];
-      const double                W_c     = -u(contact_dof);
+      const double                W_c     = -contact.node_displacement;
       const double                F       = contact.force;
       const double                alpha   = contact.alpha;
       const double                E_imp   = 0.5 * m_i * ball.v * ball.v;
@@ -549,8 +571,9 @@ namespace fgimpact
       pcout << "  wall time " << results.wall_time << " s (setup "
             << results.setup_time << " s, factorization "
             << results.factorization_time << " s, time loop "
-            << results.time_loop_time << " s, output " << results.output_time
-            << " s)\n";
+            << results.time_loop_time
+            << " s = " << 1e3 * results.time_loop_time / std::max(n_steps, 1u)
+            << " ms per step, output " << results.output_time << " s)\n";
   }
 
 
@@ -590,6 +613,7 @@ namespace fgimpact
     put("contact_node_offset_mm", r.contact_node_offset * 1e3, 6);
     put("n_impacts", r.n_impacts, 0);
     put("n_dofs", r.n_dofs, 0);
+    put("n_mpi_ranks", r.n_mpi_ranks, 0);
     put("n_time_steps", r.n_time_steps, 0);
     put("max_newton_iterations", r.max_newton_iterations, 0);
     put_e("max_relative_energy_drift", r.max_energy_drift);

@@ -77,7 +77,8 @@ namespace fgimpact
     if (parameters.load == Load::point)
       {
         const auto dof = plate.nearest_top_vertex_dof(load_point, 2).first;
-        f(dof)         = -parameters.point_force;
+        if (plate.locally_owned_dofs().is_element(dof))
+          f(dof) = -parameters.point_force;
         f.compress(VectorOperation::insert);
         return;
       }

@@ -159,12 +159,14 @@ namespace fgimpact
         for (auto *vector :
              {&u, &v, &a, &Mu, &Mv, &Ma, &u_new, &Mu_new, &rhs, &c, &g})
           plate.initialize_vector(*vector);
-        g(contact_dof) = 1.;
+        // The unit contact load; only the owner of the contact DoF writes.
+        if (g.locally_owned_elements().is_element(contact_dof))
+          g(contact_dof) = 1.;
         g.compress(VectorOperation::insert);
         solver.solve(c, g);
         // chi = g^T K_eff^{-1} g > 0: the contact node's dynamic compliance
         // (m/N).
-        chi                = c(contact_dof);
+        chi                = plate.dof_value(c, contact_dof);
         factorization_time = timer.wall_time();
 
         // Reference costs, measured in this run.
@@ -228,7 +230,9 @@ namespace fgimpact
         // Impactor: m a0 w = m r_p - F  =>  w = w~ - F/(m a0).
         const double w_tilde =
           newmark.predictor(impactor.w, impactor.v, impactor.a) / a0;
-        const double W_star = -u_new(contact_dof);
+        // The only communication of the contact Newton: the owner's value
+        // of u* at the contact node (one scalar all-reduce).
+        const double W_star = -plate.dof_value(u_new, contact_dof);
         const double s      = 1. / (m_i * a0) + chi;
 
         contact.newton_iterations =
@@ -250,10 +254,11 @@ namespace fgimpact
 
         // Back-substitute: plate and impactor at t_{n+1}.
         u_new.add(-F, c);
+        contact.node_displacement = -W_star - F * chi;
         plate.mass_matrix().vmult(Mu_new, u_new);
         // u^T K u from K_eff u = M r_n - F g:  K u = M r_n - F g - a0 M u.
-        strain =
-          0.5 * (u_new * rhs - F * u_new(contact_dof) - a0 * (u_new * Mu_new));
+        strain = 0.5 * (u_new * rhs - F * contact.node_displacement -
+                        a0 * (u_new * Mu_new));
 
         newmark.update(u_new, u, v, a);
         newmark.update(Mu_new, Mu, Mv, Ma);
@@ -337,6 +342,7 @@ namespace fgimpact
         for (auto *vector :
              {&u, &v, &a, &Ku, &inverse_mass, &lumped_mass, &x, &y})
           plate.initialize_vector(*vector);
+        owns_contact_dof = u.locally_owned_elements().is_element(contact_dof);
 
         // Row-sum lumping: M_L = M 1 (positive for FE_Q(1) and FE_Q(2)).
         x = 1.;
@@ -409,7 +415,8 @@ namespace fgimpact
         impactor.v += 0.5 * dt * impactor.a;
 
         // Contact force at the new positions (alpha = w_p - W, W = -u_z).
-        contact.alpha             = impactor.w + u(contact_dof);
+        contact.node_displacement = plate.dof_value(u, contact_dof);
+        contact.alpha             = impactor.w + contact.node_displacement;
         contact.force             = contact_law.force(contact.alpha);
         contact.newton_iterations = 0;
 
@@ -417,7 +424,8 @@ namespace fgimpact
         plate.stiffness_matrix().vmult(Ku, u);
         strain = 0.5 * (u * Ku);
         a.equ(-1., Ku);
-        a(contact_dof) -= contact.force;
+        if (owns_contact_dof)
+          a(contact_dof) -= contact.force;
         a.scale(inverse_mass);
         v.add(0.5 * dt, a);
         impactor.a = -contact.force / m_i;
@@ -460,7 +468,8 @@ namespace fgimpact
         for (unsigned int it = 0; it < 1000; ++it)
           {
             plate.stiffness_matrix().vmult(y, x); // y = (K + k_c g g^T) x
-            y(contact_dof) += k_c * x(contact_dof);
+            if (owns_contact_dof)
+              y(contact_dof) += k_c * x(contact_dof);
             Ku = x; // scratch: M_L x
             Ku.scale(lumped_mass);
             const double new_lambda = (x * y) / (x * Ku);
@@ -484,6 +493,7 @@ namespace fgimpact
       const types::global_dof_index contact_dof;
       const double                  m_i, V0;
       double                        dt = 0, stable_dt = 0;
+      bool                          owns_contact_dof = false;
       TrilinosWrappers::MPI::Vector a, Ku, inverse_mass, lumped_mass, x, y;
     };
   } // namespace

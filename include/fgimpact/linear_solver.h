@@ -28,7 +28,8 @@ namespace fgimpact
    *  - cg: conjugate gradients started from the caller's initial guess (the
    *    previous step), with a Jacobi, SSOR or algebraic multigrid (Trilinos
    *    ML) preconditioner; for meshes too large to factorize.
-   *  - auto: cholmod up to `Auto direct limit` DoFs, cg + jacobi above.
+   *  - auto: up to `Auto direct limit` DoFs cholmod on one MPI rank, mumps
+   *    on several; cg above.
    */
   class EffectiveMatrixSolver
   {

@@ -113,12 +113,27 @@ namespace fgimpact
 
     /**
      * The top-surface (z = h) vertex nearest to (x, y) and the global index
-     * of its DoF of the given component.  The point force of the contact law
-     * acts there, as in the paper.
+     * of its DoF of the given component, the same on every MPI rank (ties
+     * are broken by the vertex coordinates, not by the DoF numbering, which
+     * depends on the partition).  The point force of the contact law acts
+     * there, as in the paper.
      */
     std::pair<types::global_dof_index, Point<3>>
     nearest_top_vertex_dof(const Point<2>    &xy,
                            const unsigned int component) const;
+
+    /**
+     * The value of a (non-ghosted) distributed vector at one DoF, on every
+     * rank: the owner contributes it to a sum over the ranks (one scalar
+     * all-reduce).  Collective.
+     */
+    double
+    dof_value(const TrilinosWrappers::MPI::Vector &v,
+              const types::global_dof_index        dof) const;
+
+    /// The MPI rank that owns a DoF. Collective.
+    unsigned int
+    dof_owner(const types::global_dof_index dof) const;
 
     /// Sum of all mass matrix entries of one displacement component, i.e.
     /// the total mass of the plate in kg (partition of unity).
@@ -159,6 +174,11 @@ namespace fgimpact
     locally_owned_dofs() const
     {
       return locally_owned;
+    }
+    const IndexSet &
+    locally_relevant_dofs() const
+    {
+      return locally_relevant;
     }
     MPI_Comm
     get_mpi_communicator() const

@@ -24,6 +24,10 @@ namespace fgimpact
    * Q_p stress is discontinuous, the stress is the average over all cells
    * that contain the point; E there is the graded interpolant or the
    * element value, as in the assembly.
+   *
+   * Under MPI each rank keeps the weights of the DoFs it owns, and an
+   * evaluation is a local sum plus one small all-reduce (collective: every
+   * rank must call it).
    */
   class PointProbe
   {
@@ -44,7 +48,7 @@ namespace fgimpact
     SymmetricTensor<2, 3>
     stress(const TrilinosWrappers::MPI::Vector &u) const;
 
-    /// Number of cells whose stresses are averaged.
+    /// Number of cells (on all ranks) whose stresses are averaged.
     unsigned int
     n_cells() const
     {
@@ -58,6 +62,7 @@ namespace fgimpact
     apply(const Weights &w, const TrilinosWrappers::MPI::Vector &u);
 
     Point<3>               point;
+    MPI_Comm               mpi_communicator;
     std::array<Weights, 3> displacement_weights;
     /// Independent stress components in the order xx, yy, zz, yz, xz, xy.
     std::array<Weights, 6> stress_weights;

@@ -44,6 +44,8 @@ namespace fgimpact
     double       plate_mass              = 0; // kg
     double       impulse                 = 0; // N s, int F dt
     double       contact_node_offset     = 0; // m, node to impact point
+    unsigned int contact_node_owner      = 0; // MPI rank owning its DoF
+    unsigned int n_mpi_ranks             = 1;
     double       max_energy_drift        = 0; // relative
     double       momentum_balance_error  = 0; // relative
     unsigned int n_impacts               = 0;
@@ -154,9 +156,10 @@ namespace fgimpact
     std::unique_ptr<PlateModel>                 plate_ptr;
     std::unique_ptr<TimeStepper>                stepper;
     std::unique_ptr<PointProbe>                 mid_probe, top_probe;
-    types::global_dof_index                     contact_dof = 0;
-    double                                      dt          = 0;
-    unsigned int                                n_steps     = 0;
+    types::global_dof_index                     contact_dof   = 0;
+    unsigned int                                contact_owner = 0; // MPI rank
+    double                                      dt            = 0;
+    unsigned int                                n_steps       = 0;
   };
 } // namespace fgimpact
 

@@ -25,11 +25,14 @@ namespace fgimpact
     double w = 0, v = 0, a = 0;
   };
 
-  /// Indentation alpha (m) and contact force F (N) at the current time.
+  /// Indentation alpha (m), contact force F (N) and the plate's z
+  /// displacement at the contact node (m, positive up) at the current time,
+  /// known on every MPI rank.
   struct ContactState
   {
     double       alpha             = 0;
     double       force             = 0;
+    double       node_displacement = 0;
     unsigned int newton_iterations = 0;
   };
 
