@@ -444,24 +444,25 @@ namespace fgimpact
       results.max_newton_iterations =
         std::max(results.max_newton_iterations, contact.newton_iterations);
 
+      history_rows.push_back({t * 1e6,
+                              F,
+                              alpha * 1e6,
+                              ball.w * 1e6,
+                              ball.v,
+                              W_mid * 1e6,
+                              W_top * 1e6,
+                              sigma[0][0] * 1e-6,
+                              sigma[1][1] * 1e-6,
+                              sigma[2][2] * 1e-6,
+                              E_imp,
+                              E_kin,
+                              E_str,
+                              E_con,
+                              E_total,
+                              W_c * 1e6,
+                              static_cast<double>(contact.newton_iterations)});
       if (history)
-        history->write_row({t * 1e6,
-                            F,
-                            alpha * 1e6,
-                            ball.w * 1e6,
-                            ball.v,
-                            W_mid * 1e6,
-                            W_top * 1e6,
-                            sigma[0][0] * 1e-6,
-                            sigma[1][1] * 1e-6,
-                            sigma[2][2] * 1e-6,
-                            E_imp,
-                            E_kin,
-                            E_str,
-                            E_con,
-                            E_total,
-                            W_c * 1e6,
-                            static_cast<double>(contact.newton_iterations)});
+        history->write_row(history_rows.back());
       if (vtu && step % parameters.vtu_interval == 0)
         {
           output_timer.start();

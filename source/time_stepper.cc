@@ -1,11 +1,14 @@
 #include <deal.II/base/timer.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
 #include <deal.II/lac/solver_control.h>
 
 #include <fgimpact/time_stepper.h>
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace fgimpact
@@ -460,9 +463,35 @@ namespace fgimpact
       double
       largest_eigenvalue(const double k_c)
       {
-        // A deterministic start vector with all frequencies present.
-        for (const auto i : x.locally_owned_elements())
-          x(i) = (inverse_mass(i) > 0. ? std::sin(1.0 + 12.9898 * i) : 0.);
+        // A deterministic start vector with all frequencies present, a
+        // function of the DoFs' positions and components rather than of
+        // their numbers, so that every partition (MPI rank count) finds
+        // the same time step to round-off.
+        const auto &dof_handler = plate.get_dof_handler();
+        std::map<types::global_dof_index, Point<3>> support;
+        DoFTools::map_dofs_to_support_points(plate.get_mapping(),
+                                             dof_handler,
+                                             support);
+        std::vector<types::global_dof_index> dofs(
+          dof_handler.get_fe().n_dofs_per_cell());
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->is_locally_owned())
+            {
+              cell->get_dof_indices(dofs);
+              for (unsigned int k = 0; k < dofs.size(); ++k)
+                if (x.locally_owned_elements().is_element(dofs[k]))
+                  {
+                    const Point<3>    &p = support.at(dofs[k]);
+                    const unsigned int c =
+                      dof_handler.get_fe().system_to_component_index(k).first;
+                    // Positions in mm: O(1-100) arguments of the sine.
+                    x(dofs[k]) =
+                      (inverse_mass(dofs[k]) > 0. ?
+                         std::sin(1.0 + 12.9898e3 * p[0] + 78.233e3 * p[1] +
+                                  37.719e3 * p[2] + 2.3 * c) :
+                         0.);
+                  }
+            }
         x.compress(VectorOperation::insert);
         double lambda = 0;
         for (unsigned int it = 0; it < 1000; ++it)

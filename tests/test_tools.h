@@ -75,7 +75,8 @@ namespace fgimpact_tests
              const unsigned int           degree,
              const double                 n,
              const fgimpact::PropertyMode mode = fgimpact::PropertyMode::graded,
-             const double                 thickness = 0.02)
+             const double                 thickness = 0.02,
+             const MPI_Comm               communicator = MPI_COMM_WORLD)
   {
     fgimpact::PlateGeometry::Parameters gp;
     gp.thickness      = thickness;
@@ -95,7 +96,7 @@ namespace fgimpact_tests
     c.plate = std::make_unique<fgimpact::PlateModel>(fp,
                                                      *c.geometry,
                                                      *c.material,
-                                                     MPI_COMM_WORLD);
+                                                     communicator);
     c.plate->setup();
     return c;
   }

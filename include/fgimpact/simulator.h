@@ -20,6 +20,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace fgimpact
 {
@@ -133,6 +134,14 @@ namespace fgimpact
       return results;
     }
 
+    /// The rows of history.csv (same columns and units) before rounding,
+    /// on every MPI rank.
+    const std::vector<std::vector<double>> &
+    get_history() const
+    {
+      return history_rows;
+    }
+
   private:
     void
     run_impact();
@@ -143,11 +152,12 @@ namespace fgimpact
     void
     write_summary() const;
 
-    const Parameters   parameters;
-    const MPI_Comm     mpi_communicator;
-    ConditionalOStream pcout;
-    ImpactResults      results;
-    Timer              total_timer;
+    const Parameters                 parameters;
+    const MPI_Comm                   mpi_communicator;
+    ConditionalOStream               pcout;
+    ImpactResults                    results;
+    std::vector<std::vector<double>> history_rows;
+    Timer                            total_timer;
 
     std::unique_ptr<PlateGeometry>              geometry_ptr;
     std::unique_ptr<FunctionallyGradedMaterial> material_ptr;
