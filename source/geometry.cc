@@ -102,15 +102,25 @@ namespace fgimpact
   void
   PlateGeometry::create_triangulation(Triangulation<3> &triangulation) const
   {
+    unsigned int              k = 0;
+    std::vector<unsigned int> coarse{parameters.subdivisions_x,
+                                     parameters.subdivisions_y,
+                                     parameters.subdivisions_z};
+    while (coarse[0] % 2 == 0 && coarse[1] % 2 == 0 && coarse[2] % 2 == 0)
+      {
+        for (auto &n : coarse)
+          n /= 2;
+        ++k;
+      }
+    // Boundary ids (colorize) pass to the children of refined faces.
     GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              {parameters.subdivisions_x,
-                                               parameters.subdivisions_y,
-                                               parameters.subdivisions_z},
+                                              coarse,
                                               Point<3>(),
                                               Point<3>(parameters.length,
                                                        parameters.width,
                                                        parameters.thickness),
                                               /*colorize=*/true);
+    triangulation.refine_global(k);
   }
 
 

@@ -57,7 +57,14 @@ namespace fgimpact
 
     explicit PlateGeometry(const Parameters &parameters);
 
-    /// Fill an empty triangulation with the subdivided brick.
+    /**
+     * Fill an empty triangulation with the subdivided brick.  The same
+     * cells are made as the coarsest brick whose subdivisions are the
+     * requested ones divided by 2^k (k as large as all three allow),
+     * refined k times: p4est keeps the coarse mesh on every MPI rank, so
+     * a coarse mesh of 2^{3k} times fewer cells is what lets large meshes
+     * run on many ranks.
+     */
     void
     create_triangulation(Triangulation<3> &triangulation) const;
 
