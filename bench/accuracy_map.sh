@@ -17,7 +17,7 @@
 # deflections, impulse, wall time, time per step and peak RSS (GNU time).
 # Writes output/accuracy/results.csv and prints a Markdown table;
 # bench/plot_accuracy.py draws the figures from the CSV.
-# Usage: bench/accuracy_map.sh   (about 10 minutes on 2 idle cores;
+# Usage: bench/accuracy_map.sh   (about 8 minutes on 2 shared cores;
 #        FGIMPACT=path/to/fgimpact to use another executable)
 set -euo pipefail
 cd "$(dirname "$0")/.."
