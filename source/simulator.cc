@@ -25,6 +25,7 @@ namespace fgimpact
                       "static: K u = f under the load of subsection Static. "
                       "modal: the lowest natural frequencies and mode "
                       "shapes (subsection Modal).");
+    AccuracyPreset::Parameters::declare_parameters(prm);
     PlateGeometry::Parameters::declare_parameters(prm);
     StaticAnalysis::Parameters::declare_parameters(prm);
     ModalAnalysis::Parameters::declare_parameters(prm);
@@ -70,6 +71,9 @@ namespace fgimpact
   ImpactSimulator::Parameters::parse_parameters(ParameterHandler &prm)
   {
     problem_type = prm.get("Problem type");
+    // First: a preset rewrites the Geometry and Time integration entries
+    // in prm that the calls below read.
+    accuracy.parse_parameters(prm);
     static_analysis.parse_parameters(prm);
     modal.parse_parameters(prm);
     geometry.parse_parameters(prm);
@@ -228,6 +232,8 @@ namespace fgimpact
             << ", DoFs per rank min " << owned.min << " / max " << owned.max
             << '\n';
     }
+    if (!parameters.accuracy.log_message.empty())
+      pcout << "  " << parameters.accuracy.log_message << '\n';
 
     if (node_offset > 1e-9 * geometry.length())
       pcout << "  note: no node lies at the impact point; the contact force "

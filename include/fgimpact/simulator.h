@@ -6,6 +6,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/timer.h>
 
+#include <fgimpact/accuracy_preset.h>
 #include <fgimpact/contact_law.h>
 #include <fgimpact/geometry.h>
 #include <fgimpact/impactor.h>
@@ -83,6 +84,7 @@ namespace fgimpact
   public:
     struct Parameters
     {
+      AccuracyPreset::Parameters             accuracy;
       PlateGeometry::Parameters              geometry;
       FunctionallyGradedMaterial::Parameters material;
       HertzContactLaw::Parameters            contact;

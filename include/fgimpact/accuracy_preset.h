@@ -1,0 +1,69 @@
+#ifndef fgimpact_accuracy_preset_h
+#define fgimpact_accuracy_preset_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * Accuracy presets: one entry, `Accuracy = custom | fast | standard |
+   * accurate`, that fixes the discretization of an impact run from the
+   * speed/accuracy map (doc/accuracy.md). A preset other than custom sets
+   * Geometry/Subdivisions x, y, z and Time integration/Time step in the
+   * ParameterHandler itself, before the other subsections are read, so the
+   * parameters.prm written next to the output holds the effective values.
+   *
+   * All presets use the same in-plane element size, 5 mm (the default
+   * mesh's): under the paper's point contact force the peak force depends
+   * on that size and does not converge (doc/mesh_study.md), so runs are
+   * only comparable at equal in-plane size. The presets differ in the
+   * elements through the thickness and the time step, which converge.
+   * The subdivisions follow from the plate size: the nearest even number
+   * of elements of that size (a node at the plate centre).
+   */
+  class AccuracyPreset
+  {
+  public:
+    /// What a preset sets.
+    struct Setting
+    {
+      std::string  name;
+      double       element_size; // in-plane element edge, m
+      unsigned int subdivisions_z;
+      double       time_step; // s
+    };
+
+    /// The presets other than custom, as documented in the entry's help.
+    static const std::vector<Setting> &
+    settings();
+
+    struct Parameters
+    {
+      std::string preset = "custom";
+      /// One line saying what the preset set (empty for custom); printed
+      /// by ImpactSimulator::setup().
+      std::string log_message;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      /// Read Accuracy and, unless custom, overwrite the Geometry
+      /// subdivisions and the time step in prm. Throws ExcMessage naming
+      /// the entry if the preset cannot be applied (explicit scheme, too
+      /// many elements).
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /// Nearest even number (at least 2) of elements of size element_size
+    /// on a length: the mesh then has a node at the middle.
+    static unsigned int
+    even_subdivisions(const double length, const double element_size);
+  };
+} // namespace fgimpact
+
+#endif
