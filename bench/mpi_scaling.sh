@@ -11,6 +11,8 @@
 # from GNU time (for mpirun: the largest rank).
 #
 #   bench/mpi_scaling.sh [--out DIR]      (about 15 minutes)
+#   CASES=regex bench/mpi_scaling.sh     only the runs whose id matches
+#                                         (rows are appended to results.csv)
 #
 # Results: DIR/results.csv; table and plot with
 #   /usr/bin/python3 bench/plot_mpi_scaling.py DIR/results.csv
@@ -29,10 +31,11 @@ export OMPI_MCA_rmaps_base_oversubscribe=1
 get() { awk -F' = ' -v k="$1" '$1 == k {print $2}' "$2"; }
 
 csv=$out/results.csv
-echo "id,study,path,ranks,mesh,n_dofs,n_time_steps,setup_s,factorization_s,time_per_step_ms,wall_time_s,elapsed_s,peak_rss_MB_largest_rank,peak_contact_force_N" > "$csv"
+[ -n "${CASES:-}" ] && [ -f "$csv" ] || echo "id,study,path,ranks,mesh,n_dofs,n_time_steps,setup_s,factorization_s,time_per_step_ms,wall_time_s,elapsed_s,peak_rss_MB_largest_rank,peak_contact_force_N" > "$csv"
 
 run() { # id study path ranks nx ny nz end_us
   local id=$1 study=$2 path=$3 ranks=$4 nx=$5 ny=$6 nz=$7 T=$8
+  [[ "$id" =~ ${CASES:-.} ]] || return 0
   local dir=$out/runs/$id
   rm -rf "$dir"; mkdir -p "$dir"
   {

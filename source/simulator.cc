@@ -229,8 +229,9 @@ namespace fgimpact
                                       plate.locally_owned_dofs().n_elements()),
                                     mpi_communicator);
       pcout << "  " << n_ranks << " MPI rank" << (n_ranks > 1 ? "s" : "")
-            << ", DoFs per rank min " << owned.min << " / max " << owned.max
-            << '\n';
+            << ", DoFs per rank min "
+            << static_cast<types::global_dof_index>(owned.min) << " / max "
+            << static_cast<types::global_dof_index>(owned.max) << '\n';
     }
     if (!parameters.accuracy.log_message.empty())
       pcout << "  " << parameters.accuracy.log_message << '\n';
