@@ -27,6 +27,9 @@ exe=$out/fgimpact_bench
 cp "${FGIMPACT:-build/fgimpact}" "$exe"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 export OMPI_MCA_rmaps_base_oversubscribe=1
+# Local ranks only: Open MPI 4 refuses to start without ssh/rsh on PATH
+# (a fresh Debian has neither) unless the remote agent is unset.
+export OMPI_MCA_plm_rsh_agent=
 
 get() { awk -F' = ' -v k="$1" '$1 == k {print $2}' "$2"; }
 
