@@ -120,13 +120,20 @@ namespace fgimpact
 
 
 
-  double
-  PointProbe::apply(const Weights &w, const TrilinosWrappers::MPI::Vector &u)
+  template <std::size_t N>
+  std::array<double, N>
+  PointProbe::apply(const std::array<Weights, N>        &weights,
+                    const TrilinosWrappers::MPI::Vector &u) const
   {
-    double result = 0;
-    for (const auto &[dof, weight] : w)
-      result += weight * u(dof);
-    return result;
+    // Local sums over the owned DoFs, then one all-reduce for all N.
+    std::array<double, N> local{}, global;
+    for (std::size_t k = 0; k < N; ++k)
+      for (const auto &[dof, weight] : weights[k])
+        local[k] += weight * u(dof);
+    Utilities::MPI::sum(ArrayView<const double>(local),
+                        mpi_communicator,
+                        ArrayView<double>(global));
+    return global;
   }
 
 
@@ -134,16 +141,10 @@ namespace fgimpact
   Tensor<1, 3>
   PointProbe::displacement(const TrilinosWrappers::MPI::Vector &u) const
   {
-    std::array<double, 3> local;
-    for (unsigned int c = 0; c < 3; ++c)
-      local[c] = apply(displacement_weights[c], u);
-    std::array<double, 3> global;
-    Utilities::MPI::sum(ArrayView<const double>(local),
-                        mpi_communicator,
-                        ArrayView<double>(global));
+    const auto   values = apply(displacement_weights, u);
     Tensor<1, 3> d;
     for (unsigned int c = 0; c < 3; ++c)
-      d[c] = global[c];
+      d[c] = values[c];
     return d;
   }
 
@@ -152,16 +153,10 @@ namespace fgimpact
   SymmetricTensor<2, 3>
   PointProbe::stress(const TrilinosWrappers::MPI::Vector &u) const
   {
-    std::array<double, 6> local;
-    for (unsigned int s = 0; s < 6; ++s)
-      local[s] = apply(stress_weights[s], u);
-    std::array<double, 6> global;
-    Utilities::MPI::sum(ArrayView<const double>(local),
-                        mpi_communicator,
-                        ArrayView<double>(global));
+    const auto            values = apply(stress_weights, u);
     SymmetricTensor<2, 3> sigma;
     for (unsigned int s = 0; s < 6; ++s)
-      sigma[voigt[s][0]][voigt[s][1]] = global[s];
+      sigma[voigt[s][0]][voigt[s][1]] = values[s];
     return sigma;
   }
 } // namespace fgimpact

@@ -58,8 +58,11 @@ namespace fgimpact
   private:
     using Weights = std::vector<std::pair<types::global_dof_index, double>>;
 
-    static double
-    apply(const Weights &w, const TrilinosWrappers::MPI::Vector &u);
+    /// The N functionals at u, on every rank (collective).
+    template <std::size_t N>
+    std::array<double, N>
+    apply(const std::array<Weights, N>        &weights,
+          const TrilinosWrappers::MPI::Vector &u) const;
 
     Point<3>               point;
     MPI_Comm               mpi_communicator;
