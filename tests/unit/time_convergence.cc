@@ -1,10 +1,13 @@
 // Newmark time convergence on the full impact (n = 1, V0 = 1 m/s, 20 x 10
-// x 2 mesh): dt = 0.2, 0.1, 0.05 us.  Smooth functionals of the solution,
-// the impulse int F dt and the contact duration, converge at order 2.  The
-// peak force rides on the contact node's high-frequency oscillation (a
-// local mode of period ~ 4 us on this mesh), so it shows no clean order at
-// these step sizes; its changes are checked to be below 1e-4 relative
-// (the mesh dependence of the peak force is ~10 %, doc/mesh_study.md).
+// x 2 mesh).  Smooth functionals of the solution, the impulse int F dt and
+// the contact duration, converge at order 2 from dt = 0.2, 0.1, 0.05 us.
+// The peak force rides on the contact node's high-frequency local mode
+// (period ~ 4 us on this mesh): the average-acceleration rule's period
+// error (omega dt)^2/12 accumulates into a phase error of that ripple of
+// about 0.7 rad at dt = 0.2 us by the time of the peak, so the peak force
+// reaches its asymptotic order 2 only from dt ~ 0.05 us (measured changes
+// 0.027, 0.034, 0.0091, 0.0022 N for dt = 0.2 ... 0.0125 us): it is
+// checked on dt = 0.05, 0.025, 0.0125 us.
 // Set FGIMPACT_VERBOSE=1 to print the numbers.
 
 #include <deal.II/base/mpi.h>
@@ -43,16 +46,17 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool verbose = std::getenv("FGIMPACT_VERBOSE") != nullptr;
 
-  const ImpactResults r[3] = {run(0.2e-6), run(0.1e-6), run(0.05e-6)};
+  const ImpactResults r[5] = {
+    run(0.2e-6), run(0.1e-6), run(0.05e-6), run(0.025e-6), run(0.0125e-6)};
   auto order = [](const double a, const double b, const double c) {
     return std::log2(std::abs(a - b) / std::abs(b - c));
   };
   const double p_impulse = order(r[0].impulse, r[1].impulse, r[2].impulse);
   const double p_duration =
     order(r[0].contact_duration, r[1].contact_duration, r[2].contact_duration);
-  const double dF =
-    std::max(std::abs(r[0].peak_contact_force / r[1].peak_contact_force - 1),
-             std::abs(r[1].peak_contact_force / r[2].peak_contact_force - 1));
+  const double p_force = order(r[2].peak_contact_force,
+                               r[3].peak_contact_force,
+                               r[4].peak_contact_force);
   if (verbose)
     for (const auto &x : r)
       std::fprintf(stderr,
@@ -62,19 +66,20 @@ main(int argc, char **argv)
                    x.peak_contact_force);
   if (verbose)
     std::fprintf(stderr,
-                 "orders: impulse %.3f, duration %.3f; peak change %.2e\n",
+                 "orders: impulse %.3f, duration %.3f, peak force %.3f\n",
                  p_impulse,
                  p_duration,
-                 dF);
+                 p_force);
 
   const bool ok_i = p_impulse > 1.5 && p_impulse < 3.;
   const bool ok_d = p_duration > 1.5 && p_duration < 3.;
-  const bool ok_f = dF < 1e-4;
+  const bool ok_f = p_force > 1.5 && p_force < 3.;
   std::printf("impulse converges at order 2 (1.5 < p < 3): %s\n",
               ok_i ? "yes" : "NO");
   std::printf("contact duration converges at order 2 (1.5 < p < 3): %s\n",
               ok_d ? "yes" : "NO");
-  std::printf("peak force changes below 1e-4 relative: %s\n",
+  std::printf("peak force converges at order 2 from dt = 0.05 us "
+              "(1.5 < p < 3): %s\n",
               ok_f ? "yes" : "NO");
   std::printf("%s\n",
               ok_i && ok_d && ok_f ? "all checks passed" :
