@@ -2,11 +2,7 @@
 
 #include <deal.II/fe/fe_values.h>
 
-#include <deal.II/grid/grid_tools.h>
-
 #include <fgimpact/probes.h>
-
-#include <map>
 
 namespace fgimpact
 {
@@ -44,7 +40,7 @@ namespace fgimpact
                 plate.get_mapping().transform_real_to_unit_cell(cell,
                                                                 location)));
         }
-    n_adjacent_cells =
+    const unsigned int n_adjacent_cells =
       Utilities::MPI::sum(static_cast<unsigned int>(cells.size()),
                           mpi_communicator);
     AssertThrow(n_adjacent_cells > 0,

@@ -184,8 +184,7 @@ namespace fgimpact
                             1u :
                             0u,
                           mpi_communicator) == 1u;
-    contact_owner              = plate.dof_owner(contact_dof);
-    results.contact_node_owner = contact_owner;
+    results.contact_node_owner = plate.dof_owner(contact_dof);
     results.n_mpi_ranks = Utilities::MPI::n_mpi_processes(mpi_communicator);
     AssertThrow(parameters.problem_type != "impact" || !contact_dof_constrained,
                 ExcMessage("Impactor/Impact point: the nearest top-surface "
@@ -220,11 +219,10 @@ namespace fgimpact
           << " GPa, beta K_h = " << results.contact_stiffness << " N/m^1.5\n"
           << "  contact node (" << contact_node[0] << ", " << contact_node[1]
           << ", " << contact_node[2] << ") m, owned by MPI rank "
-          << contact_owner << '\n';
+          << results.contact_node_owner << '\n';
     {
-      const unsigned int n_ranks =
-        Utilities::MPI::n_mpi_processes(mpi_communicator);
-      const auto owned =
+      const unsigned int n_ranks = results.n_mpi_ranks;
+      const auto         owned =
         Utilities::MPI::min_max_avg(static_cast<double>(
                                       plate.locally_owned_dofs().n_elements()),
                                     mpi_communicator);
@@ -364,6 +362,8 @@ namespace fgimpact
 
     const double E0 = 0.5 * m_i * V0 * V0;
 
+    history_rows.clear();
+    history_rows.reserve(n_steps + 1); // no reallocation in the time loop
     std::unique_ptr<CsvWriter> history;
     std::unique_ptr<VtuWriter> vtu;
     const bool root = Utilities::MPI::this_mpi_process(mpi_communicator) == 0;

@@ -48,13 +48,6 @@ namespace fgimpact
     SymmetricTensor<2, 3>
     stress(const TrilinosWrappers::MPI::Vector &u) const;
 
-    /// Number of cells (on all ranks) whose stresses are averaged.
-    unsigned int
-    n_cells() const
-    {
-      return n_adjacent_cells;
-    }
-
   private:
     using Weights = std::vector<std::pair<types::global_dof_index, double>>;
 
@@ -69,7 +62,6 @@ namespace fgimpact
     std::array<Weights, 3> displacement_weights;
     /// Independent stress components in the order xx, yy, zz, yz, xz, xy.
     std::array<Weights, 6> stress_weights;
-    unsigned int           n_adjacent_cells;
   };
 } // namespace fgimpact
 

@@ -168,10 +168,9 @@ namespace fgimpact
     std::unique_ptr<PlateModel>                 plate_ptr;
     std::unique_ptr<TimeStepper>                stepper;
     std::unique_ptr<PointProbe>                 mid_probe, top_probe;
-    types::global_dof_index                     contact_dof   = 0;
-    unsigned int                                contact_owner = 0; // MPI rank
-    double                                      dt            = 0;
-    unsigned int                                n_steps       = 0;
+    types::global_dof_index                     contact_dof = 0;
+    double                                      dt          = 0;
+    unsigned int                                n_steps     = 0;
   };
 } // namespace fgimpact
 
