@@ -62,7 +62,7 @@ namespace fgimpact
 
 
   void
-  AccuracyPreset::Parameters::parse_parameters(ParameterHandler &prm)
+  AccuracyPreset::Parameters::apply(ParameterHandler &prm)
   {
     preset = prm.get("Accuracy");
     log_message.clear();

@@ -104,7 +104,7 @@ main(int argc, char *argv[])
       else if (arg == "-p" || arg == "--print-parameters")
         {
           ParameterHandler prm;
-          ImpactSimulator::Parameters::declare_parameters(prm);
+          Parameters::declare_parameters(prm);
           if (root)
             prm.print_parameters(std::cout, ParameterHandler::PRM);
           return 0;
@@ -128,11 +128,11 @@ main(int argc, char *argv[])
     }
 
   ParameterHandler            prm;
-  ImpactSimulator::Parameters parameters;
+  fgimpact::Parameters        parameters;
   // Input errors: everything is checked before any file is written.
   try
     {
-      ImpactSimulator::Parameters::declare_parameters(prm);
+      Parameters::declare_parameters(prm);
       if (!prm_file.empty())
         prm.parse_input(prm_file);
       parameters.parse_parameters(prm);
@@ -156,7 +156,7 @@ main(int argc, char *argv[])
 
   try
     {
-      ImpactSimulator simulator(parameters, MPI_COMM_WORLD);
+      Simulator simulator(parameters, MPI_COMM_WORLD);
       // Everything that can fail on bad input is checked before any file
       // is written: setup() writes nothing.
       try
@@ -168,7 +168,7 @@ main(int argc, char *argv[])
           if (root)
             try
               {
-                prepare_output_directory(parameters.output_directory);
+                prepare_output_directory(parameters.output.directory);
               }
             catch (const ExceptionBase &e)
               {
@@ -185,7 +185,7 @@ main(int argc, char *argv[])
         }
       if (root)
         {
-          std::ofstream out(parameters.output_directory + "/parameters.prm");
+          std::ofstream out(parameters.output.directory + "/parameters.prm");
           prm.print_parameters(out, ParameterHandler::PRM);
         }
       simulator.run();

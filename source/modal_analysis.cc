@@ -190,7 +190,7 @@ namespace fgimpact
       {
         std::ofstream csv(directory + "/frequencies.csv");
         csv << "mode, frequency_Hz, w_energy_fraction\n";
-        std::ofstream summary(directory + "/summary.txt");
+        SummaryWriter summary;
         char          line[200];
         for (unsigned int j = 0; j < modes.size(); ++j)
           {
@@ -201,15 +201,13 @@ namespace fgimpact
                           modes[j].frequency,
                           modes[j].w_fraction);
             csv << line;
-            std::snprintf(line,
-                          sizeof(line),
-                          "frequency_%u_Hz = %.4f\n",
-                          j + 1,
-                          modes[j].frequency);
-            summary << line;
+            summary.add("frequency_" + std::to_string(j + 1) + "_Hz",
+                        modes[j].frequency,
+                        4);
           }
-        summary << "n_dofs = " << plate.n_dofs() << '\n'
-                << "subspace_iterations = " << iterations << '\n';
+        summary.add("n_dofs", plate.n_dofs(), 0);
+        summary.add("subspace_iterations", iterations, 0);
+        summary.write(directory + "/summary.txt");
       }
     // Mode shapes scaled to a unit maximum displacement, as VTU "time"
     // steps 1..N (ParaView's time bar then steps through the modes).

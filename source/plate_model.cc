@@ -17,80 +17,6 @@
 
 namespace fgimpact
 {
-  PropertyInterpolator::PropertyInterpolator(
-    const FiniteElement<3>           &scalar_fe,
-    const std::vector<Point<3>>      &unit_points,
-    const FunctionallyGradedMaterial &material)
-    : material(material)
-    , nodal_E(scalar_fe.n_dofs_per_cell())
-    , nodal_rho(scalar_fe.n_dofs_per_cell())
-  {
-    for (const auto &p : unit_points)
-      unit_point_z.push_back(p[2]);
-    const auto &support = scalar_fe.get_unit_support_points();
-    for (const auto &p : support)
-      unit_support_z.push_back(p[2]);
-    shape_values.resize(support.size(),
-                        std::vector<double>(unit_points.size()));
-    for (unsigned int k = 0; k < support.size(); ++k)
-      for (unsigned int q = 0; q < unit_points.size(); ++q)
-        shape_values[k][q] = scalar_fe.shape_value(k, unit_points[q]);
-  }
-
-
-
-  void
-  PropertyInterpolator::values(
-    const typename Triangulation<3>::cell_iterator &cell,
-    std::vector<double>                            &E,
-    std::vector<double>                            &rho) const
-  {
-    const unsigned int n_q = shape_values.empty() ? 0 : shape_values[0].size();
-    E.resize(n_q);
-    rho.resize(n_q);
-
-    // Cells are axis-aligned bricks: vertex 0 is the lowest, vertex 7 the
-    // highest corner.
-    const double z0 = cell->vertex(0)[2];
-    const double hz = cell->vertex(7)[2] - z0;
-
-    if (material.get_parameters().property_mode == PropertyMode::pointwise)
-      {
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const double z = z0 + unit_point_z[q] * hz;
-            E[q]           = material.youngs_modulus(z);
-            rho[q]         = material.density(z);
-          }
-        return;
-      }
-
-    if (material.get_parameters().property_mode == PropertyMode::homogeneous)
-      {
-        const double zc = z0 + 0.5 * hz;
-        std::fill(E.begin(), E.end(), material.youngs_modulus(zc));
-        std::fill(rho.begin(), rho.end(), material.density(zc));
-        return;
-      }
-
-    // Graded element, Eq. 3.3: P(q) = sum_k N_k(q) P(z_k).
-    std::fill(E.begin(), E.end(), 0.);
-    std::fill(rho.begin(), rho.end(), 0.);
-    for (unsigned int k = 0; k < unit_support_z.size(); ++k)
-      {
-        const double z     = z0 + unit_support_z[k] * hz;
-        const double E_k   = material.youngs_modulus(z);
-        const double rho_k = material.density(z);
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            E[q] += shape_values[k][q] * E_k;
-            rho[q] += shape_values[k][q] * rho_k;
-          }
-      }
-  }
-
-
-
   void
   PlateModel::Parameters::declare_parameters(ParameterHandler &prm)
   {
@@ -226,8 +152,7 @@ namespace fgimpact
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
     std::vector<double>                  E, rho;
 
-    const double lambda_per_E = material.lambda_per_E();
-    const double mu_per_E     = material.mu_per_E();
+    const HookeLaw hooke(material);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -239,8 +164,8 @@ namespace fgimpact
 
           for (unsigned int q = 0; q < n_q; ++q)
             {
-              const double lambda = lambda_per_E * E[q];
-              const double mu     = mu_per_E * E[q];
+              const double lambda = hooke.lambda(E[q]);
+              const double mu     = hooke.mu(E[q]);
               const double JxW    = fe_values.JxW(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
@@ -334,6 +259,23 @@ namespace fgimpact
   {
     const double local = locally_owned.is_element(dof) ? v(dof) : 0.;
     return Utilities::MPI::sum(local, mpi_communicator);
+  }
+
+
+
+  Vector<double>
+  PlateModel::dof_values(
+    const TrilinosWrappers::MPI::Vector        &v,
+    const std::vector<types::global_dof_index> &dofs) const
+  {
+    Vector<double> local(dofs.size()), global(dofs.size());
+    for (unsigned int j = 0; j < dofs.size(); ++j)
+      if (locally_owned.is_element(dofs[j]))
+        local[j] = v(dofs[j]);
+    Utilities::MPI::sum(ArrayView<const double>(local.begin(), local.size()),
+                        mpi_communicator,
+                        ArrayView<double>(global.begin(), global.size()));
+    return global;
   }
 
 

@@ -12,9 +12,9 @@
 
 namespace fgimpact
 {
-  StressPostprocessor::StressPostprocessor(
-    const FunctionallyGradedMaterial &material)
-    : material(material)
+  StressPostprocessor::StressPostprocessor(const PlateModel &plate)
+    : properties(plate.get_fe().base_element(0), {}, plate.get_material())
+    , hooke(plate.get_material())
   {}
 
 
@@ -56,27 +56,17 @@ namespace fgimpact
     const DataPostprocessorInputs::Vector<3> &inputs,
     std::vector<Vector<double>>              &computed_quantities) const
   {
-    const auto   cell = inputs.template get_cell<3>();
-    const double zc   = cell->center()[2];
-    // Output points are nodes, where the graded interpolant equals E(z).
-    const bool graded =
-      material.get_parameters().property_mode != PropertyMode::homogeneous;
-
+    const auto cell = inputs.template get_cell<3>();
     for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
       {
-        const double z   = graded ? inputs.evaluation_points[p][2] : zc;
-        const double E   = material.youngs_modulus(z);
-        const double rho = material.density(z);
+        const auto [E, rho] = properties.value_at(cell, inputs.evaluation_points[p]);
 
         SymmetricTensor<2, 3> eps;
         for (unsigned int a = 0; a < 3; ++a)
           for (unsigned int b = a; b < 3; ++b)
             eps[a][b] = 0.5 * (inputs.solution_gradients[p][a][b] +
                                inputs.solution_gradients[p][b][a]);
-        const SymmetricTensor<2, 3> sigma =
-          E *
-          (material.lambda_per_E() * trace(eps) * unit_symmetric_tensor<3>() +
-           2. * material.mu_per_E() * eps);
+        const SymmetricTensor<2, 3> sigma = hooke.stress(E, eps);
         const SymmetricTensor<2, 3> s = deviator(sigma);
 
         for (unsigned int a = 0; a < 3; ++a)
@@ -93,7 +83,7 @@ namespace fgimpact
   VtuWriter::VtuWriter(const PlateModel &plate, const std::string &directory)
     : plate(plate)
     , directory(directory)
-    , postprocessor(plate.get_material())
+    , postprocessor(plate)
   {
     // DataOut reads ghost values: ghosted copies, allocated once.
     IndexSet relevant;
@@ -225,5 +215,39 @@ namespace fgimpact
         out << (i ? ", " : "") << buffer;
       }
     out << '\n';
+  }
+
+
+
+  void
+  SummaryWriter::add(const std::string &name,
+                     const double       value,
+                     const int          decimals)
+  {
+    char buffer[200];
+    std::snprintf(
+      buffer, sizeof(buffer), "%s = %.*f\n", name.c_str(), decimals, value);
+    text += buffer;
+  }
+
+
+
+  void
+  SummaryWriter::add_scientific(const std::string &name, const double value)
+  {
+    char buffer[200];
+    std::snprintf(buffer, sizeof(buffer), "%s = %.6e\n", name.c_str(), value);
+    text += buffer;
+  }
+
+
+
+  void
+  SummaryWriter::write(const std::string &filename) const
+  {
+    std::ofstream out(filename);
+    out << text;
+    out.close();
+    AssertThrow(out, ExcMessage("cannot write " + filename));
   }
 } // namespace fgimpact

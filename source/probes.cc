@@ -46,8 +46,7 @@ namespace fgimpact
     AssertThrow(n_adjacent_cells > 0,
                 ExcMessage("A probe point lies outside the plate."));
 
-    const double lambda_per_E = plate.get_material().lambda_per_E();
-    const double mu_per_E     = plate.get_material().mu_per_E();
+    const HookeLaw hooke(plate.get_material());
     const double w            = 1. / n_adjacent_cells;
 
     // The weights of the 3 displacement and 6 stress components, summed
@@ -76,8 +75,6 @@ namespace fgimpact
                                         quadrature.get_points(),
                                         plate.get_material());
         properties.values(cell, E, rho);
-        const double lambda = lambda_per_E * E[0];
-        const double mu     = mu_per_E * E[0];
 
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
@@ -86,17 +83,15 @@ namespace fgimpact
             // The displacement is continuous: each cell gives the same
             // value, so averaging is harmless.
             weights[c](local_dofs[i]) += w * fe_values.shape_value(i, 0);
-            // sigma_ab = lambda g_c delta_ab + mu (delta_ac g_b + delta_bc g_a)
+            // The stress of this shape function, e_c (x) grad N: the
+            // weights of the 6 independent components.
+            SymmetricTensor<2, 3> eps;
+            for (unsigned int d = 0; d < 3; ++d)
+              eps[c][d] += (c == d ? 1. : 0.5) * g[d];
+            const SymmetricTensor<2, 3> sigma = hooke.stress(E[0], eps);
             for (unsigned int s = 0; s < 6; ++s)
               {
-                const unsigned int a = voigt[s][0], b = voigt[s][1];
-                double             value = 0;
-                if (a == b)
-                  value += lambda * g[c];
-                if (a == c)
-                  value += mu * g[b];
-                if (b == c)
-                  value += mu * g[a];
+                const double value = sigma[voigt[s][0]][voigt[s][1]];
                 if (value != 0.)
                   weights[3 + s](local_dofs[i]) += w * value;
               }

@@ -156,33 +156,26 @@ namespace fgimpact
   {
     if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
       {
-        std::ofstream out(directory + "/summary.txt");
-        char          line[200];
-        const char   *where[3] = {"bottom", "mid", "top"};
+        SummaryWriter      out;
+        const std::string where[3] = {"bottom", "mid", "top"};
+        for (unsigned int k = 0; k < 3; ++k)
+          out.add("static_deflection_" + where[k] + "_um",
+                  results.deflection[k] * 1e6,
+                  6);
         for (unsigned int k = 0; k < 3; ++k)
           {
-            std::snprintf(line,
-                          sizeof(line),
-                          "static_deflection_%s_um = %.6f\n",
-                          where[k],
-                          results.deflection[k] * 1e6);
-            out << line;
+            out.add("sigma_xx_" + where[k] + "_MPa",
+                    results.sigma_xx[k] * 1e-6,
+                    6);
+            out.add("sigma_yy_" + where[k] + "_MPa",
+                    results.sigma_yy[k] * 1e-6,
+                    6);
+            out.add("sigma_zz_" + where[k] + "_MPa",
+                    results.sigma_zz[k] * 1e-6,
+                    6);
           }
-        for (unsigned int k = 0; k < 3; ++k)
-          {
-            std::snprintf(line,
-                          sizeof(line),
-                          "sigma_xx_%s_MPa = %.6f\nsigma_yy_%s_MPa = %.6f\n"
-                          "sigma_zz_%s_MPa = %.6f\n",
-                          where[k],
-                          results.sigma_xx[k] * 1e-6,
-                          where[k],
-                          results.sigma_yy[k] * 1e-6,
-                          where[k],
-                          results.sigma_zz[k] * 1e-6);
-            out << line;
-          }
-        out << "n_dofs = " << results.n_dofs << '\n';
+        out.add("n_dofs", results.n_dofs, 0);
+        out.write(directory + "/summary.txt");
       }
     TrilinosWrappers::MPI::Vector zero;
     plate.initialize_vector(zero);

@@ -34,6 +34,28 @@ namespace fgimpact
         "explicit scheme: the automatic time step (Time step = 0) is this "
         "factor times the estimated stability limit 2/omega_max. "
         "Dimensionless.");
+      prm.declare_entry("Newmark beta",
+                        "0.25",
+                        Patterns::Double(1e-6, 0.5),
+                        "Newmark's beta. 1/4 with gamma = 1/2 is the average "
+                        "acceleration rule (unconditionally stable, energy "
+                        "conserving). Dimensionless.");
+      prm.declare_entry("Newmark gamma",
+                        "0.5",
+                        Patterns::Double(0.5, 1.),
+                        "Newmark's gamma; values above 1/2 add numerical "
+                        "damping and make the scheme first order. "
+                        "Dimensionless.");
+      prm.declare_entry("Time step",
+                        "1e-6",
+                        Patterns::Double(0., 1.),
+                        "Time step dt; 0 = automatic, the explicit scheme's "
+                        "stability limit times the safety factor (explicit "
+                        "only). Unit: s.");
+      prm.declare_entry("End time",
+                        "400e-6",
+                        Patterns::Double(1e-12, 1e3),
+                        "Simulated time span. Unit: s.");
     }
     prm.leave_subsection();
 
@@ -62,14 +84,27 @@ namespace fgimpact
   TimeStepper::Parameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time integration");
-    explicit_scheme = (prm.get("Scheme") == "explicit");
-    safety_factor   = prm.get_double("Stable step safety factor");
+    scheme = (prm.get("Scheme") == "explicit" ? Scheme::central_difference :
+                                                Scheme::implicit_newmark);
+    safety_factor = prm.get_double("Stable step safety factor");
+    newmark.beta  = prm.get_double("Newmark beta");
+    newmark.gamma = prm.get_double("Newmark gamma");
+    time_step     = prm.get_double("Time step");
+    end_time      = prm.get_double("End time");
     prm.leave_subsection();
 
     prm.enter_subsection("Newton");
-    newton_tolerance      = prm.get_double("Tolerance");
-    newton_max_iterations = prm.get_integer("Max iterations");
+    newton.tolerance      = prm.get_double("Tolerance");
+    newton.max_iterations = prm.get_integer("Max iterations");
     prm.leave_subsection();
+  }
+
+
+
+  unsigned int
+  TimeStepper::Parameters::n_steps(const double dt) const
+  {
+    return static_cast<unsigned int>(std::ceil(end_time / dt - 1e-9));
   }
 
 
@@ -87,45 +122,14 @@ namespace fgimpact
 
 
     /**
-     * Solve alpha + s F(alpha) = alpha_tilde by Newton's method.
-     * R(alpha) = alpha + s F(alpha) - alpha_tilde is increasing and convex
-     * for alpha > 0 and R(alpha_tilde) >= 0, so Newton started at
-     * alpha_tilde decreases monotonically to the root.  Returns the number
-     * of iterations, or max() on failure.
-     */
-    unsigned int
-    solve_contact_newton(const HertzContactLaw &law,
-                         const double           s,
-                         const double           alpha_tilde,
-                         const double           tolerance,
-                         const unsigned int     max_iterations,
-                         double                &alpha)
-    {
-      alpha = alpha_tilde;
-      if (alpha_tilde <= 0.)
-        return 0; // no contact: F = 0 satisfies the equation exactly
-      for (unsigned int it = 1; it <= max_iterations; ++it)
-        {
-          const double R     = alpha + s * law.force(alpha) - alpha_tilde;
-          const double dR    = 1. + s * law.force_derivative(alpha);
-          const double delta = -R / dR;
-          alpha += delta;
-          if (!std::isfinite(alpha))
-            break;
-          if (std::abs(delta) <= tolerance * std::abs(alpha))
-            return it;
-        }
-      return std::numeric_limits<unsigned int>::max();
-    }
-
-
-
-    /**
      * Implicit Newmark.  The plate is linear and K_eff = K + a0 M constant,
      * so with the contact-free response u* = K_eff^{-1} M r_n and the unit
-     * response c = K_eff^{-1} g (computed once), u_{n+1} = u* - F c and the
-     * coupled Newton reduces to a scalar equation for alpha: exactly the
-     * monolithic Newton's iterates (doc/theory.md, section 7).
+     * responses c_j = K_eff^{-1} g_j of the m contact DoFs (computed once),
+     * u_{n+1} = u* - sum_j lambda_j c_j, and the coupled problem reduces to
+     * the contact model's m unknowns with the dense compliance
+     * C_ij = g_i^T c_j (for the Hertz node, m = 1 and Newton on the scalar
+     * alpha: exactly the monolithic Newton's iterates, doc/theory.md,
+     * section 7).
      *
      * The products M u, M v, M a are carried along by the same linear
      * Newmark recursion as u, v, a, so a step costs one solve and one
@@ -134,24 +138,22 @@ namespace fgimpact
     class ImplicitNewmarkStepper : public TimeStepper
     {
     public:
-      ImplicitNewmarkStepper(const Parameters                    &parameters,
-                             const NewmarkIntegrator::Parameters &newmark,
+      ImplicitNewmarkStepper(const Parameters                        &parameters,
                              const EffectiveMatrixSolver::Parameters &solver,
                              const PlateModel                        &plate,
-                             const HertzContactLaw        &contact_law,
-                             const types::global_dof_index contact_dof,
-                             const double                  impactor_mass)
+                             const ContactModel                      &contact,
+                             const double impactor_mass)
         : parameters(parameters)
-        , newmark(newmark)
+        , newmark(parameters.newmark, parameters.time_step)
         , solver(solver)
         , plate(plate)
-        , contact_law(contact_law)
-        , contact_dof(contact_dof)
+        , contact_model(contact)
+        , dofs(contact.contact_dofs())
         , m_i(impactor_mass)
       {}
 
       void
-      initialize() override
+      initialize(const bool measure_reference_costs) override
       {
         Timer timer;
         effective.copy_from(plate.stiffness_matrix());
@@ -159,35 +161,12 @@ namespace fgimpact
         solver.initialize(effective, &plate.get_dof_handler());
         iterative = (solver.type() == "cg");
 
-        for (auto *vector :
-             {&u, &v, &a, &Mu, &Mv, &Ma, &u_new, &Mu_new, &rhs, &c, &g})
+        for (auto *vector : {&u, &v, &a, &Mu, &Mv, &Ma, &u_new, &Mu_new, &rhs})
           plate.initialize_vector(*vector);
-        // The unit contact load; only the owner of the contact DoF writes.
-        if (g.locally_owned_elements().is_element(contact_dof))
-          g(contact_dof) = 1.;
-        g.compress(VectorOperation::insert);
-        solver.solve(c, g);
-        // chi = g^T K_eff^{-1} g > 0: the contact node's dynamic compliance
-        // (m/N).
-        chi                = plate.dof_value(c, contact_dof);
-        factorization_time = timer.wall_time();
-
-        // Reference costs, measured in this run.
-        timer.restart();
-        const unsigned int n_spmv = 20;
-        for (unsigned int i = 0; i < n_spmv; ++i)
-          effective.vmult(rhs, c);
-        spmv_time = timer.wall_time() / n_spmv;
-        timer.restart();
-        const unsigned int n_solves = 3;
-        for (unsigned int i = 0; i < n_solves; ++i)
-          {
-            u_new = 0.;
-            solver.solve(u_new, g);
-          }
-        solve_time = timer.wall_time() / n_solves;
-        rhs        = 0.;
-        u_new      = 0.;
+        compute_compliance();
+        measured_costs.initialization = timer.wall_time();
+        if (measure_reference_costs)
+          measure_costs();
       }
 
       double
@@ -203,65 +182,42 @@ namespace fgimpact
               ContactState      &contact) override
       {
         const double a0 = newmark.mass_factor();
-
-        // Contact-free predictor: K_eff u* = M r_n, M r_n from the carried
-        // products (no matrix-vector product).
-        newmark.predictor(Mu, Mv, Ma, rhs);
-        if (iterative)
-          {
-            // Warm start: u* = u_{n+1} + F c with the explicit predictor
-            // u_{n+1} ~ u + dt v + dt^2/2 a and the last contact force.
-            const double dt = newmark.time_step();
-            u_new           = u;
-            u_new.add(dt, v, 0.5 * dt * dt, a);
-            u_new.add(contact.force, c);
-          }
-        try
-          {
-            solver.solve(u_new, rhs);
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            AssertThrow(false,
-                        ExcMessage("the linear solver did not converge at " +
-                                   at_step(step, t) + " after " +
-                                   std::to_string(e.last_step) +
-                                   " iterations; raise Linear solver/Max "
-                                   "iterations or use a direct solver."));
-          }
+        solve_contact_free(step, t, contact);
 
         // Impactor: m a0 w = m r_p - F  =>  w = w~ - F/(m a0).
         const double w_tilde =
           newmark.predictor(impactor.w, impactor.v, impactor.a) / a0;
-        // The only communication of the contact Newton: the owner's value
-        // of u* at the contact node (one scalar all-reduce).
-        const double W_star = -plate.dof_value(u_new, contact_dof);
-        const double s      = 1. / (m_i * a0) + chi;
-
-        contact.newton_iterations =
-          solve_contact_newton(contact_law,
-                               s,
-                               w_tilde - W_star,
-                               parameters.newton_tolerance,
-                               parameters.newton_max_iterations,
-                               contact.alpha);
+        // The only communication of the contact problem: u* at the contact
+        // DoFs (one all-reduce of m values).
+        const Vector<double> u_free = plate.dof_values(u_new, dofs);
+        contact_model.solve_implicit(u_free,
+                                     compliance,
+                                     w_tilde,
+                                     1. / (m_i * a0),
+                                     parameters.newton,
+                                     contact);
         AssertThrow(
-          contact.newton_iterations != std::numeric_limits<unsigned int>::max(),
+          contact.newton_iterations != numbers::invalid_unsigned_int,
           ExcMessage("Newton for the contact did not converge at " +
                      at_step(step, t) + " within " +
-                     std::to_string(parameters.newton_max_iterations) +
+                     std::to_string(parameters.newton.max_iterations) +
                      " iterations; reduce Time integration/Time step or "
                      "raise Newton/Max iterations."));
-        contact.force  = contact_law.force(contact.alpha);
         const double F = contact.force;
 
         // Back-substitute: plate and impactor at t_{n+1}.
-        u_new.add(-F, c);
-        contact.node_displacement = -W_star - F * chi;
+        double work = 0; // sum_j lambda_j u_j(t_{n+1}) = u^T (sum lambda g)
+        for (unsigned int j = 0; j < dofs.size(); ++j)
+          {
+            u_new.add(-contact.forces[j], c[j]);
+            double u_j = u_free[j];
+            for (unsigned int k = 0; k < dofs.size(); ++k)
+              u_j -= compliance(j, k) * contact.forces[k];
+            work += contact.forces[j] * u_j;
+          }
         plate.mass_matrix().vmult(Mu_new, u_new);
-        // u^T K u from K_eff u = M r_n - F g:  K u = M r_n - F g - a0 M u.
-        strain = 0.5 * (u_new * rhs - F * contact.node_displacement -
-                        a0 * (u_new * Mu_new));
+        // u^T K u from K_eff u = M r_n - sum lambda_j g_j - a0 M u.
+        strain = 0.5 * (u_new * rhs - work - a0 * (u_new * Mu_new));
 
         newmark.update(u_new, u, v, a);
         newmark.update(Mu_new, Mu, Mv, Ma);
@@ -294,20 +250,101 @@ namespace fgimpact
       }
 
     private:
+      /// c_j = K_eff^{-1} g_j for the unit loads g_j at the contact DoFs
+      /// (m solves, once) and the dense compliance C_ij = g_i^T c_j (m/N).
+      void
+      compute_compliance()
+      {
+        const unsigned int m = dofs.size();
+        c.resize(m);
+        compliance.reinit(m, m);
+        TrilinosWrappers::MPI::Vector g;
+        for (unsigned int j = 0; j < m; ++j)
+          {
+            plate.initialize_vector(g);
+            plate.initialize_vector(c[j]);
+            // Only the owner of the contact DoF writes.
+            if (g.locally_owned_elements().is_element(dofs[j]))
+              g(dofs[j]) = 1.;
+            g.compress(VectorOperation::insert);
+            solver.solve(c[j], g);
+            const Vector<double> column = plate.dof_values(c[j], dofs);
+            for (unsigned int i = 0; i < m; ++i)
+              compliance(i, j) = column[i];
+          }
+      }
+
+      /// The contact-free response u_new = u* (K_eff u* = M r_n) and M r_n
+      /// in rhs, from the carried products (no matrix-vector product).
+      void
+      solve_contact_free(const unsigned int  step,
+                         const double        t,
+                         const ContactState &contact)
+      {
+        newmark.predictor(Mu, Mv, Ma, rhs);
+        if (iterative)
+          {
+            // Warm start: u* = u_{n+1} + sum lambda_j c_j with the explicit
+            // predictor u_{n+1} ~ u + dt v + dt^2/2 a and the last forces.
+            const double dt = newmark.time_step();
+            u_new           = u;
+            u_new.add(dt, v, 0.5 * dt * dt, a);
+            for (unsigned int j = 0; j < contact.forces.size(); ++j)
+              u_new.add(contact.forces[j], c[j]);
+          }
+        try
+          {
+            solver.solve(u_new, rhs);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        ExcMessage("the linear solver did not converge at " +
+                                   at_step(step, t) + " after " +
+                                   std::to_string(e.last_step) +
+                                   " iterations; raise Linear solver/Max "
+                                   "iterations or use a direct solver."));
+          }
+        last_linear_iterations = solver.last_iterations();
+      }
+
+      /// Reference costs for the benchmarks (Output/Instrumentation).
+      void
+      measure_costs()
+      {
+        TrilinosWrappers::MPI::Vector x, y;
+        plate.initialize_vector(x);
+        plate.initialize_vector(y);
+        x = 1.;
+        Timer              timer;
+        const unsigned int n_spmv = 20;
+        for (unsigned int i = 0; i < n_spmv; ++i)
+          effective.vmult(y, x);
+        measured_costs.spmv = timer.wall_time() / n_spmv;
+        timer.restart();
+        const unsigned int n_solves = 3;
+        for (unsigned int i = 0; i < n_solves; ++i)
+          {
+            y = 0.;
+            solver.solve(y, x);
+          }
+        measured_costs.solve = timer.wall_time() / n_solves;
+      }
+
       const Parameters        parameters;
       const NewmarkIntegrator newmark;
       // Declared before the solver, which refers to it: members are
       // destroyed in reverse order (Amesos_Mumps crashed otherwise).
-      TrilinosWrappers::SparseMatrix effective;
-      EffectiveMatrixSolver          solver;
-      const PlateModel              &plate;
-      const HertzContactLaw         &contact_law;
-      const types::global_dof_index  contact_dof;
-      const double                   m_i;
-      TrilinosWrappers::MPI::Vector  a, Mu, Mv, Ma, u_new, Mu_new, rhs;
-      TrilinosWrappers::MPI::Vector  c, g;
-      double                         chi       = 0;
-      bool                           iterative = false;
+      TrilinosWrappers::SparseMatrix             effective;
+      EffectiveMatrixSolver                      solver;
+      const PlateModel                          &plate;
+      const ContactModel                        &contact_model;
+      const std::vector<types::global_dof_index> dofs;
+      const double                               m_i;
+      TrilinosWrappers::MPI::Vector              a, Mu, Mv, Ma, u_new, Mu_new, rhs;
+      std::vector<TrilinosWrappers::MPI::Vector> c;
+      FullMatrix<double>                         compliance;
+      bool                                       iterative = false;
     };
 
 
@@ -315,65 +352,43 @@ namespace fgimpact
     /**
      * Central difference (velocity Verlet form) with a row-sum lumped mass
      * M_L.  Per step: u_{n+1} = u_n + dt v_n + dt^2/2 a_n, then
-     * a_{n+1} = M_L^{-1} (-F_{n+1} g - K u_{n+1}) and
+     * a_{n+1} = M_L^{-1} (-sum_j lambda_j g_j - K u_{n+1}) and
      * v_{n+1} = v_n + dt/2 (a_n + a_{n+1}); the same for the impactor with
-     * a = -F/m.  The contact force is explicit: no Newton.
+     * a = -F/m.  The contact forces are explicit: no Newton.
      */
     class CentralDifferenceStepper : public TimeStepper
     {
     public:
-      CentralDifferenceStepper(const Parameters                    &parameters,
-                               const NewmarkIntegrator::Parameters &newmark,
-                               const PlateModel                    &plate,
-                               const HertzContactLaw               &contact_law,
-                               const types::global_dof_index        contact_dof,
-                               const double impactor_mass,
-                               const double impact_velocity)
+      CentralDifferenceStepper(const Parameters   &parameters,
+                               const PlateModel   &plate,
+                               const ContactModel &contact,
+                               const double        impactor_mass,
+                               const double        impact_velocity)
         : parameters(parameters)
-        , requested_dt(newmark.time_step)
         , plate(plate)
-        , contact_law(contact_law)
-        , contact_dof(contact_dof)
+        , contact_model(contact)
+        , dofs(contact.contact_dofs())
         , m_i(impactor_mass)
         , V0(impact_velocity)
       {}
 
       void
-      initialize() override
+      initialize(const bool measure_reference_costs) override
       {
         Timer timer;
         for (auto *vector :
              {&u, &v, &a, &Ku, &inverse_mass, &lumped_mass, &x, &y})
           plate.initialize_vector(*vector);
-        owns_contact_dof = u.locally_owned_elements().is_element(contact_dof);
-
-        // Row-sum lumping: M_L = M 1 (positive for FE_Q(1) and FE_Q(2)).
-        x = 1.;
-        plate.mass_matrix().vmult(inverse_mass, x);
-        const auto &constraints = plate.get_constraints();
-        for (const auto i : inverse_mass.locally_owned_elements())
-          {
-            AssertThrow(inverse_mass(i) > 0.,
-                        ExcMessage("the lumped mass matrix has a "
-                                   "non-positive entry"));
-            // Constrained DoFs stay at rest: zero inverse mass.
-            const bool constrained = constraints.is_constrained(i);
-            lumped_mass(i)         = constrained ? 0. : inverse_mass(i);
-            inverse_mass(i)        = constrained ? 0. : 1. / inverse_mass(i);
-          }
-        inverse_mass.compress(VectorOperation::insert);
-        lumped_mass.compress(VectorOperation::insert);
+        setup_lumped_mass();
 
         // Stability limit 2/omega_max, omega_max^2 the largest eigenvalue
-        // of M_L^{-1} (K + k_c g g^T), where k_c = dF/dalpha at the
-        // half-space maximum indentation (closed form) bounds the contact
-        // spring's stiffening of the contact node.
-        const double K_hertz   = contact_law.force(1.);
-        const double alpha_max = std::pow(1.25 * m_i * V0 * V0 / K_hertz, 0.4);
-        const double k_c       = contact_law.force_derivative(alpha_max);
-        const double lambda    = largest_eigenvalue(k_c);
-        stable_dt              = 2. / std::sqrt(lambda);
+        // of M_L^{-1} (K + k_c sum_j g_j g_j^T), where k_c bounds the
+        // contact's stiffening of the contact DoFs.
+        const double k_c    = contact_model.stiffness_bound(m_i, V0);
+        const double lambda = largest_eigenvalue(k_c);
+        stable_dt           = 2. / std::sqrt(lambda);
 
+        const double requested_dt = parameters.time_step;
         if (requested_dt == 0.)
           dt = parameters.safety_factor * stable_dt;
         else
@@ -388,15 +403,19 @@ namespace fgimpact
                           "(automatic) or the implicit scheme."));
             dt = requested_dt;
           }
-        factorization_time = timer.wall_time();
+        measured_costs.initialization = timer.wall_time();
 
-        timer.restart();
-        const unsigned int n_spmv = 20;
-        for (unsigned int i = 0; i < n_spmv; ++i)
-          plate.stiffness_matrix().vmult(y, x);
-        spmv_time = timer.wall_time() / n_spmv;
-        x         = 0.;
-        y         = 0.;
+        if (measure_reference_costs)
+          {
+            x = 1.;
+            timer.restart();
+            const unsigned int n_spmv = 20;
+            for (unsigned int i = 0; i < n_spmv; ++i)
+              plate.stiffness_matrix().vmult(y, x);
+            measured_costs.spmv = timer.wall_time() / n_spmv;
+          }
+        x = 0.;
+        y = 0.;
       }
 
       double
@@ -417,18 +436,18 @@ namespace fgimpact
         impactor.w += dt * impactor.v + 0.5 * dt * dt * impactor.a;
         impactor.v += 0.5 * dt * impactor.a;
 
-        // Contact force at the new positions (alpha = w_p - W, W = -u_z).
-        contact.node_displacement = plate.dof_value(u, contact_dof);
-        contact.alpha             = impactor.w + contact.node_displacement;
-        contact.force             = contact_law.force(contact.alpha);
-        contact.newton_iterations = 0;
+        // Contact forces at the new positions.
+        contact_model.evaluate_explicit(plate.dof_values(u, dofs),
+                                        impactor.w,
+                                        contact);
 
         // Accelerations and the second velocity half step.
         plate.stiffness_matrix().vmult(Ku, u);
         strain = 0.5 * (u * Ku);
         a.equ(-1., Ku);
-        if (owns_contact_dof)
-          a(contact_dof) -= contact.force;
+        for (unsigned int j = 0; j < dofs.size(); ++j)
+          if (a.locally_owned_elements().is_element(dofs[j]))
+            a(dofs[j]) -= contact.forces[j];
         a.scale(inverse_mass);
         v.add(0.5 * dt, a);
         impactor.a = -contact.force / m_i;
@@ -458,47 +477,75 @@ namespace fgimpact
       }
 
     private:
-      /// Power iteration with Rayleigh quotients on M_L^{-1} (K + k_c g g^T)
-      /// restricted to the unconstrained DoFs.
-      double
-      largest_eigenvalue(const double k_c)
+      /// Row-sum lumping M_L = M 1 (positive for FE_Q(1) and FE_Q(2));
+      /// constrained DoFs stay at rest: zero inverse mass.
+      void
+      setup_lumped_mass()
       {
-        // A deterministic start vector with all frequencies present, a
-        // function of the DoFs' positions and components rather than of
-        // their numbers, so that every partition (MPI rank count) finds
-        // the same time step to round-off.
+        x = 1.;
+        plate.mass_matrix().vmult(inverse_mass, x);
+        const auto &constraints = plate.get_constraints();
+        for (const auto i : inverse_mass.locally_owned_elements())
+          {
+            AssertThrow(inverse_mass(i) > 0.,
+                        ExcMessage("the lumped mass matrix has a "
+                                   "non-positive entry"));
+            const bool constrained = constraints.is_constrained(i);
+            lumped_mass(i)         = constrained ? 0. : inverse_mass(i);
+            inverse_mass(i)        = constrained ? 0. : 1. / inverse_mass(i);
+          }
+        inverse_mass.compress(VectorOperation::insert);
+        lumped_mass.compress(VectorOperation::insert);
+      }
+
+      /// A deterministic start vector with all frequencies present, a
+      /// function of the DoFs' positions and components rather than of
+      /// their numbers, so that every partition (MPI rank count) finds the
+      /// same time step to round-off.
+      void
+      fill_start_vector()
+      {
         const auto &dof_handler = plate.get_dof_handler();
         std::map<types::global_dof_index, Point<3>> support;
         DoFTools::map_dofs_to_support_points(plate.get_mapping(),
                                              dof_handler,
                                              support);
-        std::vector<types::global_dof_index> dofs(
+        std::vector<types::global_dof_index> local_dofs(
           dof_handler.get_fe().n_dofs_per_cell());
         for (const auto &cell : dof_handler.active_cell_iterators())
           if (cell->is_locally_owned())
             {
-              cell->get_dof_indices(dofs);
-              for (unsigned int k = 0; k < dofs.size(); ++k)
-                if (x.locally_owned_elements().is_element(dofs[k]))
+              cell->get_dof_indices(local_dofs);
+              for (unsigned int k = 0; k < local_dofs.size(); ++k)
+                if (x.locally_owned_elements().is_element(local_dofs[k]))
                   {
-                    const Point<3>    &p = support.at(dofs[k]);
+                    const Point<3>    &p = support.at(local_dofs[k]);
                     const unsigned int c =
                       dof_handler.get_fe().system_to_component_index(k).first;
                     // Positions in mm: O(1-100) arguments of the sine.
-                    x(dofs[k]) =
-                      (inverse_mass(dofs[k]) > 0. ?
+                    x(local_dofs[k]) =
+                      (inverse_mass(local_dofs[k]) > 0. ?
                          std::sin(1.0 + 12.9898e3 * p[0] + 78.233e3 * p[1] +
                                   37.719e3 * p[2] + 2.3 * c) :
                          0.);
                   }
             }
         x.compress(VectorOperation::insert);
+      }
+
+      /// Power iteration with Rayleigh quotients on
+      /// M_L^{-1} (K + k_c sum_j g_j g_j^T), unconstrained DoFs only.
+      double
+      largest_eigenvalue(const double k_c)
+      {
+        fill_start_vector();
         double lambda = 0;
         for (unsigned int it = 0; it < 1000; ++it)
           {
             plate.stiffness_matrix().vmult(y, x); // y = (K + k_c g g^T) x
-            if (owns_contact_dof)
-              y(contact_dof) += k_c * x(contact_dof);
+            for (const auto dof : dofs)
+              if (y.locally_owned_elements().is_element(dof))
+                y(dof) += k_c * x(dof);
             Ku = x; // scratch: M_L x
             Ku.scale(lumped_mass);
             const double new_lambda = (x * y) / (x * Ku);
@@ -515,14 +562,12 @@ namespace fgimpact
         return lambda;
       }
 
-      const Parameters              parameters;
-      const double                  requested_dt;
-      const PlateModel             &plate;
-      const HertzContactLaw        &contact_law;
-      const types::global_dof_index contact_dof;
-      const double                  m_i, V0;
-      double                        dt = 0, stable_dt = 0;
-      bool                          owns_contact_dof = false;
+      const Parameters                           parameters;
+      const PlateModel                          &plate;
+      const ContactModel                        &contact_model;
+      const std::vector<types::global_dof_index> dofs;
+      const double                               m_i, V0;
+      double                                     dt = 0, stable_dt = 0;
       TrilinosWrappers::MPI::Vector a, Ku, inverse_mass, lumped_mass, x, y;
     };
   } // namespace
@@ -531,28 +576,24 @@ namespace fgimpact
 
   std::unique_ptr<TimeStepper>
   create_time_stepper(const TimeStepper::Parameters           &parameters,
-                      const NewmarkIntegrator::Parameters     &newmark,
                       const EffectiveMatrixSolver::Parameters &solver,
                       const PlateModel                        &plate,
-                      const HertzContactLaw                   &contact_law,
-                      const types::global_dof_index            contact_dof,
+                      const ContactModel                      &contact,
                       const double                             impactor_mass,
                       const double                             impact_velocity)
   {
-    if (parameters.explicit_scheme)
-      return std::make_unique<CentralDifferenceStepper>(parameters,
-                                                        newmark,
-                                                        plate,
-                                                        contact_law,
-                                                        contact_dof,
-                                                        impactor_mass,
-                                                        impact_velocity);
+    switch (parameters.scheme)
+      {
+        case TimeStepper::Scheme::central_difference:
+          return std::make_unique<CentralDifferenceStepper>(
+            parameters, plate, contact, impactor_mass, impact_velocity);
+        case TimeStepper::Scheme::implicit_newmark:
+          break;
+      }
     return std::make_unique<ImplicitNewmarkStepper>(parameters,
-                                                    newmark,
                                                     solver,
                                                     plate,
-                                                    contact_law,
-                                                    contact_dof,
+                                                    contact,
                                                     impactor_mass);
   }
 } // namespace fgimpact

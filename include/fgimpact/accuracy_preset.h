@@ -46,17 +46,19 @@ namespace fgimpact
     {
       std::string preset = "custom";
       /// One line saying what the preset set (empty for custom); printed
-      /// by ImpactSimulator::setup().
+      /// by Simulator::setup().
       std::string log_message;
 
       static void
       declare_parameters(ParameterHandler &prm);
       /// Read Accuracy and, unless custom, overwrite the Geometry
-      /// subdivisions and the time step in prm. Throws ExcMessage naming
-      /// the entry if the preset cannot be applied (explicit scheme, too
-      /// many elements).
+      /// subdivisions and the time step in prm.  Not a component's parse:
+      /// fgimpact::Parameters::parse_parameters() calls it explicitly
+      /// before any component reads its subsection.  Throws ExcMessage
+      /// naming the entry if the preset cannot be applied (explicit
+      /// scheme, too many elements).
       void
-      parse_parameters(ParameterHandler &prm);
+      apply(ParameterHandler &prm);
     };
 
     /// Nearest even number (at least 2) of elements of size element_size

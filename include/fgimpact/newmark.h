@@ -1,7 +1,7 @@
 #ifndef fgimpact_newmark_h
 #define fgimpact_newmark_h
 
-#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/config.h>
 
 namespace fgimpact
 {
@@ -27,20 +27,17 @@ namespace fgimpact
   class NewmarkIntegrator
   {
   public:
+    /// Newmark's two parameters (dimensionless). The time step and the
+    /// end time are time control (TimeStepper::Parameters), not part of
+    /// the scheme; the ParameterHandler entries are declared there.
     struct Parameters
     {
-      double beta      = 0.25;
-      double gamma     = 0.5;
-      double time_step = 1e-6;
-      double end_time  = 400e-6;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
+      double beta  = 0.25;
+      double gamma = 0.5;
     };
 
-    explicit NewmarkIntegrator(const Parameters &parameters);
+    /// The scheme with time step dt (s).
+    NewmarkIntegrator(const Parameters &parameters, const double dt);
 
     double
     time_step() const
@@ -64,16 +61,6 @@ namespace fgimpact
     {
       return a0;
     }
-
-    /// Number of steps to reach the end time (the last step may end past
-    /// it by less than dt/2 of round-off).
-    unsigned int
-    n_steps() const;
-
-    /// Steps of length dt to reach end_time (the last may end past it by
-    /// round-off); shared with the explicit scheme, whose dt is computed.
-    static unsigned int
-    number_of_steps(const double end_time, const double dt);
 
     /// The predictor r = a0 u + a1 v + a2 a (scalar version).
     double

@@ -15,7 +15,9 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
 
+#include <fgimpact/constitutive_law.h>
 #include <fgimpact/geometry.h>
 #include <fgimpact/material.h>
 
@@ -25,40 +27,6 @@
 namespace fgimpact
 {
   using namespace dealii;
-
-  /**
-   * Evaluates E(z) and rho(z) at fixed unit-cell points of any cell, either
-   * graded (nodal values of the scalar base element interpolated with its
-   * shape functions, Eq. 3.3), homogeneous (the value at the cell centre) or
-   * pointwise (E(z), rho(z) at the points themselves).
-   * The shape function table is computed once; cells must be axis-aligned
-   * bricks (all cells of this program are).
-   */
-  class PropertyInterpolator
-  {
-  public:
-    PropertyInterpolator(const FiniteElement<3>           &scalar_fe,
-                         const std::vector<Point<3>>      &unit_points,
-                         const FunctionallyGradedMaterial &material);
-
-    /// E (Pa) and rho (kg/m^3) at the unit points of cell.
-    void
-    values(const typename Triangulation<3>::cell_iterator &cell,
-           std::vector<double>                            &E,
-           std::vector<double>                            &rho) const;
-
-  private:
-    const FunctionallyGradedMaterial &material;
-    /// z coordinate of each evaluation point on the unit cell.
-    std::vector<double> unit_point_z;
-    /// z coordinate of each scalar support point on the unit cell.
-    std::vector<double> unit_support_z;
-    /// shape_values[k][q] = N_k(unit point q).
-    std::vector<std::vector<double>> shape_values;
-    std::vector<double>              nodal_E, nodal_rho; // scratch
-  };
-
-
 
   /**
    * The linear elastic FGM plate discretized with FESystem(FE_Q(p), 3): the
@@ -130,6 +98,11 @@ namespace fgimpact
     double
     dof_value(const TrilinosWrappers::MPI::Vector &v,
               const types::global_dof_index        dof) const;
+
+    /// dof_value() at several DoFs with one all-reduce. Collective.
+    Vector<double>
+    dof_values(const TrilinosWrappers::MPI::Vector        &v,
+               const std::vector<types::global_dof_index> &dofs) const;
 
     /// The MPI rank that owns a DoF. Collective.
     unsigned int

@@ -19,14 +19,13 @@ namespace fgimpact
 
   /**
    * Stress tensor (MPa), von Mises stress (MPa), E (GPa) and rho (kg/m^3)
-   * from the displacement, for DataOut.  E is evaluated as in the
-   * assembly: graded (the interpolant equals E(z) at the output points,
-   * which are nodes) or the element-centre value.
+   * from the displacement, for DataOut.  E and the stress come from the
+   * same PropertyInterpolator and HookeLaw as the assembly and the probes.
    */
   class StressPostprocessor : public DataPostprocessor<3>
   {
   public:
-    explicit StressPostprocessor(const FunctionallyGradedMaterial &material);
+    explicit StressPostprocessor(const PlateModel &plate);
 
     void
     evaluate_vector_field(
@@ -43,7 +42,8 @@ namespace fgimpact
     get_needed_update_flags() const override;
 
   private:
-    const FunctionallyGradedMaterial &material;
+    const PropertyInterpolator properties;
+    const HookeLaw             hooke;
   };
 
 
@@ -106,6 +106,31 @@ namespace fgimpact
   private:
     std::ofstream    out;
     std::vector<int> decimals;
+  };
+
+
+  /**
+   * summary.txt of every problem type: one `name = value` line per result,
+   * the unit in the name, fixed decimals (or %.6e) per entry, written at
+   * once by write() so that a failed run leaves no partial summary.
+   */
+  class SummaryWriter
+  {
+  public:
+    /// A value with a fixed number of decimals (0 for counts).
+    void
+    add(const std::string &name, const double value, const int decimals);
+
+    /// A value in scientific notation with 7 significant digits.
+    void
+    add_scientific(const std::string &name, const double value);
+
+    /// Write all lines to filename; throws ExcMessage if it cannot.
+    void
+    write(const std::string &filename) const;
+
+  private:
+    std::string text;
   };
 } // namespace fgimpact
 

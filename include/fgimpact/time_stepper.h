@@ -3,10 +3,9 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <fgimpact/contact_law.h>
+#include <fgimpact/contact_model.h>
 #include <fgimpact/linear_solver.h>
 #include <fgimpact/newmark.h>
 #include <fgimpact/plate_model.h>
@@ -25,24 +24,14 @@ namespace fgimpact
     double w = 0, v = 0, a = 0;
   };
 
-  /// Indentation alpha (m), contact force F (N) and the plate's z
-  /// displacement at the contact node (m, positive up) at the current time,
-  /// known on every MPI rank.
-  struct ContactState
-  {
-    double       alpha             = 0;
-    double       force             = 0;
-    double       node_displacement = 0;
-    unsigned int newton_iterations = 0;
-  };
-
   /**
    * Advances the plate and the impactor by one time step, coupled through
-   * the Hertz force at the contact node.  Two schemes (a selection plus the
-   * factory create_time_stepper()):
+   * a ContactModel.  Two schemes (a selection plus the factory
+   * create_time_stepper()):
    *
-   * - implicit: Newmark (beta, gamma) with the block-eliminated contact
-   *   Newton, one solve with the constant effective matrix per step;
+   * - implicit: Newmark (beta, gamma); the contact is block-eliminated
+   *   with the plate's compliance at the contact DoFs, so a step costs one
+   *   solve with the constant effective matrix;
    * - explicit: central difference (Newmark beta = 0, gamma = 1/2) with a
    *   row-sum lumped mass, one matrix-vector product per step, at a time
    *   step below the stability limit 2/omega_max.
@@ -50,24 +39,50 @@ namespace fgimpact
   class TimeStepper
   {
   public:
+    enum class Scheme
+    {
+      implicit_newmark,
+      central_difference
+    };
+
+    /// Subsections "Time integration" (scheme, time control, Newmark's
+    /// beta and gamma) and "Newton" (the contact iteration).
     struct Parameters
     {
-      bool         explicit_scheme       = false;
-      double       safety_factor         = 0.9;
-      double       newton_tolerance      = 1e-3;
-      unsigned int newton_max_iterations = 50;
+      Scheme                        scheme        = Scheme::implicit_newmark;
+      double                        time_step     = 1e-6;   // s, 0: auto
+      double                        end_time      = 400e-6; // s
+      double                        safety_factor = 0.9;
+      NewmarkIntegrator::Parameters newmark;
+      NewtonControl                 newton;
 
       static void
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
+
+      /// Steps of length dt to reach end_time (the last may end past it
+      /// by round-off); dt may differ from time_step (explicit, automatic).
+      unsigned int
+      n_steps(const double dt) const;
+    };
+
+    /// Wall-clock costs (s).  The reference costs of one matrix-vector
+    /// product and one solve are measured only if asked for (benchmarks).
+    struct Costs
+    {
+      double initialization = 0;
+      double spmv           = 0;
+      double solve          = 0;
     };
 
     virtual ~TimeStepper() = default;
 
-    /// Build matrices/factorizations; fixes the time step.
+    /// Build matrices/factorizations and the contact compliance; fixes the
+    /// time step.  With measure_reference_costs, also times 20
+    /// matrix-vector products and 3 solves (costs()).
     virtual void
-    initialize() = 0;
+    initialize(const bool measure_reference_costs) = 0;
 
     /// The time step in use (s).
     virtual double
@@ -106,21 +121,29 @@ namespace fgimpact
       return strain;
     }
 
+    /// Iterations of the linear solver in the last step (0 if direct).
+    unsigned int
+    linear_iterations() const
+    {
+      return last_linear_iterations;
+    }
+
+    const Costs &
+    costs() const
+    {
+      return measured_costs;
+    }
+
     /// Name of the scheme and linear solver, for the log.
     virtual std::string
     description() const = 0;
-
-    /// Costs measured in initialize() for the benchmark (s): one
-    /// matrix-vector product with the matrix of the step, and one solve
-    /// (0 for the explicit scheme).
-    double spmv_time          = 0;
-    double solve_time         = 0;
-    double factorization_time = 0;
 
   protected:
     /// The state every scheme keeps and advance() updates.
     TrilinosWrappers::MPI::Vector u, v;
     double                        kinetic = 0, strain = 0;
+    unsigned int                  last_linear_iterations = 0;
+    Costs                         measured_costs;
   };
 
 
@@ -128,11 +151,9 @@ namespace fgimpact
   /// The factory: the scheme named in the parameters.
   std::unique_ptr<TimeStepper>
   create_time_stepper(const TimeStepper::Parameters           &parameters,
-                      const NewmarkIntegrator::Parameters     &newmark,
                       const EffectiveMatrixSolver::Parameters &solver,
                       const PlateModel                        &plate,
-                      const HertzContactLaw                   &contact_law,
-                      const types::global_dof_index            contact_dof,
+                      const ContactModel                      &contact,
                       const double                             impactor_mass,
                       const double                             impact_velocity);
 } // namespace fgimpact

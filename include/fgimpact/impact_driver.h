@@ -1,0 +1,96 @@
+#ifndef fgimpact_impact_driver_h
+#define fgimpact_impact_driver_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <fgimpact/contact_law.h>
+#include <fgimpact/contact_model.h>
+#include <fgimpact/impactor.h>
+#include <fgimpact/monitor.h>
+#include <fgimpact/parameters.h>
+#include <fgimpact/plate_model.h>
+#include <fgimpact/time_stepper.h>
+
+#include <memory>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * A problem type's driver, given the plate that all of them share:
+   * setup() builds and checks everything and writes no file; run()
+   * computes and writes the outputs.
+   */
+  class ProblemDriver
+  {
+  public:
+    virtual ~ProblemDriver() = default;
+
+    virtual void
+    setup() = 0;
+
+    virtual void
+    run() = 0;
+  };
+
+
+
+  /**
+   * The low-velocity impact (Problem type = impact), in the shape of
+   * step-18: setup() builds the contact model and the time stepper, run()
+   * records the initial state and calls do_timestep() until the end time.
+   * The plate and the ball are coupled only through the ContactModel; the
+   * ImpactMonitor watches the state and writes every output.
+   */
+  class ImpactDriver : public ProblemDriver
+  {
+  public:
+    ImpactDriver(const Parameters  &parameters,
+                 const PlateModel  &plate,
+                 const Timer       &total_timer);
+
+    void
+    setup() override;
+
+    void
+    run() override;
+
+    /// Subscribe to the history rows (before run()).
+    void
+    add_row_observer(const ImpactMonitor::RowObserver &observer);
+
+    const ImpactResults &
+    get_results() const
+    {
+      return results;
+    }
+
+  private:
+    void
+    do_timestep();
+
+    const Parameters   &parameters;
+    const PlateModel   &plate;
+    const Timer        &total_timer;
+    ConditionalOStream  pcout;
+    const Impactor      impactor;
+    HertzContactLaw     contact_law;
+    ImpactResults       results;
+
+    std::unique_ptr<ContactModel>           contact;
+    std::unique_ptr<TimeStepper>            stepper;
+    std::unique_ptr<ImpactMonitor>          monitor;
+    std::vector<ImpactMonitor::RowObserver> observers;
+
+    ImpactorState ball;
+    ContactState  contact_state;
+    double        dt       = 0;
+    unsigned int  n_steps  = 0;
+    unsigned int  timestep = 0;
+  };
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,157 @@
+#ifndef fgimpact_monitor_h
+#define fgimpact_monitor_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/timer.h>
+
+#include <fgimpact/contact_model.h>
+#include <fgimpact/plate_model.h>
+#include <fgimpact/postprocessing.h>
+#include <fgimpact/probes.h>
+#include <fgimpact/results.h>
+#include <fgimpact/time_stepper.h>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /// Subsection "Output": where and how often the monitor writes.
+  struct OutputParameters
+  {
+    std::string  directory       = "output";
+    unsigned int vtu_interval    = 0;
+    unsigned int log_interval    = 50;
+    bool         print_timing    = true;
+    bool         instrumentation = false;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+
+
+  /// Everything history.csv shows at one time, in SI units.
+  struct HistorySample
+  {
+    double                t = 0;            // s
+    const ImpactorState  *ball    = nullptr;
+    const ContactState   *contact = nullptr;
+    double                W_mid = 0, W_top = 0; // m, positive down
+    SymmetricTensor<2, 3> sigma_mid;            // Pa
+    double E_impactor = 0, E_kinetic = 0, E_strain = 0, E_contact = 0; // J
+    double E_total = 0;                                                // J
+  };
+
+  /// One column of history.csv: name (with unit), decimals, and the value
+  /// in the file's unit.
+  struct HistoryColumn
+  {
+    const char *name;
+    int         decimals;
+    double (*value)(const HistorySample &);
+  };
+
+  /// The columns of history.csv, declared once (the CSV header, the rows
+  /// and the docs follow this list).
+  const std::vector<HistoryColumn> &
+  history_columns();
+
+
+
+  /**
+   * Watches an impact run: evaluates the probes and energies at every step,
+   * keeps the results (peak force by a parabola through the largest sample
+   * and its neighbours, contact episodes, impulse, maxima), streams
+   * history.csv (nothing kept in memory; observers may subscribe to the
+   * rows), writes the VTU snapshots and the log lines, and at the end
+   * summary.txt.  The results go into the driver's ImpactResults, whose
+   * set-up entries (masses, DoFs, contact constants, timings) the driver
+   * fills.  Only rank 0 writes files; every rank computes.
+   */
+  class ImpactMonitor
+  {
+  public:
+    using RowObserver = std::function<void(const std::vector<double> &)>;
+
+    ImpactMonitor(const OutputParameters &parameters,
+                  const PlateModel       &plate,
+                  const ContactModel     &contact,
+                  const double            impactor_mass,
+                  const double            impact_velocity,
+                  const double            dt,
+                  const unsigned int      n_steps,
+                  ImpactResults          &results);
+
+    /// Receive every history row (the CSV's columns and units, before
+    /// rounding) on every rank.
+    void
+    add_row_observer(const RowObserver &observer);
+
+    /// Record the state at step (time t, s) after the stepper advanced.
+    void
+    record(const unsigned int   step,
+           const double         t,
+           const TimeStepper   &stepper,
+           const ImpactorState &ball,
+           const ContactState  &contact);
+
+    /// Wait for the last VTU snapshot (timed as output).
+    void
+    close_output();
+
+    /// Derive the final results, print them and write summary.txt;
+    /// loop_time and wall_time (s) are the driver's clocks.
+    void
+    finish(const ImpactorState &ball,
+           const double         loop_time,
+           const double         wall_time);
+
+  private:
+    void
+    update_episodes(const double t, const ContactState &contact);
+    void
+    update_extremes(const double t, const HistorySample &sample);
+    void
+    write_outputs(const unsigned int   step,
+                  const double         t,
+                  const TimeStepper   &stepper,
+                  const HistorySample &sample);
+    void
+    print_results() const;
+    void
+    write_summary() const;
+
+    const OutputParameters parameters;
+    const ContactModel    &contact_model;
+    const double           m_i, V0, E0, dt;
+    const unsigned int     n_steps;
+    const bool             root;
+    ConditionalOStream     pcout;
+    ImpactResults         &impact_results;
+
+    PointProbe                 mid_probe, top_probe;
+    std::unique_ptr<CsvWriter> history;
+    std::unique_ptr<VtuWriter> vtu;
+    std::vector<RowObserver>   observers;
+    Timer                      output_timer;
+
+    // Contact episodes: alpha(0) = 0 with alpha' > 0 counts as contact.
+    bool   in_contact     = true;
+    bool   separated_once = false;
+    double last_force = 0, last_alpha = 0;
+    // Peak detection: the sample left of the largest one.
+    double peak_left    = 0;
+    bool   peak_pending = false;
+  };
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,66 @@
+#ifndef fgimpact_parameters_h
+#define fgimpact_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <fgimpact/accuracy_preset.h>
+#include <fgimpact/contact_law.h>
+#include <fgimpact/geometry.h>
+#include <fgimpact/impactor.h>
+#include <fgimpact/linear_solver.h>
+#include <fgimpact/material.h>
+#include <fgimpact/modal_analysis.h>
+#include <fgimpact/monitor.h>
+#include <fgimpact/plate_model.h>
+#include <fgimpact/static_analysis.h>
+#include <fgimpact/time_stepper.h>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /// What a run computes (entry "Problem type").
+  enum class ProblemType
+  {
+    impact,
+    static_load,
+    modal
+  };
+
+  /**
+   * All parameters of a run: one member per component, each of which
+   * declares and parses its own subsection (ASPECT's way).  The accuracy
+   * preset is applied explicitly before any component parses, so parse
+   * order does not matter otherwise.  Physics classes receive their
+   * member, never the ParameterHandler.
+   */
+  struct Parameters
+  {
+    ProblemType                            problem_type = ProblemType::impact;
+    AccuracyPreset::Parameters             accuracy;
+    PlateGeometry::Parameters              geometry;
+    FunctionallyGradedMaterial::Parameters material;
+    PlateModel::Parameters                 finite_element;
+    HertzContactLaw::Parameters            contact;
+    Impactor::Parameters                   impactor;
+    TimeStepper::Parameters                time_integration;
+    EffectiveMatrixSolver::Parameters      linear_solver;
+    StaticAnalysis::Parameters             static_analysis;
+    ModalAnalysis::Parameters              modal;
+    OutputParameters                       output;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /// Apply the accuracy preset to prm, then parse every subsection.
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Check consistency between entries (one-line messages naming the
+    /// parameter); throws ExcMessage.
+    void
+    validate() const;
+  };
+} // namespace fgimpact
+
+#endif

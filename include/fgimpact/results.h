@@ -1,0 +1,51 @@
+#ifndef fgimpact_results_h
+#define fgimpact_results_h
+
+namespace fgimpact
+{
+  /**
+   * The results of an impact run, in SI units, as written to summary.txt
+   * (ImpactMonitor::write_summary() scales them).
+   */
+  struct ImpactResults
+  {
+    double       peak_contact_force      = 0; // N, parabola through 3 samples
+    double       max_sampled_force       = 0; // N, largest sample
+    double       time_of_peak_force      = 0; // s
+    double       contact_duration        = 0; // s, NaN if still in contact
+    double       departure_velocity      = 0; // m/s, rebound positive
+    double       max_indentation         = 0; // m
+    double       max_midplane_deflection = 0; // m
+    double       max_top_deflection      = 0; // m
+    double       contact_stiffness       = 0; // N/m^1.5 (beta K_h)
+    double       contact_modulus         = 0; // Pa
+    double       impactor_mass           = 0; // kg
+    double       plate_mass              = 0; // kg
+    double       impulse                 = 0; // N s, int F dt
+    double       contact_node_offset     = 0; // m, node to impact point
+    unsigned int contact_node_owner      = 0; // MPI rank owning its DoF
+    unsigned int n_mpi_ranks             = 1;
+    double       max_energy_drift        = 0; // relative
+    /// |int F dt - m (V0 - v_end)| / (m V0): an identity of the impactor's
+    /// update for gamma = 1/2 (round-off only), a consistency check of the
+    /// impulse bookkeeping, not of the physics.
+    double       impulse_identity_error  = 0;
+    unsigned int n_impacts               = 0;
+    unsigned int n_dofs                  = 0;
+    unsigned int n_time_steps            = 0;
+    unsigned int max_newton_iterations   = 0;
+    /// Iterations of the linear solver (0 for the direct solvers).
+    unsigned long long linear_iterations     = 0; // summed over the run
+    unsigned int       max_linear_iterations = 0; // in one step
+    double       setup_time              = 0; // s
+    double       factorization_time      = 0; // s
+    double       time_loop_time          = 0; // s
+    double       output_time             = 0; // s
+    /// Reference costs, measured only with Output/Instrumentation (s).
+    double       spmv_time               = 0; // one matrix-vector product
+    double       solve_time              = 0; // one solve with K_eff
+    double       wall_time               = 0; // s
+  };
+} // namespace fgimpact
+
+#endif

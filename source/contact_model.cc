@@ -1,0 +1,165 @@
+#include <deal.II/base/exceptions.h>
+
+#include <fgimpact/contact_model.h>
+#include <fgimpact/results.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /**
+     * Solve alpha + s F(alpha) = alpha_tilde by Newton's method.
+     * R(alpha) = alpha + s F(alpha) - alpha_tilde is increasing and convex
+     * for alpha > 0 and R(alpha_tilde) >= 0, so Newton started at
+     * alpha_tilde decreases monotonically to the root.  Returns the number
+     * of iterations, or invalid_unsigned_int on failure.
+     */
+    unsigned int
+    solve_contact_newton(const HertzContactLaw &law,
+                         const double           s,
+                         const double           alpha_tilde,
+                         const NewtonControl   &newton,
+                         double                &alpha)
+    {
+      alpha = alpha_tilde;
+      if (alpha_tilde <= 0.)
+        return 0; // no contact: F = 0 satisfies the equation exactly
+      for (unsigned int it = 1; it <= newton.max_iterations; ++it)
+        {
+          const double R     = alpha + s * law.force(alpha) - alpha_tilde;
+          const double dR    = 1. + s * law.force_derivative(alpha);
+          const double delta = -R / dR;
+          alpha += delta;
+          if (!std::isfinite(alpha))
+            break;
+          if (std::abs(delta) <= newton.tolerance * std::abs(alpha))
+            return it;
+        }
+      return numbers::invalid_unsigned_int;
+    }
+  } // namespace
+
+
+
+  HertzNodeContact::HertzNodeContact(const HertzContactLaw &law,
+                                     const PlateModel      &plate,
+                                     const Point<2>        &impact_point)
+    : law(law)
+  {
+    const auto [dof, vertex] = plate.nearest_top_vertex_dof(impact_point, 2);
+    dofs = {dof};
+    node = vertex;
+    // Only the owner knows for sure whether the DoF is constrained.
+    const bool constrained =
+      Utilities::MPI::max((plate.locally_owned_dofs().is_element(dof) &&
+                           plate.get_constraints().is_constrained(dof)) ?
+                            1u :
+                            0u,
+                          plate.get_mpi_communicator()) == 1u;
+    AssertThrow(!constrained,
+                ExcMessage("Impactor/Impact point: the nearest top-surface "
+                           "node lies on a supported face; move the impact "
+                           "point inside the plate."));
+    node_owner  = plate.dof_owner(dof);
+    node_offset = Point<2>(node[0], node[1]).distance(impact_point);
+    if (node_offset <= 1e-9 * plate.get_geometry().length())
+      node_offset_note_needed = false;
+  }
+
+
+
+  void
+  HertzNodeContact::solve_implicit(const Vector<double>     &u_free,
+                                   const FullMatrix<double> &C,
+                                   const double              w_free,
+                                   const double              c_b,
+                                   const NewtonControl      &newton,
+                                   ContactState             &state) const
+  {
+    const double W_star = -u_free[0];
+    const double chi    = C(0, 0);
+    const double s      = c_b + chi;
+    state.newton_iterations =
+      solve_contact_newton(law, s, w_free - W_star, newton, state.alpha);
+    state.force             = law.force(state.alpha);
+    state.forces            = {state.force};
+    state.node_displacement = -W_star - state.force * chi;
+  }
+
+
+
+  void
+  HertzNodeContact::evaluate_explicit(const Vector<double> &u_c,
+                                      const double          w,
+                                      ContactState         &state) const
+  {
+    state.node_displacement = u_c[0];
+    state.alpha             = w + state.node_displacement;
+    state.force             = law.force(state.alpha);
+    state.forces            = {state.force};
+    state.newton_iterations = 0;
+  }
+
+
+
+  double
+  HertzNodeContact::potential(const ContactState &state) const
+  {
+    return law.potential(state.alpha);
+  }
+
+
+
+  double
+  HertzNodeContact::stiffness_bound(const double mass, const double V0) const
+  {
+    // dF/dalpha at the half-space maximum indentation (closed form): the
+    // plate only lowers the indentation.
+    const double K_hertz   = law.force(1.);
+    const double alpha_max = std::pow(1.25 * mass * V0 * V0 / K_hertz, 0.4);
+    return law.force_derivative(alpha_max);
+  }
+
+
+
+  std::string
+  HertzNodeContact::description() const
+  {
+    std::ostringstream s;
+    s << "Q_alpha = " << law.contact_modulus() / 1e9
+      << " GPa, beta K_h = " << law.force(1.) << " N/m^1.5\n"
+      << "  contact node (" << node[0] << ", " << node[1] << ", " << node[2]
+      << ") m, owned by MPI rank " << node_owner;
+    return s.str();
+  }
+
+
+
+  std::string
+  HertzNodeContact::warning() const
+  {
+    if (!node_offset_note_needed)
+      return "";
+    std::ostringstream s;
+    s << "note: no node lies at the impact point; the contact force acts at "
+         "the nearest top node, "
+      << node_offset * 1e3
+      << " mm away (choose Subdivisions so that a node lies under the impact "
+         "point)";
+    return s.str();
+  }
+
+
+
+  void
+  HertzNodeContact::fill_results(ImpactResults &results) const
+  {
+    results.contact_modulus     = law.contact_modulus();
+    results.contact_stiffness   = law.force(1.); // beta K_h
+    results.contact_node_offset = node_offset;
+    results.contact_node_owner  = node_owner;
+  }
+} // namespace fgimpact

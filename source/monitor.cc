@@ -1,0 +1,435 @@
+#include <deal.II/base/exceptions.h>
+
+#include <fgimpact/monitor.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace fgimpact
+{
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::DirectoryName(),
+                        "Directory for history.csv, summary.txt, "
+                        "parameters.prm and the VTU/PVD files; created if "
+                        "missing.");
+      prm.declare_entry("VTU interval",
+                        "0",
+                        Patterns::Integer(0, 100000000),
+                        "Write VTU every this many time steps (and the "
+                        "initial state); 0 = no VTU output.");
+      prm.declare_entry("Log interval",
+                        "50",
+                        Patterns::Integer(0, 100000000),
+                        "Print a progress line every this many steps; 0 = "
+                        "none.");
+      prm.declare_entry("Print timing",
+                        "true",
+                        Patterns::Bool(),
+                        "Print the wall-clock timing table at the end (turn "
+                        "off for reproducible logs).");
+      prm.declare_entry("Instrumentation",
+                        "false",
+                        Patterns::Bool(),
+                        "Measure the reference costs of one matrix-vector "
+                        "product and one solve with the time step's matrix "
+                        "(spmv_ms, solve_ms in summary.txt, for the "
+                        "benchmarks in bench/); costs 20 products and 3 "
+                        "solves at set-up.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory       = prm.get("Directory");
+    vtu_interval    = prm.get_integer("VTU interval");
+    log_interval    = prm.get_integer("Log interval");
+    print_timing    = prm.get_bool("Print timing");
+    instrumentation = prm.get_bool("Instrumentation");
+    prm.leave_subsection();
+  }
+
+
+
+  const std::vector<HistoryColumn> &
+  history_columns()
+  {
+    // Deflections and the impactor's motion positive in the impact
+    // direction (-z); stresses at the mid-plane centre.
+    static const std::vector<HistoryColumn> columns = {
+      {"t_us", 4, [](const HistorySample &s) { return s.t * 1e6; }},
+      {"contact_force_N", 4,
+       [](const HistorySample &s) { return s.contact->force; }},
+      {"indentation_um", 5,
+       [](const HistorySample &s) { return s.contact->alpha * 1e6; }},
+      {"impactor_displacement_um", 5,
+       [](const HistorySample &s) { return s.ball->w * 1e6; }},
+      {"impactor_velocity_m_s", 7,
+       [](const HistorySample &s) { return s.ball->v; }},
+      {"midplane_deflection_um", 5,
+       [](const HistorySample &s) { return s.W_mid * 1e6; }},
+      {"top_deflection_um", 5,
+       [](const HistorySample &s) { return s.W_top * 1e6; }},
+      {"sigma_xx_mid_MPa", 5,
+       [](const HistorySample &s) { return s.sigma_mid[0][0] * 1e-6; }},
+      {"sigma_yy_mid_MPa", 5,
+       [](const HistorySample &s) { return s.sigma_mid[1][1] * 1e-6; }},
+      {"sigma_zz_mid_MPa", 5,
+       [](const HistorySample &s) { return s.sigma_mid[2][2] * 1e-6; }},
+      {"energy_impactor_J", 9,
+       [](const HistorySample &s) { return s.E_impactor; }},
+      {"energy_plate_kinetic_J", 9,
+       [](const HistorySample &s) { return s.E_kinetic; }},
+      {"energy_strain_J", 9,
+       [](const HistorySample &s) { return s.E_strain; }},
+      {"energy_contact_J", 9,
+       [](const HistorySample &s) { return s.E_contact; }},
+      {"energy_total_J", 9, [](const HistorySample &s) { return s.E_total; }},
+      {"contact_node_deflection_um", 5,
+       [](const HistorySample &s) {
+         return -s.contact->node_displacement * 1e6;
+       }},
+      {"newton_iterations", 0, [](const HistorySample &s) {
+         return static_cast<double>(s.contact->newton_iterations);
+       }}};
+    return columns;
+  }
+
+
+
+  ImpactMonitor::ImpactMonitor(const OutputParameters &parameters,
+                               const PlateModel       &plate,
+                               const ContactModel     &contact,
+                               const double            impactor_mass,
+                               const double            impact_velocity,
+                               const double            dt,
+                               const unsigned int      n_steps,
+                               ImpactResults          &results)
+    : parameters(parameters)
+    , contact_model(contact)
+    , m_i(impactor_mass)
+    , V0(impact_velocity)
+    , E0(0.5 * impactor_mass * impact_velocity * impact_velocity)
+    , dt(dt)
+    , n_steps(n_steps)
+    , root(Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) ==
+           0)
+    , pcout(std::cout, root)
+    , impact_results(results)
+    , mid_probe(plate,
+                plate.get_geometry().centre(
+                  plate.get_geometry().thickness() / 2))
+    , top_probe(plate,
+                plate.get_geometry().centre(plate.get_geometry().thickness()))
+  {
+    output_timer.stop();
+    output_timer.reset();
+    // A fresh run: the time history's entries start from nothing.
+    impact_results.peak_contact_force = impact_results.max_sampled_force = 0;
+    impact_results.time_of_peak_force = impact_results.impulse = 0;
+    impact_results.max_indentation = impact_results.max_energy_drift = 0;
+    impact_results.max_midplane_deflection = 0;
+    impact_results.max_top_deflection      = 0;
+    impact_results.max_newton_iterations   = 0;
+    impact_results.linear_iterations       = 0;
+    impact_results.max_linear_iterations   = 0;
+    impact_results.contact_duration = std::numeric_limits<double>::quiet_NaN();
+    impact_results.n_impacts        = 1;
+    if (root)
+      {
+        std::vector<std::pair<std::string, int>> header;
+        for (const auto &column : history_columns())
+          header.emplace_back(column.name, column.decimals);
+        history = std::make_unique<CsvWriter>(parameters.directory +
+                                                "/history.csv",
+                                              header);
+      }
+    if (parameters.vtu_interval > 0)
+      vtu = std::make_unique<VtuWriter>(plate, parameters.directory);
+  }
+
+
+
+  void
+  ImpactMonitor::add_row_observer(const RowObserver &observer)
+  {
+    observers.push_back(observer);
+  }
+
+
+
+  void
+  ImpactMonitor::record(const unsigned int   step,
+                        const double         t,
+                        const TimeStepper   &stepper,
+                        const ImpactorState &ball,
+                        const ContactState  &contact)
+  {
+    if (step > 0)
+      {
+        // Trapezoidal impulse: consistent with both schemes' impactor
+        // update, m (v_{n+1} - v_n) = -dt (F_n + F_{n+1})/2 for gamma = 1/2.
+        impact_results.impulse += 0.5 * dt * (last_force + contact.force);
+        update_episodes(t, contact);
+      }
+
+    const auto    &u = stepper.displacement();
+    HistorySample sample;
+    sample.t          = t;
+    sample.ball       = &ball;
+    sample.contact    = &contact;
+    sample.W_mid      = -mid_probe.displacement(u)[2];
+    sample.W_top      = -top_probe.displacement(u)[2];
+    sample.sigma_mid  = mid_probe.stress(u);
+    sample.E_impactor = 0.5 * m_i * ball.v * ball.v;
+    sample.E_kinetic  = stepper.kinetic_energy();
+    sample.E_strain   = stepper.strain_energy();
+    sample.E_contact  = contact_model.potential(contact);
+    sample.E_total    = sample.E_impactor + sample.E_kinetic +
+                     sample.E_strain + sample.E_contact;
+
+    update_extremes(t, sample);
+    impact_results.linear_iterations += stepper.linear_iterations();
+    impact_results.max_linear_iterations =
+      std::max(impact_results.max_linear_iterations,
+               stepper.linear_iterations());
+    write_outputs(step, t, stepper, sample);
+    last_force = contact.force;
+    last_alpha = contact.alpha;
+  }
+
+
+
+  void
+  ImpactMonitor::update_episodes(const double t, const ContactState &contact)
+  {
+    // Separation time by linear interpolation of the indentation's zero
+    // crossing (second-order accurate).
+    const bool now_in_contact = (contact.alpha > 0.);
+    if (in_contact && !now_in_contact && !separated_once)
+      {
+        separated_once = true;
+        impact_results.contact_duration =
+          t - dt + dt * last_alpha / (last_alpha - contact.alpha);
+      }
+    if (!in_contact && now_in_contact)
+      ++impact_results.n_impacts;
+    in_contact = now_in_contact;
+  }
+
+
+
+  void
+  ImpactMonitor::update_extremes(const double t, const HistorySample &sample)
+  {
+    ImpactResults &r = impact_results;
+    const double   F = sample.contact->force;
+    r.max_energy_drift =
+      std::max(r.max_energy_drift, std::abs(sample.E_total - E0) / E0);
+    // Peak force: the parabola through the largest sample and its two
+    // neighbours (second-order accurate in dt, unlike the largest sample,
+    // whose error depends on where the samples fall).
+    if (F > r.max_sampled_force)
+      {
+        r.max_sampled_force  = F;
+        r.peak_contact_force = F;
+        r.time_of_peak_force = t;
+        peak_left            = last_force;
+        peak_pending         = true;
+      }
+    else if (peak_pending)
+      {
+        const double Fm = r.max_sampled_force;
+        const double d  = peak_left - 2. * Fm + F;
+        if (d < 0.)
+          {
+            r.peak_contact_force =
+              Fm - (peak_left - F) * (peak_left - F) / (8. * d);
+            r.time_of_peak_force = t - dt + dt * (peak_left - F) / (2. * d);
+          }
+        peak_pending = false;
+      }
+    r.max_indentation = std::max(r.max_indentation, sample.contact->alpha);
+    r.max_midplane_deflection = std::max(r.max_midplane_deflection, sample.W_mid);
+    r.max_top_deflection      = std::max(r.max_top_deflection, sample.W_top);
+    r.max_newton_iterations =
+      std::max(r.max_newton_iterations, sample.contact->newton_iterations);
+  }
+
+
+
+  void
+  ImpactMonitor::write_outputs(const unsigned int   step,
+                               const double         t,
+                               const TimeStepper   &stepper,
+                               const HistorySample &sample)
+  {
+    std::vector<double> row;
+    row.reserve(history_columns().size());
+    for (const auto &column : history_columns())
+      row.push_back(column.value(sample));
+    if (history)
+      history->write_row(row);
+    for (const auto &observer : observers)
+      observer(row);
+
+    if (vtu && step % parameters.vtu_interval == 0)
+      {
+        output_timer.start();
+        vtu->write(step, t, stepper.displacement(), stepper.velocity());
+        output_timer.stop();
+      }
+    if (parameters.log_interval > 0 &&
+        (step % parameters.log_interval == 0 || step == n_steps))
+      {
+        char line[200];
+        std::snprintf(line,
+                      sizeof(line),
+                      "  step %6u  t = %9.3f us  F = %10.3f N  alpha = "
+                      "%8.4f um  W_mid = %8.4f um  E/E0 - 1 = %+.2e\n",
+                      step,
+                      t * 1e6,
+                      sample.contact->force,
+                      sample.contact->alpha * 1e6,
+                      sample.W_mid * 1e6,
+                      sample.E_total / E0 - 1.);
+        pcout << line;
+      }
+  }
+
+
+
+  void
+  ImpactMonitor::close_output()
+  {
+    if (vtu)
+      {
+        output_timer.start();
+        vtu->finish();
+        output_timer.stop();
+      }
+  }
+
+
+
+  void
+  ImpactMonitor::finish(const ImpactorState &ball,
+                        const double         loop_time,
+                        const double         wall_time)
+  {
+    ImpactResults &r = impact_results;
+    r.n_time_steps   = n_steps;
+    r.departure_velocity =
+      in_contact ? std::numeric_limits<double>::quiet_NaN() : -ball.v;
+    // int F dt = m (V0 + V_departure), with the ball's current velocity.
+    r.impulse_identity_error =
+      std::abs(r.impulse - m_i * (V0 - ball.v)) / (m_i * V0);
+
+    if (in_contact || !separated_once)
+      pcout << "  WARNING: the impactor is still in contact at the end time; "
+               "contact_duration and departure_velocity are not defined "
+               "(raise Time integration/End time).\n";
+    if (r.n_impacts > 1)
+      pcout << "  note: the impactor struck the plate " << r.n_impacts
+            << " times.\n";
+
+    r.output_time    = output_timer.wall_time();
+    r.time_loop_time = loop_time - r.output_time;
+    r.wall_time      = wall_time;
+
+    write_summary();
+    print_results();
+  }
+
+
+
+  void
+  ImpactMonitor::print_results() const
+  {
+    const ImpactResults &r = impact_results;
+    char                 line[400];
+    std::snprintf(line,
+                  sizeof(line),
+                  "  peak force %.3f N at %.3f us; contact %.3f us; departure "
+                  "velocity %.6f m/s\n"
+                  "  max indentation %.4f um, mid-plane deflection %.4f um, "
+                  "top deflection %.4f um\n"
+                  "  energy drift %.3e\n",
+                  r.peak_contact_force,
+                  r.time_of_peak_force * 1e6,
+                  r.contact_duration * 1e6,
+                  r.departure_velocity,
+                  r.max_indentation * 1e6,
+                  r.max_midplane_deflection * 1e6,
+                  r.max_top_deflection * 1e6,
+                  r.max_energy_drift);
+    pcout << line;
+    if (r.linear_iterations > 0)
+      pcout << "  linear solver: " << r.linear_iterations
+            << " iterations in all, at most " << r.max_linear_iterations
+            << " in one step\n";
+    if (parameters.print_timing)
+      pcout << "  wall time " << r.wall_time << " s (setup " << r.setup_time
+            << " s, factorization " << r.factorization_time
+            << " s, time loop " << r.time_loop_time << " s = "
+            << 1e3 * r.time_loop_time / std::max(n_steps, 1u)
+            << " ms per step, output " << r.output_time << " s)\n";
+  }
+
+
+
+  void
+  ImpactMonitor::write_summary() const
+  {
+    if (!root)
+      return;
+    const ImpactResults &r = impact_results;
+    SummaryWriter        out;
+    out.add("peak_contact_force_N", r.peak_contact_force, 4);
+    out.add("max_sampled_contact_force_N", r.max_sampled_force, 4);
+    out.add("time_of_peak_force_us", r.time_of_peak_force * 1e6, 4);
+    out.add("contact_duration_us", r.contact_duration * 1e6, 4);
+    out.add("departure_velocity_m_s", r.departure_velocity, 7);
+    out.add("max_indentation_um", r.max_indentation * 1e6, 5);
+    out.add("max_midplane_deflection_um", r.max_midplane_deflection * 1e6, 5);
+    out.add("max_top_deflection_um", r.max_top_deflection * 1e6, 5);
+    out.add_scientific("contact_stiffness_Kh_N_m1.5", r.contact_stiffness);
+    out.add_scientific("contact_modulus_Q_Pa", r.contact_modulus);
+    out.add("impactor_mass_kg", r.impactor_mass, 8);
+    out.add("plate_mass_kg", r.plate_mass, 8);
+    out.add("impulse_N_s", r.impulse, 9);
+    out.add("contact_node_offset_mm", r.contact_node_offset * 1e3, 6);
+    out.add("n_impacts", r.n_impacts, 0);
+    out.add("n_dofs", r.n_dofs, 0);
+    out.add("n_mpi_ranks", r.n_mpi_ranks, 0);
+    out.add("n_time_steps", r.n_time_steps, 0);
+    out.add("max_newton_iterations", r.max_newton_iterations, 0);
+    out.add("linear_solver_iterations", r.linear_iterations, 0);
+    out.add("max_linear_solver_iterations", r.max_linear_iterations, 0);
+    out.add_scientific("max_relative_energy_drift", r.max_energy_drift);
+    out.add_scientific("impulse_identity_error", r.impulse_identity_error);
+    out.add("setup_s", r.setup_time, 3);
+    out.add("factorization_s", r.factorization_time, 3);
+    out.add("time_loop_s", r.time_loop_time, 3);
+    out.add("time_per_step_ms", 1e3 * r.time_loop_time / r.n_time_steps, 4);
+    out.add("output_s", r.output_time, 3);
+    if (parameters.instrumentation)
+      {
+        out.add("spmv_ms", 1e3 * r.spmv_time, 4);
+        out.add("solve_ms", 1e3 * r.solve_time, 4);
+      }
+    out.add("wall_time_s", r.wall_time, 3);
+    out.write(parameters.directory + "/summary.txt");
+  }
+} // namespace fgimpact
