@@ -14,9 +14,62 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace fgimpact_tests
 {
+  /// What a quiet run returns: the results, and the rows of history.csv
+  /// (its columns and units, before rounding) if asked for.
+  struct RunOutput
+  {
+    fgimpact::ImpactResults          results;
+    std::vector<std::vector<double>> history;
+  };
+
+  /**
+   * Run the program through the library exactly as the executable does:
+   * the defaults, then the file `prm_file` (if not empty), then the .prm
+   * text `settings`; the log is kept out of the test output.
+   */
+  inline RunOutput
+  run_quietly(const std::string &prm_file,
+              const std::string &settings,
+              const MPI_Comm     communicator = MPI_COMM_WORLD,
+              const bool         keep_history = false)
+  {
+    dealii::ParameterHandler prm;
+    fgimpact::Parameters::declare_parameters(prm);
+    if (!prm_file.empty())
+      prm.parse_input(prm_file);
+    prm.parse_input_from_string(settings);
+    fgimpact::Parameters p;
+    p.parse_parameters(prm);
+    p.validate();
+    std::filesystem::create_directories(p.output.directory);
+
+    RunOutput          output;
+    std::ostringstream log;
+    auto *const        old = std::cout.rdbuf(log.rdbuf());
+    try
+      {
+        fgimpact::Simulator simulator(p, communicator);
+        if (keep_history)
+          simulator.add_history_observer(
+            [&output](const std::vector<double> &row) {
+              output.history.push_back(row);
+            });
+        simulator.run();
+        std::cout.rdbuf(old);
+        output.results = simulator.get_results();
+        return output;
+      }
+    catch (...)
+      {
+        std::cout.rdbuf(old);
+        throw;
+      }
+  }
+
   /**
    * Run the impact defined by `settings` (.prm text) on top of the
    * defaults, a 10 x 6 x 2 mesh (later entries in `settings` override it)
@@ -25,33 +78,14 @@ namespace fgimpact_tests
   inline fgimpact::ImpactResults
   run_impact(const std::string &settings)
   {
-    dealii::ParameterHandler prm;
-    fgimpact::ImpactSimulator::Parameters::declare_parameters(prm);
-    prm.parse_input_from_string(
-      "subsection Geometry\n set Subdivisions x = 10\n set Subdivisions y = 6\n"
-      " set Subdivisions z = 2\nend\n"
-      "subsection Output\n set Directory = out\n set Log interval = 0\n"
-      " set Print timing = false\nend\n" +
-      settings);
-    fgimpact::ImpactSimulator::Parameters p;
-    p.parse_parameters(prm);
-    p.validate();
-    std::filesystem::create_directories(p.output_directory);
-
-    std::ostringstream log;
-    auto *const        old = std::cout.rdbuf(log.rdbuf());
-    try
-      {
-        fgimpact::ImpactSimulator simulator(p, MPI_COMM_WORLD);
-        simulator.run();
-        std::cout.rdbuf(old);
-        return simulator.get_results();
-      }
-    catch (...)
-      {
-        std::cout.rdbuf(old);
-        throw;
-      }
+    return run_quietly(
+             "",
+             "subsection Geometry\n set Subdivisions x = 10\n"
+             " set Subdivisions y = 6\n set Subdivisions z = 2\nend\n"
+             "subsection Output\n set Directory = out\n set Log interval = 0\n"
+             " set Print timing = false\nend\n" +
+               settings)
+      .results;
   }
 
 

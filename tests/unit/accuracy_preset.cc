@@ -36,14 +36,14 @@ namespace
   parse(const std::string &settings)
   {
     ParameterHandler prm;
-    ImpactSimulator::Parameters::declare_parameters(prm);
+    fgimpact::Parameters::declare_parameters(prm);
     // A file that asks for another mesh and time step: the preset wins.
     prm.parse_input_from_string(
       "subsection Geometry\n set Subdivisions x = 10\n set Subdivisions y = "
       "6\n set Subdivisions z = 2\nend\nsubsection Time integration\n set "
       "Time step = 5e-6\nend\n" +
       settings);
-    ImpactSimulator::Parameters p;
+    fgimpact::Parameters p;
     p.parse_parameters(prm);
     Effective e{p.geometry.subdivisions_x,
                 p.geometry.subdivisions_y,

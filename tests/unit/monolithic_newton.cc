@@ -40,23 +40,24 @@ main(int argc, char **argv)
                    material,
                    MPI_COMM_WORLD);
   plate.setup();
-  const auto contact_dof =
-    plate.nearest_top_vertex_dof(impactor.impact_point(0.2, 0.1), 2).first;
+  const HertzNodeContact contact_model(law,
+                                       plate,
+                                       impactor.impact_point(0.2, 0.1));
+  const auto             contact_dof = contact_model.contact_dofs()[0];
   const double m = impactor.mass();
 
-  NewmarkIntegrator::Parameters np;
-  np.time_step = 2e-6;
-  const NewmarkIntegrator newmark(np);
+  TimeStepper::Parameters tp;
+  tp.time_step          = 2e-6;
+  tp.newton.tolerance   = 1e-14;
+  const NewmarkIntegrator newmark(tp.newmark, tp.time_step);
   const double            a0 = newmark.mass_factor();
 
   // The library's eliminated stepper.
-  TimeStepper::Parameters tp;
-  tp.newton_tolerance = 1e-14;
   EffectiveMatrixSolver::Parameters sp;
   sp.type      = "cholmod";
-  auto stepper = create_time_stepper(
-    tp, np, sp, plate, law, contact_dof, m, ip.initial_velocity);
-  stepper->initialize();
+  auto stepper =
+    create_time_stepper(tp, sp, plate, contact_model, m, ip.initial_velocity);
+  stepper->initialize(false);
   ImpactorState ball;
   ball.v = ip.initial_velocity;
   ContactState contact;
@@ -137,7 +138,7 @@ main(int argc, char **argv)
       const double F_mono = law.force(w + u(contact_dof));
 
       // The eliminated stepper.
-      stepper->advance(step, step * np.time_step, ball, contact);
+      stepper->advance(step, step * tp.time_step, ball, contact);
       const auto &u_elim = stepper->displacement();
       double      diff = 0, scale = 0;
       for (unsigned int i = 0; i < n; ++i)

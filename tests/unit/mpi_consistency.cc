@@ -43,25 +43,15 @@ namespace
                     const std::string &directory,
                     const MPI_Comm     communicator)
   {
-    ParameterHandler prm;
-    ImpactSimulator::Parameters::declare_parameters(prm);
-    prm.parse_input(std::string(FGIMPACT_SOURCE_DIR) + "/prm/default.prm");
-    prm.parse_input_from_string(
+    const auto output = fgimpact_tests::run_quietly(
+      std::string(FGIMPACT_SOURCE_DIR) + "/prm/default.prm",
       "subsection Output\n set Directory = " + directory +
-      "\n set VTU interval = 0\n"
-      " set Log interval = 0\nend\n" +
-      overrides);
-    ImpactSimulator::Parameters p;
-    p.parse_parameters(prm);
-    p.validate();
-    std::filesystem::create_directories(p.output_directory);
-
-    std::ostringstream log;
-    auto *const        old = std::cout.rdbuf(log.rdbuf());
-    ImpactSimulator    simulator(p, communicator);
-    simulator.run();
-    std::cout.rdbuf(old);
-    return {simulator.get_results(), simulator.get_history()};
+        "\n set VTU interval = 0\n"
+        " set Log interval = 0\nend\n" +
+        overrides,
+      communicator,
+      /*keep_history=*/true);
+    return {output.results, output.history};
   }
 
   /// Largest difference of any column, relative to the column's largest

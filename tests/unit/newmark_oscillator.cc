@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <fgimpact/newmark.h>
+#include <fgimpact/time_stepper.h>
 
 #include <cmath>
 #include <cstdio>
@@ -32,14 +33,13 @@ namespace
   double
   run(const double dt, const double T)
   {
-    NewmarkIntegrator::Parameters p;
-    p.time_step = dt;
-    p.end_time  = T;
-    const NewmarkIntegrator newmark(p);
+    const NewmarkIntegrator newmark(NewmarkIntegrator::Parameters(), dt);
+    TimeStepper::Parameters time_control;
+    time_control.end_time = T;
     double                  u = u0, v = v0,
            a         = (0. - k * u0) / m; // a(0) from the equation, f(0) = 0
     double max_error = 0;
-    for (unsigned int n = 1; n <= newmark.n_steps(); ++n)
+    for (unsigned int n = 1; n <= time_control.n_steps(dt); ++n)
       {
         const double t = n * dt;
         const double u_new =
@@ -79,9 +79,7 @@ main()
   std::printf("second order: %s\n", ok ? "yes" : "NO");
 
   // Vector version against the scalar one on two uncoupled oscillators.
-  NewmarkIntegrator::Parameters p;
-  p.time_step = 1e-3;
-  const NewmarkIntegrator newmark(p);
+  const NewmarkIntegrator newmark(NewmarkIntegrator::Parameters(), 1e-3);
   dealii::Vector<double>  u(2), v(2), a(2), r(2), u_new(2);
   double us[2] = {1., -2.}, vs[2] = {0.5, 3.}, as[2] = {-4., 1.};
   for (unsigned int i = 0; i < 2; ++i)

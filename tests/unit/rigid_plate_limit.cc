@@ -10,6 +10,8 @@
 
 #include <fgimpact/simulator.h>
 
+#include <test_tools.h>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -36,9 +38,8 @@ main(int argc, char **argv)
   char K_string[64];
   std::snprintf(K_string, sizeof(K_string), "%.17g", K);
 
-  ParameterHandler prm;
-  ImpactSimulator::Parameters::declare_parameters(prm);
-  prm.parse_input_from_string(
+  const ImpactResults r = fgimpact_tests::run_quietly(
+    "",
     std::string("subsection Geometry\n set Subdivisions x = 10\n"
                 " set Subdivisions y = 6\n set Subdivisions z = 2\nend\n"
                 "subsection Material\n set Metal Young's modulus = 70e12\n"
@@ -50,16 +51,7 @@ main(int argc, char **argv)
     "subsection Time integration\n set Time step = 0.5e-6\n set End time = 200e-6\nend\n"
     "subsection Newton\n set Tolerance = 1e-12\nend\n"
     "subsection Output\n set Directory = out\n set Log interval = 0\n"
-    " set Print timing = false\nend\n");
-  ImpactSimulator::Parameters p;
-  p.parse_parameters(prm);
-  std::filesystem::create_directories(p.output_directory);
-  std::ostringstream log;
-  auto              *old = std::cout.rdbuf(log.rdbuf());
-  ImpactSimulator    simulator(p, MPI_COMM_WORLD);
-  simulator.run();
-  std::cout.rdbuf(old);
-  const ImpactResults &r = simulator.get_results();
+    " set Print timing = false\nend\n").results;
 
   bool ok    = true;
   auto check = [&](const char *what, const double value, const double exact) {
