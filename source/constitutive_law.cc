@@ -97,8 +97,8 @@ namespace fgimpact
     // Eq. 3.3 at the unit point of p (the brick's affine map).
     Point<3> unit;
     for (unsigned int d = 0; d < 3; ++d)
-      unit[d] = (p[d] - cell->vertex(0)[d]) /
-                (cell->vertex(7)[d] - cell->vertex(0)[d]);
+      unit[d] =
+        (p[d] - cell->vertex(0)[d]) / (cell->vertex(7)[d] - cell->vertex(0)[d]);
     double E = 0, rho = 0;
     for (unsigned int k = 0; k < unit_support_z.size(); ++k)
       {

@@ -50,8 +50,8 @@ namespace fgimpact
     : law(law)
   {
     const auto [dof, vertex] = plate.nearest_top_vertex_dof(impact_point, 2);
-    dofs = {dof};
-    node = vertex;
+    dofs                     = {dof};
+    node                     = vertex;
     // Only the owner knows for sure whether the DoF is constrained.
     const bool constrained =
       Utilities::MPI::max((plate.locally_owned_dofs().is_element(dof) &&

@@ -9,8 +9,7 @@ namespace fgimpact
     , plate(plate)
     , total_timer(total_timer)
     , pcout(std::cout,
-            Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) ==
-              0)
+            Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
     , impactor(parameters.impactor)
     , contact_law(parameters.contact, plate.get_material(), impactor)
   {}
@@ -31,9 +30,9 @@ namespace fgimpact
     if (!contact->warning().empty())
       pcout << "  " << contact->warning() << '\n';
 
-    results.n_dofs        = plate.n_dofs();
-    results.n_mpi_ranks   = Utilities::MPI::n_mpi_processes(
-      plate.get_mpi_communicator());
+    results.n_dofs = plate.n_dofs();
+    results.n_mpi_ranks =
+      Utilities::MPI::n_mpi_processes(plate.get_mpi_communicator());
     results.impactor_mass = impactor.mass();
     results.plate_mass    = plate.total_mass();
     contact->fill_results(results);

@@ -78,6 +78,54 @@ namespace
     }
     fs::remove(probe, error);
   }
+  /**
+   * The options and the parameter file's name.  Returns the exit code if
+   * the program is done (help, parameters printed, a bad option), -1 to
+   * run.
+   */
+  int
+  parse_command_line(const int    argc,
+                     char        *argv[],
+                     const bool   root,
+                     std::string &prm_file)
+  {
+    using namespace dealii;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "-h" || arg == "--help")
+          {
+            if (root)
+              std::cout << usage;
+            return 0;
+          }
+        else if (arg == "-p" || arg == "--print-parameters")
+          {
+            ParameterHandler prm;
+            fgimpact::Parameters::declare_parameters(prm);
+            if (root)
+              prm.print_parameters(std::cout, ParameterHandler::PRM);
+            return 0;
+          }
+        else if (!arg.empty() && arg[0] == '-')
+          {
+            if (root)
+              std::cerr << "fgimpact: error: unknown option '" << arg
+                        << "' (see fgimpact --help)\n";
+            return 1;
+          }
+        else if (prm_file.empty())
+          prm_file = arg;
+        else
+          {
+            if (root)
+              std::cerr
+                << "fgimpact: error: more than one parameter file given\n";
+            return 1;
+          }
+      }
+    return -1;
+  }
 } // namespace
 
 
@@ -92,43 +140,12 @@ main(int argc, char *argv[])
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
 
   std::string prm_file;
-  for (int i = 1; i < argc; ++i)
-    {
-      const std::string arg = argv[i];
-      if (arg == "-h" || arg == "--help")
-        {
-          if (root)
-            std::cout << usage;
-          return 0;
-        }
-      else if (arg == "-p" || arg == "--print-parameters")
-        {
-          ParameterHandler prm;
-          Parameters::declare_parameters(prm);
-          if (root)
-            prm.print_parameters(std::cout, ParameterHandler::PRM);
-          return 0;
-        }
-      else if (!arg.empty() && arg[0] == '-')
-        {
-          if (root)
-            std::cerr << "fgimpact: error: unknown option '" << arg
-                      << "' (see fgimpact --help)\n";
-          return 1;
-        }
-      else if (prm_file.empty())
-        prm_file = arg;
-      else
-        {
-          if (root)
-            std::cerr
-              << "fgimpact: error: more than one parameter file given\n";
-          return 1;
-        }
-    }
+  const int   exit_code = parse_command_line(argc, argv, root, prm_file);
+  if (exit_code >= 0)
+    return exit_code;
 
-  ParameterHandler            prm;
-  fgimpact::Parameters        parameters;
+  ParameterHandler     prm;
+  fgimpact::Parameters parameters;
   // Input errors: everything is checked before any file is written.
   try
     {

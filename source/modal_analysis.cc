@@ -66,6 +66,75 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// mask = 1 at the unconstrained DoFs, w_mask = 1 at the unconstrained
+    /// z components (for the share of kinetic energy in w).
+    void
+    make_masks(const PlateModel              &plate,
+               TrilinosWrappers::MPI::Vector &mask,
+               TrilinosWrappers::MPI::Vector &w_mask)
+    {
+      const auto                          &fe = plate.get_fe();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < dofs.size(); ++i)
+              if (plate.locally_owned_dofs().is_element(dofs[i]) &&
+                  !plate.get_constraints().is_constrained(dofs[i]))
+                {
+                  mask(dofs[i]) = 1.;
+                  w_mask(dofs[i]) =
+                    (fe.system_to_component_index(i).first == 2 ? 1. : 0.);
+                }
+          }
+      mask.compress(VectorOperation::insert);
+      w_mask.compress(VectorOperation::insert);
+    }
+
+
+
+    /// Rayleigh-Ritz on the block Y: (Y^T K Y) q = lambda (Y^T M Y) q,
+    /// X = Y Q (M-orthonormal Ritz vectors, ascending lambda); tmp and Mx
+    /// are scratch vectors.
+    void
+    rayleigh_ritz(const TrilinosWrappers::SparseMatrix             &K,
+                  const TrilinosWrappers::SparseMatrix             &M,
+                  const std::vector<TrilinosWrappers::MPI::Vector> &Y,
+                  TrilinosWrappers::MPI::Vector                    &tmp,
+                  TrilinosWrappers::MPI::Vector                    &Mx,
+                  std::vector<double>                              &lambda,
+                  std::vector<TrilinosWrappers::MPI::Vector>       &X)
+    {
+      const unsigned int       p = Y.size();
+      LAPACKFullMatrix<double> Kr(p, p), Mr(p, p);
+      for (unsigned int j = 0; j < p; ++j)
+        {
+          K.vmult(tmp, Y[j]);
+          M.vmult(Mx, Y[j]);
+          for (unsigned int i = 0; i <= j; ++i)
+            {
+              Kr(i, j) = Kr(j, i) = Y[i] * tmp;
+              Mr(i, j) = Mr(j, i) = Y[i] * Mx;
+            }
+        }
+      std::vector<Vector<double>> q(p, Vector<double>(p));
+      Kr.compute_generalized_eigenvalues_symmetric(Mr, q);
+      for (unsigned int j = 0; j < p; ++j)
+        lambda[j] = Kr.eigenvalue(j).real();
+      for (unsigned int j = 0; j < p; ++j)
+        {
+          X[j] = 0.;
+          for (unsigned int i = 0; i < p; ++i)
+            X[j].add(q[j](i), Y[i]);
+        }
+    }
+  } // namespace
+
+
+
   void
   ModalAnalysis::solve()
   {
@@ -88,23 +157,7 @@ namespace fgimpact
     TrilinosWrappers::MPI::Vector mask, w_mask, tmp, Mx;
     for (auto *v : {&mask, &w_mask, &tmp, &Mx})
       plate.initialize_vector(*v);
-    const auto                          &fe = plate.get_fe();
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(dofs);
-          for (unsigned int i = 0; i < dofs.size(); ++i)
-            if (plate.locally_owned_dofs().is_element(dofs[i]) &&
-                !plate.get_constraints().is_constrained(dofs[i]))
-              {
-                mask(dofs[i]) = 1.;
-                w_mask(dofs[i]) =
-                  (fe.system_to_component_index(i).first == 2 ? 1. : 0.);
-              }
-        }
-    mask.compress(VectorOperation::insert);
-    w_mask.compress(VectorOperation::insert);
+    make_masks(plate, mask, w_mask);
 
     // Start block: deterministic, all length scales present.
     std::vector<TrilinosWrappers::MPI::Vector> X(p), Y(p);
@@ -130,29 +183,7 @@ namespace fgimpact
             solver.solve(Y[j], Mx);
             Y[j].scale(mask);
           }
-        // Rayleigh-Ritz: (Y^T K Y) q = lambda (Y^T M Y) q.
-        LAPACKFullMatrix<double> Kr(p, p), Mr(p, p);
-        for (unsigned int j = 0; j < p; ++j)
-          {
-            K.vmult(tmp, Y[j]);
-            M.vmult(Mx, Y[j]);
-            for (unsigned int i = 0; i <= j; ++i)
-              {
-                Kr(i, j) = Kr(j, i) = Y[i] * tmp;
-                Mr(i, j) = Mr(j, i) = Y[i] * Mx;
-              }
-          }
-        std::vector<Vector<double>> q(p, Vector<double>(p));
-        Kr.compute_generalized_eigenvalues_symmetric(Mr, q);
-        for (unsigned int j = 0; j < p; ++j)
-          lambda[j] = Kr.eigenvalue(j).real();
-        // X = Y Q (M-orthonormal Ritz vectors, ascending lambda).
-        for (unsigned int j = 0; j < p; ++j)
-          {
-            X[j] = 0.;
-            for (unsigned int i = 0; i < p; ++i)
-              X[j].add(q[j](i), Y[i]);
-          }
+        rayleigh_ritz(K, M, Y, tmp, Mx, lambda, X);
 
         bool converged = iterations > 1;
         for (unsigned int j = 0; j < n; ++j)

@@ -69,34 +69,46 @@ namespace fgimpact
     // direction (-z); stresses at the mid-plane centre.
     static const std::vector<HistoryColumn> columns = {
       {"t_us", 4, [](const HistorySample &s) { return s.t * 1e6; }},
-      {"contact_force_N", 4,
+      {"contact_force_N",
+       4,
        [](const HistorySample &s) { return s.contact->force; }},
-      {"indentation_um", 5,
+      {"indentation_um",
+       5,
        [](const HistorySample &s) { return s.contact->alpha * 1e6; }},
-      {"impactor_displacement_um", 5,
+      {"impactor_displacement_um",
+       5,
        [](const HistorySample &s) { return s.ball->w * 1e6; }},
-      {"impactor_velocity_m_s", 7,
+      {"impactor_velocity_m_s",
+       7,
        [](const HistorySample &s) { return s.ball->v; }},
-      {"midplane_deflection_um", 5,
+      {"midplane_deflection_um",
+       5,
        [](const HistorySample &s) { return s.W_mid * 1e6; }},
-      {"top_deflection_um", 5,
+      {"top_deflection_um",
+       5,
        [](const HistorySample &s) { return s.W_top * 1e6; }},
-      {"sigma_xx_mid_MPa", 5,
+      {"sigma_xx_mid_MPa",
+       5,
        [](const HistorySample &s) { return s.sigma_mid[0][0] * 1e-6; }},
-      {"sigma_yy_mid_MPa", 5,
+      {"sigma_yy_mid_MPa",
+       5,
        [](const HistorySample &s) { return s.sigma_mid[1][1] * 1e-6; }},
-      {"sigma_zz_mid_MPa", 5,
+      {"sigma_zz_mid_MPa",
+       5,
        [](const HistorySample &s) { return s.sigma_mid[2][2] * 1e-6; }},
-      {"energy_impactor_J", 9,
+      {"energy_impactor_J",
+       9,
        [](const HistorySample &s) { return s.E_impactor; }},
-      {"energy_plate_kinetic_J", 9,
+      {"energy_plate_kinetic_J",
+       9,
        [](const HistorySample &s) { return s.E_kinetic; }},
-      {"energy_strain_J", 9,
-       [](const HistorySample &s) { return s.E_strain; }},
-      {"energy_contact_J", 9,
+      {"energy_strain_J", 9, [](const HistorySample &s) { return s.E_strain; }},
+      {"energy_contact_J",
+       9,
        [](const HistorySample &s) { return s.E_contact; }},
       {"energy_total_J", 9, [](const HistorySample &s) { return s.E_total; }},
-      {"contact_node_deflection_um", 5,
+      {"contact_node_deflection_um",
+       5,
        [](const HistorySample &s) {
          return -s.contact->node_displacement * 1e6;
        }},
@@ -123,13 +135,12 @@ namespace fgimpact
     , E0(0.5 * impactor_mass * impact_velocity * impact_velocity)
     , dt(dt)
     , n_steps(n_steps)
-    , root(Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) ==
-           0)
+    , root(Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
     , pcout(std::cout, root)
     , impact_results(results)
     , mid_probe(plate,
-                plate.get_geometry().centre(
-                  plate.get_geometry().thickness() / 2))
+                plate.get_geometry().centre(plate.get_geometry().thickness() /
+                                            2))
     , top_probe(plate,
                 plate.get_geometry().centre(plate.get_geometry().thickness()))
   {
@@ -139,11 +150,11 @@ namespace fgimpact
     impact_results.peak_contact_force = impact_results.max_sampled_force = 0;
     impact_results.time_of_peak_force = impact_results.impulse = 0;
     impact_results.max_indentation = impact_results.max_energy_drift = 0;
-    impact_results.max_midplane_deflection = 0;
-    impact_results.max_top_deflection      = 0;
-    impact_results.max_newton_iterations   = 0;
-    impact_results.linear_iterations       = 0;
-    impact_results.max_linear_iterations   = 0;
+    impact_results.max_midplane_deflection                           = 0;
+    impact_results.max_top_deflection                                = 0;
+    impact_results.max_newton_iterations                             = 0;
+    impact_results.linear_iterations                                 = 0;
+    impact_results.max_linear_iterations                             = 0;
     impact_results.contact_duration = std::numeric_limits<double>::quiet_NaN();
     impact_results.n_impacts        = 1;
     if (root)
@@ -151,9 +162,9 @@ namespace fgimpact
         std::vector<std::pair<std::string, int>> header;
         for (const auto &column : history_columns())
           header.emplace_back(column.name, column.decimals);
-        history = std::make_unique<CsvWriter>(parameters.directory +
-                                                "/history.csv",
-                                              header);
+        history =
+          std::make_unique<CsvWriter>(parameters.directory + "/history.csv",
+                                      header);
       }
     if (parameters.vtu_interval > 0)
       vtu = std::make_unique<VtuWriter>(plate, parameters.directory);
@@ -184,7 +195,7 @@ namespace fgimpact
         update_episodes(t, contact);
       }
 
-    const auto    &u = stepper.displacement();
+    const auto   &u = stepper.displacement();
     HistorySample sample;
     sample.t          = t;
     sample.ball       = &ball;
@@ -196,8 +207,8 @@ namespace fgimpact
     sample.E_kinetic  = stepper.kinetic_energy();
     sample.E_strain   = stepper.strain_energy();
     sample.E_contact  = contact_model.potential(contact);
-    sample.E_total    = sample.E_impactor + sample.E_kinetic +
-                     sample.E_strain + sample.E_contact;
+    sample.E_total =
+      sample.E_impactor + sample.E_kinetic + sample.E_strain + sample.E_contact;
 
     update_extremes(t, sample);
     impact_results.linear_iterations += stepper.linear_iterations();
@@ -261,8 +272,9 @@ namespace fgimpact
         peak_pending = false;
       }
     r.max_indentation = std::max(r.max_indentation, sample.contact->alpha);
-    r.max_midplane_deflection = std::max(r.max_midplane_deflection, sample.W_mid);
-    r.max_top_deflection      = std::max(r.max_top_deflection, sample.W_top);
+    r.max_midplane_deflection =
+      std::max(r.max_midplane_deflection, sample.W_mid);
+    r.max_top_deflection = std::max(r.max_top_deflection, sample.W_top);
     r.max_newton_iterations =
       std::max(r.max_newton_iterations, sample.contact->newton_iterations);
   }
@@ -381,9 +393,9 @@ namespace fgimpact
             << " in one step\n";
     if (parameters.print_timing)
       pcout << "  wall time " << r.wall_time << " s (setup " << r.setup_time
-            << " s, factorization " << r.factorization_time
-            << " s, time loop " << r.time_loop_time << " s = "
-            << 1e3 * r.time_loop_time / std::max(n_steps, 1u)
+            << " s, factorization " << r.factorization_time << " s, time loop "
+            << r.time_loop_time
+            << " s = " << 1e3 * r.time_loop_time / std::max(n_steps, 1u)
             << " ms per step, output " << r.output_time << " s)\n";
   }
 

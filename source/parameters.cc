@@ -35,9 +35,9 @@ namespace fgimpact
   Parameters::parse_parameters(ParameterHandler &prm)
   {
     const std::string type = prm.get("Problem type");
-    problem_type = (type == "static" ? ProblemType::static_load :
-                    type == "modal"  ? ProblemType::modal :
-                                       ProblemType::impact);
+    problem_type           = (type == "static" ? ProblemType::static_load :
+                              type == "modal"  ? ProblemType::modal :
+                                                 ProblemType::impact);
     // First, explicitly: a preset rewrites Geometry/Subdivisions and Time
     // integration/Time step in prm (so parameters.prm shows them).
     accuracy.apply(prm);

@@ -264,9 +264,8 @@ namespace fgimpact
 
 
   Vector<double>
-  PlateModel::dof_values(
-    const TrilinosWrappers::MPI::Vector        &v,
-    const std::vector<types::global_dof_index> &dofs) const
+  PlateModel::dof_values(const TrilinosWrappers::MPI::Vector        &v,
+                         const std::vector<types::global_dof_index> &dofs) const
   {
     Vector<double> local(dofs.size()), global(dofs.size());
     for (unsigned int j = 0; j < dofs.size(); ++j)

@@ -59,7 +59,8 @@ namespace fgimpact
     const auto cell = inputs.template get_cell<3>();
     for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
       {
-        const auto [E, rho] = properties.value_at(cell, inputs.evaluation_points[p]);
+        const auto [E, rho] =
+          properties.value_at(cell, inputs.evaluation_points[p]);
 
         SymmetricTensor<2, 3> eps;
         for (unsigned int a = 0; a < 3; ++a)
@@ -67,7 +68,7 @@ namespace fgimpact
             eps[a][b] = 0.5 * (inputs.solution_gradients[p][a][b] +
                                inputs.solution_gradients[p][b][a]);
         const SymmetricTensor<2, 3> sigma = hooke.stress(E, eps);
-        const SymmetricTensor<2, 3> s = deviator(sigma);
+        const SymmetricTensor<2, 3> s     = deviator(sigma);
 
         for (unsigned int a = 0; a < 3; ++a)
           for (unsigned int b = 0; b < 3; ++b)

@@ -47,7 +47,7 @@ namespace fgimpact
                 ExcMessage("A probe point lies outside the plate."));
 
     const HookeLaw hooke(plate.get_material());
-    const double w            = 1. / n_adjacent_cells;
+    const double   w = 1. / n_adjacent_cells;
 
     // The weights of the 3 displacement and 6 stress components, summed
     // into distributed vectors so that each ends up on the rank that owns

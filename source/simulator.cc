@@ -8,23 +8,40 @@ namespace fgimpact
 {
   namespace
   {
-    /// Problem type = static: K u = f, deflections and stresses.
-    class StaticDriver : public ProblemDriver
+    /// The static and modal drivers: nothing to set up beyond the plate.
+    class LinearProblemDriver : public ProblemDriver
     {
     public:
-      StaticDriver(const Parameters &parameters, const PlateModel &plate)
+      LinearProblemDriver(const Parameters &parameters, const PlateModel &plate)
         : parameters(parameters)
         , plate(plate)
+        , pcout(std::cout,
+                Utilities::MPI::this_mpi_process(
+                  plate.get_mpi_communicator()) == 0)
       {}
 
       void
       setup() override
       {}
 
+    protected:
+      const Parameters  &parameters;
+      const PlateModel  &plate;
+      ConditionalOStream pcout;
+    };
+
+
+
+    /// Problem type = static: K u = f, deflections and stresses.
+    class StaticDriver : public LinearProblemDriver
+    {
+    public:
+      using LinearProblemDriver::LinearProblemDriver;
+
       void
       run() override
       {
-        const Impactor      impactor(parameters.impactor);
+        const Impactor       impactor(parameters.impactor);
         const PlateGeometry &g = plate.get_geometry();
         StaticAnalysis       analysis(parameters.static_analysis,
                                 parameters.linear_solver,
@@ -46,31 +63,17 @@ namespace fgimpact
                       r.sigma_xx[0] * 1e-6,
                       r.sigma_xx[1] * 1e-6,
                       r.sigma_xx[2] * 1e-6);
-        ConditionalOStream(std::cout,
-                           Utilities::MPI::this_mpi_process(
-                             plate.get_mpi_communicator()) == 0)
-          << line;
+        pcout << line;
       }
-
-    private:
-      const Parameters &parameters;
-      const PlateModel &plate;
     };
 
 
 
     /// Problem type = modal: the lowest natural frequencies and shapes.
-    class ModalDriver : public ProblemDriver
+    class ModalDriver : public LinearProblemDriver
     {
     public:
-      ModalDriver(const Parameters &parameters, const PlateModel &plate)
-        : parameters(parameters)
-        , plate(plate)
-      {}
-
-      void
-      setup() override
-      {}
+      using LinearProblemDriver::LinearProblemDriver;
 
       void
       run() override
@@ -80,9 +83,6 @@ namespace fgimpact
                                plate);
         analysis.solve();
         analysis.write_output(parameters.output.directory);
-        ConditionalOStream pcout(std::cout,
-                                 Utilities::MPI::this_mpi_process(
-                                   plate.get_mpi_communicator()) == 0);
         pcout << "  " << analysis.get_modes().size() << " modes after "
               << analysis.n_iterations() << " subspace iterations:\n";
         for (unsigned int j = 0; j < analysis.get_modes().size(); ++j)
@@ -97,10 +97,6 @@ namespace fgimpact
             pcout << line;
           }
       }
-
-    private:
-      const Parameters &parameters;
-      const PlateModel &plate;
     };
   } // namespace
 
@@ -120,8 +116,9 @@ namespace fgimpact
   {
     total_timer.restart();
     geometry = std::make_unique<PlateGeometry>(parameters.geometry);
-    material = std::make_unique<FunctionallyGradedMaterial>(
-      parameters.material, geometry->thickness());
+    material =
+      std::make_unique<FunctionallyGradedMaterial>(parameters.material,
+                                                   geometry->thickness());
     plate = std::make_unique<PlateModel>(parameters.finite_element,
                                          *geometry,
                                          *material,
@@ -136,13 +133,13 @@ namespace fgimpact
           << (mode == PropertyMode::graded      ? "graded" :
               mode == PropertyMode::homogeneous ? "homogeneous" :
                                                   "pointwise")
-          << " elements), n = " << parameters.material.power_law_index
-          << '\n';
+          << " elements), n = " << parameters.material.power_law_index << '\n';
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
-    const auto owned = Utilities::MPI::min_max_avg(
-      static_cast<double>(plate->locally_owned_dofs().n_elements()),
-      mpi_communicator);
+    const auto owned =
+      Utilities::MPI::min_max_avg(static_cast<double>(
+                                    plate->locally_owned_dofs().n_elements()),
+                                  mpi_communicator);
     pcout << "  " << n_ranks << " MPI rank" << (n_ranks > 1 ? "s" : "")
           << ", DoFs per rank min "
           << static_cast<types::global_dof_index>(owned.min) << " / max "

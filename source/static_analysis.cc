@@ -156,7 +156,7 @@ namespace fgimpact
   {
     if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
       {
-        SummaryWriter      out;
+        SummaryWriter     out;
         const std::string where[3] = {"bottom", "mid", "top"};
         for (unsigned int k = 0; k < 3; ++k)
           out.add("static_deflection_" + where[k] + "_um",

@@ -138,7 +138,7 @@ namespace fgimpact
     class ImplicitNewmarkStepper : public TimeStepper
     {
     public:
-      ImplicitNewmarkStepper(const Parameters                        &parameters,
+      ImplicitNewmarkStepper(const Parameters &parameters,
                              const EffectiveMatrixSolver::Parameters &solver,
                              const PlateModel                        &plate,
                              const ContactModel                      &contact,
@@ -196,13 +196,13 @@ namespace fgimpact
                                      1. / (m_i * a0),
                                      parameters.newton,
                                      contact);
-        AssertThrow(
-          contact.newton_iterations != numbers::invalid_unsigned_int,
-          ExcMessage("Newton for the contact did not converge at " +
-                     at_step(step, t) + " within " +
-                     std::to_string(parameters.newton.max_iterations) +
-                     " iterations; reduce Time integration/Time step or "
-                     "raise Newton/Max iterations."));
+        AssertThrow(contact.newton_iterations != numbers::invalid_unsigned_int,
+                    ExcMessage(
+                      "Newton for the contact did not converge at " +
+                      at_step(step, t) + " within " +
+                      std::to_string(parameters.newton.max_iterations) +
+                      " iterations; reduce Time integration/Time step or "
+                      "raise Newton/Max iterations."));
         const double F = contact.force;
 
         // Back-substitute: plate and impactor at t_{n+1}.
@@ -341,7 +341,7 @@ namespace fgimpact
       const ContactModel                        &contact_model;
       const std::vector<types::global_dof_index> dofs;
       const double                               m_i;
-      TrilinosWrappers::MPI::Vector              a, Mu, Mv, Ma, u_new, Mu_new, rhs;
+      TrilinosWrappers::MPI::Vector a, Mu, Mv, Ma, u_new, Mu_new, rhs;
       std::vector<TrilinosWrappers::MPI::Vector> c;
       FullMatrix<double>                         compliance;
       bool                                       iterative = false;
@@ -590,10 +590,7 @@ namespace fgimpact
         case TimeStepper::Scheme::implicit_newmark:
           break;
       }
-    return std::make_unique<ImplicitNewmarkStepper>(parameters,
-                                                    solver,
-                                                    plate,
-                                                    contact,
-                                                    impactor_mass);
+    return std::make_unique<ImplicitNewmarkStepper>(
+      parameters, solver, plate, contact, impactor_mass);
   }
 } // namespace fgimpact

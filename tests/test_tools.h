@@ -109,7 +109,7 @@ namespace fgimpact_tests
              const unsigned int           degree,
              const double                 n,
              const fgimpact::PropertyMode mode = fgimpact::PropertyMode::graded,
-             const double                 thickness = 0.02,
+             const double                 thickness    = 0.02,
              const MPI_Comm               communicator = MPI_COMM_WORLD)
   {
     fgimpact::PlateGeometry::Parameters gp;

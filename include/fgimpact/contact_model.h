@@ -175,7 +175,7 @@ namespace fgimpact
     Point<3>                             node;
     double                               node_offset = 0; // m
     unsigned int                         node_owner  = 0; // MPI rank
-    bool node_offset_note_needed = true;
+    bool                                 node_offset_note_needed = true;
   };
 } // namespace fgimpact
 

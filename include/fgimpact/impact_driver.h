@@ -48,9 +48,9 @@ namespace fgimpact
   class ImpactDriver : public ProblemDriver
   {
   public:
-    ImpactDriver(const Parameters  &parameters,
-                 const PlateModel  &plate,
-                 const Timer       &total_timer);
+    ImpactDriver(const Parameters &parameters,
+                 const PlateModel &plate,
+                 const Timer      &total_timer);
 
     void
     setup() override;
@@ -72,13 +72,13 @@ namespace fgimpact
     void
     do_timestep();
 
-    const Parameters   &parameters;
-    const PlateModel   &plate;
-    const Timer        &total_timer;
-    ConditionalOStream  pcout;
-    const Impactor      impactor;
-    HertzContactLaw     contact_law;
-    ImpactResults       results;
+    const Parameters  &parameters;
+    const PlateModel  &plate;
+    const Timer       &total_timer;
+    ConditionalOStream pcout;
+    const Impactor     impactor;
+    HertzContactLaw    contact_law;
+    ImpactResults      results;
 
     std::unique_ptr<ContactModel>           contact;
     std::unique_ptr<TimeStepper>            stepper;

@@ -42,7 +42,7 @@ namespace fgimpact
   /// Everything history.csv shows at one time, in SI units.
   struct HistorySample
   {
-    double                t = 0;            // s
+    double                t       = 0; // s
     const ImpactorState  *ball    = nullptr;
     const ContactState   *contact = nullptr;
     double                W_mid = 0, W_top = 0; // m, positive down

@@ -29,22 +29,22 @@ namespace fgimpact
     /// |int F dt - m (V0 - v_end)| / (m V0): an identity of the impactor's
     /// update for gamma = 1/2 (round-off only), a consistency check of the
     /// impulse bookkeeping, not of the physics.
-    double       impulse_identity_error  = 0;
-    unsigned int n_impacts               = 0;
-    unsigned int n_dofs                  = 0;
-    unsigned int n_time_steps            = 0;
-    unsigned int max_newton_iterations   = 0;
+    double       impulse_identity_error = 0;
+    unsigned int n_impacts              = 0;
+    unsigned int n_dofs                 = 0;
+    unsigned int n_time_steps           = 0;
+    unsigned int max_newton_iterations  = 0;
     /// Iterations of the linear solver (0 for the direct solvers).
     unsigned long long linear_iterations     = 0; // summed over the run
     unsigned int       max_linear_iterations = 0; // in one step
-    double       setup_time              = 0; // s
-    double       factorization_time      = 0; // s
-    double       time_loop_time          = 0; // s
-    double       output_time             = 0; // s
+    double             setup_time            = 0; // s
+    double             factorization_time    = 0; // s
+    double             time_loop_time        = 0; // s
+    double             output_time           = 0; // s
     /// Reference costs, measured only with Output/Instrumentation (s).
-    double       spmv_time               = 0; // one matrix-vector product
-    double       solve_time              = 0; // one solve with K_eff
-    double       wall_time               = 0; // s
+    double spmv_time  = 0; // one matrix-vector product
+    double solve_time = 0; // one solve with K_eff
+    double wall_time  = 0; // s
   };
 } // namespace fgimpact
 

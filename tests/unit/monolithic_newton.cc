@@ -44,17 +44,17 @@ main(int argc, char **argv)
                                        plate,
                                        impactor.impact_point(0.2, 0.1));
   const auto             contact_dof = contact_model.contact_dofs()[0];
-  const double m = impactor.mass();
+  const double           m           = impactor.mass();
 
   TimeStepper::Parameters tp;
-  tp.time_step          = 2e-6;
-  tp.newton.tolerance   = 1e-14;
+  tp.time_step        = 2e-6;
+  tp.newton.tolerance = 1e-14;
   const NewmarkIntegrator newmark(tp.newmark, tp.time_step);
   const double            a0 = newmark.mass_factor();
 
   // The library's eliminated stepper.
   EffectiveMatrixSolver::Parameters sp;
-  sp.type      = "cholmod";
+  sp.type = "cholmod";
   auto stepper =
     create_time_stepper(tp, sp, plate, contact_model, m, ip.initial_velocity);
   stepper->initialize(false);

@@ -36,7 +36,7 @@ namespace
     const NewmarkIntegrator newmark(NewmarkIntegrator::Parameters(), dt);
     TimeStepper::Parameters time_control;
     time_control.end_time = T;
-    double                  u = u0, v = v0,
+    double u = u0, v = v0,
            a         = (0. - k * u0) / m; // a(0) from the equation, f(0) = 0
     double max_error = 0;
     for (unsigned int n = 1; n <= time_control.n_steps(dt); ++n)

@@ -10,13 +10,12 @@
 
 #include <fgimpact/simulator.h>
 
-#include <test_tools.h>
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
+#include <test_tools.h>
 
 using namespace fgimpact;
 
@@ -38,20 +37,22 @@ main(int argc, char **argv)
   char K_string[64];
   std::snprintf(K_string, sizeof(K_string), "%.17g", K);
 
-  const ImpactResults r = fgimpact_tests::run_quietly(
-    "",
-    std::string("subsection Geometry\n set Subdivisions x = 10\n"
-                " set Subdivisions y = 6\n set Subdivisions z = 2\nend\n"
-                "subsection Material\n set Metal Young's modulus = 70e12\n"
-                " set Ceramic Young's modulus = 70e12\n"
-                " set Ceramic density = 2707\nend\n"
-                "subsection Contact\n set Contact stiffness = ") +
-    K_string +
-    "\nend\n"
-    "subsection Time integration\n set Time step = 0.5e-6\n set End time = 200e-6\nend\n"
-    "subsection Newton\n set Tolerance = 1e-12\nend\n"
-    "subsection Output\n set Directory = out\n set Log interval = 0\n"
-    " set Print timing = false\nend\n").results;
+  const ImpactResults r =
+    fgimpact_tests::run_quietly(
+      "",
+      std::string("subsection Geometry\n set Subdivisions x = 10\n"
+                  " set Subdivisions y = 6\n set Subdivisions z = 2\nend\n"
+                  "subsection Material\n set Metal Young's modulus = 70e12\n"
+                  " set Ceramic Young's modulus = 70e12\n"
+                  " set Ceramic density = 2707\nend\n"
+                  "subsection Contact\n set Contact stiffness = ") +
+        K_string +
+        "\nend\n"
+        "subsection Time integration\n set Time step = 0.5e-6\n set End time = 200e-6\nend\n"
+        "subsection Newton\n set Tolerance = 1e-12\nend\n"
+        "subsection Output\n set Directory = out\n set Log interval = 0\n"
+        " set Print timing = false\nend\n")
+      .results;
 
   bool ok    = true;
   auto check = [&](const char *what, const double value, const double exact) {
