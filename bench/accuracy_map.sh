@@ -21,8 +21,9 @@
 #        FGIMPACT=path/to/fgimpact to use another executable)
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/fgimpact_lib.sh
 exe=${FGIMPACT:-build/fgimpact}
-[ -x /usr/bin/time ] || apt-get install -y --no-install-recommends time
+need_gnu_time
 root=output/accuracy
 mkdir -p "$root"
 
@@ -64,38 +65,20 @@ for c in "${cases[@]}"; do
   read -r nx ny nz <<< "$mesh"
   dir=$root/$label
   mkdir -p "$dir"
-  cat > "$dir/run.prm" <<PRM
-include prm/default.prm
-set Accuracy = ${preset:-custom}
-subsection Geometry
-  set Subdivisions x = $nx
-  set Subdivisions y = $ny
-  set Subdivisions z = $nz
-end
-subsection Finite element
-  set Degree = $degree
-end
-subsection Material
-  set Property mode = $mode
-end
-subsection Time integration
-  set Time step = $dt
-end
-subsection Output
-  set Directory    = $dir/out
-  set VTU interval = 0
-  set Log interval = 0
-end
-PRM
+  write_prm "$dir/run.prm" prm/default.prm "Accuracy=${preset:-custom}" \
+    "Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny" \
+    "Geometry/Subdivisions z=$nz" "Finite element/Degree=$degree" \
+    "Material/Property mode=$mode" "Time integration/Time step=$dt" \
+    "Output/Directory=$dir/out" "Output/VTU interval=0" "Output/Log interval=0"
   /usr/bin/time -v "$exe" "$dir/run.prm" > "$dir/log" 2> "$dir/time"
   if [ -n "${preset:-}" ] && ! grep -q "Accuracy = $preset sets Geometry/Subdivisions x, y, z = $nx, $ny, $nz .*Time step = $(awk -v d="$dt" 'BEGIN {print d * 1e6}') us" "$dir/log"; then
     echo "accuracy_map.sh: $label: the preset did not set $nx x $ny x $nz, dt = $dt s (see $dir/log)" >&2
     exit 1
   fi
-  rss=$(awk -F': ' '/Maximum resident set size/ {printf "%.0f", $2/1024}' "$dir/time")
+  rss=$(gnu_time_rss_mb "$dir/time")
   declare -A v=()
   for k in $keys; do
-    v[$k]=$(awk -F' = ' -v k="$k" '$1 == k {print $2}' "$dir/out/summary.txt")
+    v[$k]=$(summary_value "$dir/out" "$k")
   done
   dt_us=$(awk -v d="$dt" 'BEGIN {print d * 1e6}')
   vals=()

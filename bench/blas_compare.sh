@@ -21,6 +21,7 @@
 # 4 solves and 20 SpMVs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/fgimpact_lib.sh
 
 method=ldpath
 out=output/bench/blas
@@ -34,7 +35,7 @@ while [ $# -gt 0 ]; do
   shift
 done
 
-[ -x /usr/bin/time ] || { SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"; $SUDO apt-get install -y time; }
+need_gnu_time
 
 lib=/usr/lib/x86_64-linux-gnu
 ref_blas=$lib/blas/libblas.so.3
@@ -43,8 +44,7 @@ ref_lapack=$lib/lapack/liblapack.so.3
 
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-exe=$out/fgimpact_bench
-cp "${FGIMPACT:-build/fgimpact}" "$exe"
+exe=$(copy_executable "$out")
 
 restore() {
   if [ "$method" = alternatives ]; then
@@ -77,8 +77,6 @@ set_blas() { # openblas | reference
   fi
 }
 
-get() { awk -F' = ' -v k="$1" '$1 == k {print $2}' "$2"; }
-
 csv=$out/blas.csv
 [ -s "$csv" ] || echo "method,blas,mesh,n_dofs,end_time_us,libblas_loaded,setup_s,factorization_s,factor_only_s,solve_ms,spmv_ms,time_per_step_ms,step_per_solve,wall_time_s,peak_rss_MB" > "$csv"
 
@@ -89,35 +87,23 @@ for case in "40 20 4 400" "80 40 8 20"; do
     mesh=${nx}x${ny}x${nz}
     dir=$out/${method}_${blas}_${mesh}
     mkdir -p "$dir"
-    cat > "$dir/run.prm" <<PRM
-include prm/default.prm
-subsection Geometry
-  set Subdivisions x = $nx
-  set Subdivisions y = $ny
-  set Subdivisions z = $nz
-end
-subsection Time integration
-  set End time = ${T}e-6
-end
-subsection Linear solver
-  set Type = cholmod
-end
-subsection Output
-  set Directory    = $dir
-  set VTU interval = 0
-  set Log interval = 0
-end
-PRM
+    write_prm "$dir/run.prm" prm/default.prm \
+      "Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny" \
+      "Geometry/Subdivisions z=$nz" "Time integration/End time=${T}e-6" \
+      "Linear solver/Type=cholmod" \
+      "Output/Directory=$dir" "Output/VTU interval=0" "Output/Log interval=0"
     loaded=$("${ENVV[@]}" ldd "$exe" | awk '$1 == "libblas.so.3" {print $3}')
     loaded=$(readlink -f "$loaded")
     "${ENVV[@]}" /usr/bin/time -v -o "$dir/time.txt" "$exe" "$dir/run.prm" > "$dir/log.txt" 2>&1
-    s=$dir/summary.txt
-    rss=$(awk -F': ' '/Maximum resident set size/ {printf "%.1f", $2 / 1024}' "$dir/time.txt")
+    rss=$(gnu_time_rss_mb "$dir/time.txt" %.1f)
     line=$(awk -v m="$method" -v b="$blas" -v mesh="$mesh" -v T="$T" -v lib="$loaded" \
-      -v n="$(get n_dofs "$s")" -v setup="$(get setup_s "$s")" \
-      -v fact="$(get factorization_s "$s")" -v solve="$(get solve_ms "$s")" \
-      -v spmv="$(get spmv_ms "$s")" -v tps="$(get time_per_step_ms "$s")" \
-      -v wall="$(get wall_time_s "$s")" -v rss="$rss" 'BEGIN {
+      -v n="$(summary_value "$dir" n_dofs)" \
+      -v setup="$(summary_value "$dir" setup_s)" \
+      -v fact="$(summary_value "$dir" factorization_s)" \
+      -v solve="$(summary_value "$dir" solve_ms)" \
+      -v spmv="$(summary_value "$dir" spmv_ms)" \
+      -v tps="$(summary_value "$dir" time_per_step_ms)" \
+      -v wall="$(summary_value "$dir" wall_time_s)" -v rss="$rss" 'BEGIN {
         printf "%s,%s,%s,%s,%s,%s,%s,%s,%.3f,%s,%s,%s,%.3f,%s,%s\n", m, b, mesh, n, T, lib,
           setup, fact, fact - (4 * solve + 20 * spmv) / 1e3, solve, spmv, tps,
           tps / solve, wall, rss }')

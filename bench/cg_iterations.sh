@@ -12,6 +12,7 @@
 # Timings under gdb are meaningless; only the counts are used.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/fgimpact_lib.sh
 
 out=output/bench/cg_iterations
 if [ "${1:-}" = --out ]; then out=$2; shift 2; fi
@@ -23,8 +24,7 @@ cases=("$@")
 command -v gdb > /dev/null || { SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"; $SUDO apt-get install -y gdb; }
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-exe=$out/fgimpact_bench
-cp "${FGIMPACT:-build/fgimpact}" "$exe"
+exe=$(copy_executable "$out")
 cat > "$out/count.gdb" <<'GDB'
 set breakpoint pending on
 set pagination off
@@ -44,26 +44,12 @@ echo "|---|---|---|---|---|"
 for c in "${cases[@]}"; do
   IFS=: read -r nx ny nz pc n <<< "$c"
   for steps in 1 "$n"; do
-    cat > "$out/${nx}x${ny}x${nz}_${pc}_$steps.prm" <<PRM
-include prm/default.prm
-subsection Geometry
-  set Subdivisions x = $nx
-  set Subdivisions y = $ny
-  set Subdivisions z = $nz
-end
-subsection Time integration
-  set End time = ${steps}e-6
-end
-subsection Linear solver
-  set Type = cg
-  set Preconditioner = $pc
-end
-subsection Output
-  set Directory    = $out/run_${nx}x${ny}x${nz}_${pc}_$steps
-  set VTU interval = 0
-  set Log interval = 0
-end
-PRM
+    write_prm "$out/${nx}x${ny}x${nz}_${pc}_$steps.prm" prm/default.prm \
+      "Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny" \
+      "Geometry/Subdivisions z=$nz" "Time integration/End time=${steps}e-6" \
+      "Linear solver/Type=cg" "Linear solver/Preconditioner=$pc" \
+      "Output/Directory=$out/run_${nx}x${ny}x${nz}_${pc}_$steps" \
+      "Output/VTU interval=0" "Output/Log interval=0"
   done
   h1=$(hits "$out/${nx}x${ny}x${nz}_${pc}_1.prm")
   hn=$(hits "$out/${nx}x${ny}x${nz}_${pc}_$n.prm")

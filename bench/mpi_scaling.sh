@@ -18,20 +18,14 @@
 #   /usr/bin/python3 bench/plot_mpi_scaling.py DIR/results.csv
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/fgimpact_lib.sh
 out=output/mpi_scaling
 [ "${1:-}" = "--out" ] && out=$2
 mkdir -p "$out/runs"
 out=$(cd "$out" && pwd)
-[ -x /usr/bin/time ] || apt-get install -y --no-install-recommends time
-exe=$out/fgimpact_bench
-cp "${FGIMPACT:-build/fgimpact}" "$exe"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_rmaps_base_oversubscribe=1
-# Local ranks only: Open MPI 4 refuses to start without ssh/rsh on PATH
-# (a fresh Debian has neither) unless the remote agent is unset.
-export OMPI_MCA_plm_rsh_agent=
-
-get() { awk -F' = ' -v k="$1" '$1 == k {print $2}' "$2"; }
+need_gnu_time
+exe=$(copy_executable "$out")
+allow_local_mpirun
 
 csv=$out/results.csv
 [ -n "${CASES:-}" ] && [ -f "$csv" ] || echo "id,study,path,ranks,mesh,n_dofs,n_time_steps,setup_s,factorization_s,time_per_step_ms,wall_time_s,elapsed_s,peak_rss_MB_largest_rank,peak_contact_force_N" > "$csv"
@@ -41,30 +35,17 @@ run() { # id study path ranks nx ny nz end_us
   [[ "$id" =~ ${CASES:-.} ]] || return 0
   local dir=$out/runs/$id
   rm -rf "$dir"; mkdir -p "$dir"
-  {
-    echo "include $(pwd)/prm/default.prm"
-    echo "subsection Geometry"
-    echo "  set Subdivisions x = $nx"
-    echo "  set Subdivisions y = $ny"
-    echo "  set Subdivisions z = $nz"
-    echo "end"
-    echo "subsection Time integration"
-    echo "  set End time = ${T}e-6"
-    [ "$path" = explicit ] && echo "  set Scheme = explicit" && echo "  set Time step = 0"
-    echo "end"
-    echo "subsection Linear solver"
-    case $path in
-      cg_amg) echo "  set Type = cg"; echo "  set Preconditioner = amg" ;;
-      mumps) echo "  set Type = mumps" ;;
-      cholmod) echo "  set Type = cholmod" ;;
-    esac
-    echo "end"
-    echo "subsection Output"
-    echo "  set Directory    = $dir"
-    echo "  set VTU interval = 0"
-    echo "  set Log interval = 0"
-    echo "end"
-  } > "$dir/run.prm"
+  local -a overrides=("Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny"
+    "Geometry/Subdivisions z=$nz" "Time integration/End time=${T}e-6")
+  case $path in
+    explicit) overrides+=("Time integration/Scheme=explicit" "Time integration/Time step=0") ;;
+    cg_amg) overrides+=("Linear solver/Type=cg" "Linear solver/Preconditioner=amg") ;;
+    mumps|cholmod) overrides+=("Linear solver/Type=$path") ;;
+  esac
+  # mpirun starts the ranks in this directory (the repository root), where
+  # the relative include of prm/default.prm is opened.
+  write_prm "$dir/run.prm" prm/default.prm "${overrides[@]}" \
+    "Output/Directory=$dir" "Output/VTU interval=0" "Output/Log interval=0"
   printf '%-28s ranks %s %-11s ... ' "$id" "$ranks" "${nx}x${ny}x${nz}"
   local status=0
   timeout 1800 /usr/bin/time -v -o "$dir/time.txt" \
@@ -74,11 +55,14 @@ run() { # id study path ranks nx ny nz end_us
     echo "$id,$study,$path,$ranks,${nx}x${ny}x${nz},,,,,,,,,failed" >> "$csv"
     return 0
   fi
-  local s=$dir/summary.txt elapsed rss
-  elapsed=$(awk -F': ' '/Elapsed \(wall clock\)/ {n = split($2, p, ":"); s = 0; for (i = 1; i <= n; ++i) s = 60 * s + p[i]; print s}' "$dir/time.txt")
-  rss=$(awk -F': ' '/Maximum resident set size/ {printf "%.0f", $2 / 1024}' "$dir/time.txt")
-  echo "$id,$study,$path,$ranks,${nx}x${ny}x${nz},$(get n_dofs $s),$(get n_time_steps $s),$(get setup_s $s),$(get factorization_s $s),$(get time_per_step_ms $s),$(get wall_time_s $s),$elapsed,$rss,$(get peak_contact_force_N $s)" >> "$csv"
-  echo "$(get time_per_step_ms $s) ms/step, $rss MB"
+  local elapsed rss row=$id,$study,$path,$ranks,${nx}x${ny}x${nz} k
+  elapsed=$(gnu_time_elapsed_s "$dir/time.txt")
+  rss=$(gnu_time_rss_mb "$dir/time.txt")
+  for k in n_dofs n_time_steps setup_s factorization_s time_per_step_ms wall_time_s; do
+    row+=,$(summary_value "$dir" $k)
+  done
+  echo "$row,$elapsed,$rss,$(summary_value "$dir" peak_contact_force_N)" >> "$csv"
+  echo "$(summary_value "$dir" time_per_step_ms) ms/step, $rss MB"
 }
 
 # Strong scaling, ~1e5 DoFs.

@@ -26,7 +26,7 @@
 # the contact duration and the departure velocity.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-repo=$(pwd)
+. scripts/fgimpact_lib.sh
 
 quick=0
 slow=0
@@ -42,19 +42,11 @@ while [ $# -gt 0 ]; do
   shift
 done
 
-# GNU time for the peak RSS.
-if [ ! -x /usr/bin/time ]; then
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-  $SUDO apt-get install -y time
-fi
-
+need_gnu_time   # for the peak RSS
 mkdir -p "$out/runs"
 out=$(cd "$out" && pwd)
 exe_src=${FGIMPACT:-build/fgimpact}
-[ -x "$exe_src" ] || { echo "no executable $exe_src (build first, or set FGIMPACT)" >&2; exit 1; }
-exe=$out/fgimpact_bench
-cp "$exe_src" "$exe"
+exe=$(copy_executable "$out")
 
 # ----------------------------------------------------------------- cases
 # Meshes (even subdivisions: a node under the central impact).
@@ -121,42 +113,24 @@ csv_quote() { # a CSV field in double quotes
   printf '"%s"' "$(printf '%s' "$1" | sed 's/"/""/g')"
 }
 
-get() { # key summary-file
-  awk -F' = ' -v k="$1" '$1 == k {print $2}' "$2"
-}
-
-run_case() { # id group scheme solver precond nx ny nz end_us [extra prm text]
+run_case() { # id group scheme solver precond nx ny nz end_us [Section/Entry=value ...]
   local id=$1 group=$2 scheme=$3 solver=$4 precond=$5 nx=$6 ny=$7 nz=$8 T=$9
-  local extra=${10:-}
+  shift 9
   local dir=$out/runs/$id
   local mesh=${nx}x${ny}x${nz}
   rm -rf "$dir"
   mkdir -p "$dir"
-  {
-    echo "include prm/default.prm"
-    echo "subsection Geometry"
-    echo "  set Subdivisions x = $nx"
-    echo "  set Subdivisions y = $ny"
-    echo "  set Subdivisions z = $nz"
-    echo "end"
-    echo "subsection Time integration"
-    echo "  set Scheme   = $scheme"
-    [ "$scheme" = explicit ] && echo "  set Time step = 0"
-    echo "  set End time = ${T}e-6"
-    echo "end"
-    if [ "$scheme" = implicit ]; then
-      echo "subsection Linear solver"
-      echo "  set Type = $solver"
-      [ "$precond" != - ] && echo "  set Preconditioner = $precond"
-      echo "end"
-    fi
-    [ -n "$extra" ] && printf '%s\n' "$extra"
-    echo "subsection Output"
-    echo "  set Directory    = $dir"
-    echo "  set VTU interval = 0"
-    echo "  set Log interval = 0"
-    echo "end"
-  } > "$dir/run.prm"
+  local -a overrides=("Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny"
+    "Geometry/Subdivisions z=$nz" "Time integration/Scheme=$scheme"
+    "Time integration/End time=${T}e-6")
+  if [ "$scheme" = explicit ]; then
+    overrides+=("Time integration/Time step=0")
+  else
+    overrides+=("Linear solver/Type=$solver")
+    [ "$precond" != - ] && overrides+=("Linear solver/Preconditioner=$precond")
+  fi
+  write_prm "$dir/run.prm" prm/default.prm "${overrides[@]}" "$@" \
+    "Output/Directory=$dir" "Output/VTU interval=0" "Output/Log interval=0"
 
   printf '%-34s %-11s %7s us ... ' "$id" "$mesh" "$T"
   local status=0
@@ -173,17 +147,19 @@ run_case() { # id group scheme solver precond nx ny nz end_us [extra prm text]
   [ $status -eq 139 ] && note="segfault at exit (Amesos_Mumps destructor) after summary.txt was written"
   [ $status -ne 0 ] && [ -z "$note" ] && note="exit status $status"
 
-  local s=$dir/summary.txt
   local n_dofs n_steps setup fact tps spmv solve loop output wall fmax tc vdep newton
-  n_dofs=$(get n_dofs "$s"); n_steps=$(get n_time_steps "$s")
-  setup=$(get setup_s "$s"); fact=$(get factorization_s "$s")
-  tps=$(get time_per_step_ms "$s"); spmv=$(get spmv_ms "$s"); solve=$(get solve_ms "$s")
-  loop=$(get time_loop_s "$s"); output=$(get output_s "$s"); wall=$(get wall_time_s "$s")
-  fmax=$(get peak_contact_force_N "$s"); tc=$(get contact_duration_us "$s")
-  vdep=$(get departure_velocity_m_s "$s"); newton=$(get max_newton_iterations "$s")
-  local elapsed rss_kb dt
-  elapsed=$(awk -F': ' '/Elapsed \(wall clock\)/ {n = split($2, p, ":"); s = 0; for (i = 1; i <= n; ++i) s = 60 * s + p[i]; print s}' "$dir/time.txt")
-  rss_kb=$(awk -F': ' '/Maximum resident set size/ {print $2}' "$dir/time.txt")
+  n_dofs=$(summary_value "$dir" n_dofs); n_steps=$(summary_value "$dir" n_time_steps)
+  setup=$(summary_value "$dir" setup_s); fact=$(summary_value "$dir" factorization_s)
+  tps=$(summary_value "$dir" time_per_step_ms); spmv=$(summary_value "$dir" spmv_ms)
+  solve=$(summary_value "$dir" solve_ms); loop=$(summary_value "$dir" time_loop_s)
+  output=$(summary_value "$dir" output_s); wall=$(summary_value "$dir" wall_time_s)
+  fmax=$(summary_value "$dir" peak_contact_force_N)
+  tc=$(summary_value "$dir" contact_duration_us)
+  vdep=$(summary_value "$dir" departure_velocity_m_s)
+  newton=$(summary_value "$dir" max_newton_iterations)
+  local elapsed rss_mb dt
+  elapsed=$(gnu_time_elapsed_s "$dir/time.txt")
+  rss_mb=$(gnu_time_rss_mb "$dir/time.txt" %.1f)
   dt=$(sed -n 's/.*; dt = \([0-9.e+-]*\) us.*/\1/p' "$dir/log.txt" | head -1)
   # dt from the step count when stdout was lost (the MUMPS crash at exit).
   [ -z "$dt" ] && dt=$(awk -v T="$T" -v n="$n_steps" 'BEGIN {printf "%.6g", T / n}')
@@ -192,7 +168,7 @@ run_case() { # id group scheme solver precond nx ny nz end_us [extra prm text]
       -v n_steps="$n_steps" -v dt="$dt" -v setup="$setup" -v fact="$fact" \
       -v tps="$tps" -v spmv="$spmv" -v solve="$solve" -v loop="$loop" \
       -v output="$output" -v wall="$wall" -v elapsed="$elapsed" \
-      -v rss_kb="$rss_kb" -v fmax="$fmax" -v tc="$tc" -v vdep="$vdep" \
+      -v rss_mb="$rss_mb" -v fmax="$fmax" -v tc="$tc" -v vdep="$vdep" \
       -v newton="$newton" -v status="$status" -v note="$note" 'BEGIN {
         per_spmv  = (spmv > 0) ? sprintf("%.3f", tps / spmv) : "";
         per_solve = (solve > 0) ? sprintf("%.3f", tps / solve) : "";
@@ -200,15 +176,15 @@ run_case() { # id group scheme solver precond nx ny nz end_us [extra prm text]
         projected = sprintf("%.2f", setup + fact + output + ceil(400 / dt - 1e-9) * tps / 1e3);
         if (tc == "nan" || tc == "-nan") tc = "";
         if (vdep == "nan" || vdep == "-nan") vdep = "";
-        printf "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%.1f,%s,%s,%s,%s,%s,%s\n",
+        printf "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n",
           id, group, scheme, solver, precond, mesh, n_dofs, T, n_steps, dt,
           setup, fact, tps, spmv, solve, per_spmv, per_solve, loop, output,
-          wall, elapsed, projected, rss_kb / 1024, fmax, tc, vdep, newton,
+          wall, elapsed, projected, rss_mb, fmax, tc, vdep, newton,
           status, (note == "") ? "" : "\"" note "\""
       }
       function ceil(x) { return (x == int(x)) ? x : int(x) + 1 }' >> "$csv"
   printf '%8.1f ms/step, wall %7.1f s, %7.0f MB%s\n' "$tps" "$elapsed" \
-    "$(awk -v k="$rss_kb" 'BEGIN {print k / 1024}')" "${note:+  ($note)}"
+    "$(gnu_time_rss_mb "$dir/time.txt")" "${note:+  ($note)}"
 }
 
 skip_case() { # id group scheme solver precond mesh reason
@@ -243,9 +219,9 @@ done
 
 # --- 3. the issue's FEniCSx reference: homogeneous plate (E = 70 GPa,
 # rho = 2707 kg/m^3 throughout), 40x20x4, dt = 1 us, 300 steps, 1 m/s.
-homogeneous=$'subsection Material\n  set Ceramic Young\'s modulus = 70e9\n  set Ceramic density = 2707\nend'
-run_case homogeneous_cholmod homogeneous implicit cholmod - 40 20 4 300 "$homogeneous"
-run_case homogeneous_explicit homogeneous explicit - - 40 20 4 300 "$homogeneous"
+homogeneous=("Material/Ceramic Young's modulus=70e9" "Material/Ceramic density=2707")
+run_case homogeneous_cholmod homogeneous implicit cholmod - 40 20 4 300 "${homogeneous[@]}"
+run_case homogeneous_explicit homogeneous explicit - - 40 20 4 300 "${homogeneous[@]}"
 
 /usr/bin/python3 bench/make_table.py "$csv" > "$out/results.md"
 echo "wrote $csv and $out/results.md"

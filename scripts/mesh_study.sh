@@ -4,6 +4,7 @@
 # doc/mesh_study.md.  Usage: scripts/mesh_study.sh [nx:ny:nz ...]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+. scripts/fgimpact_lib.sh
 exe=${FGIMPACT:-build/fgimpact}
 meshes=("$@")
 [ ${#meshes[@]} -gt 0 ] || meshes=(20:10:2 40:20:2 40:20:4 40:20:8 80:40:4 80:40:8)
@@ -16,23 +17,14 @@ for m in "${meshes[@]}"; do
   IFS=: read -r nx ny nz <<< "$m"
   dir=$root/${nx}x${ny}x${nz}
   prm=$root/${nx}x${ny}x${nz}.prm
-  cat > "$prm" <<PRM
-include prm/default.prm
-subsection Geometry
-  set Subdivisions x = $nx
-  set Subdivisions y = $ny
-  set Subdivisions z = $nz
-end
-subsection Output
-  set Directory    = $dir
-  set VTU interval = 0
-  set Log interval = 0
-end
-PRM
+  write_prm "$prm" prm/default.prm \
+    "Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny" \
+    "Geometry/Subdivisions z=$nz" \
+    "Output/Directory=$dir" "Output/VTU interval=0" "Output/Log interval=0"
   "$exe" "$prm" > "$root/${nx}x${ny}x${nz}.log"
   printf '| %sx%sx%s |' "$nx" "$ny" "$nz"
   for k in $keys; do
-    printf ' %s |' "$(awk -F' = ' -v k="$k" '$1 == k {print $2}' "$dir/summary.txt")"
+    printf ' %s |' "$(summary_value "$dir" "$k")"
   done
   printf '\n'
 done

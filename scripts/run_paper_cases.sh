@@ -25,7 +25,10 @@ case "${1:-}" in
 esac
 
 repo_root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# The paper files include prm/default.prm, which deal.II opens relative to
+# the working directory: run from the repository root.
 cd "$repo_root"
+. scripts/fgimpact_lib.sh
 
 fgimpact="${FGIMPACT:-build/fgimpact}"
 python="${PYTHON:-/usr/bin/python3}"
@@ -125,8 +128,8 @@ keys=(peak_contact_force_N time_of_peak_force_us contact_duration_us
   for c in "${cases[@]}"; do
     printf '%-26s' "$c"
     for k in "${keys[@]}"; do
-      v="$(sed -n "s/^$k[[:space:]]*=[[:space:]]*//p" "${out_dir[$c]}/summary.txt")"
-      printf ' %s' "${v:-?}"
+      v="$(summary_value "${out_dir[$c]}" "$k")" || v='?'
+      printf ' %s' "$v"
     done
     printf '\n'
   done
