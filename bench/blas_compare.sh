@@ -91,7 +91,7 @@ for case in "40 20 4 400" "80 40 8 20"; do
       "Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny" \
       "Geometry/Subdivisions z=$nz" "Time integration/End time=${T}e-6" \
       "Linear solver/Type=cholmod" \
-      "Output/Directory=$dir" "Output/VTU interval=0" "Output/Log interval=0"
+      "Output/Instrumentation=true" "Output/Directory=$dir" "Output/VTU interval=0" "Output/Log interval=0"
     loaded=$("${ENVV[@]}" ldd "$exe" | awk '$1 == "libblas.so.3" {print $3}')
     loaded=$(readlink -f "$loaded")
     "${ENVV[@]}" /usr/bin/time -v -o "$dir/time.txt" "$exe" "$dir/run.prm" > "$dir/log.txt" 2>&1
