@@ -1,7 +1,7 @@
 // The explicit path (central difference, lumped mass, automatic stable
 // step) against the implicit one (average acceleration, consistent mass,
 // dt = 0.5 us) on a small mesh: peak contact force within 1 %, contact
-// duration within 1 %; and the explicit run conserves energy and momentum.
+// duration within 1 %; and the explicit run conserves energy.
 // Also: a time step above the stability limit is refused.
 
 #include <deal.II/base/mpi.h>
@@ -34,16 +34,13 @@ main(int argc, char **argv)
     explicit_run.peak_contact_force / implicit_run.peak_contact_force - 1);
   const double dT =
     std::abs(explicit_run.contact_duration / implicit_run.contact_duration - 1);
-  bool ok = dF < 0.01 && dT < 0.01 && explicit_run.max_energy_drift < 5e-3 &&
-            explicit_run.momentum_balance_error < 5e-3;
+  bool ok = dF < 0.01 && dT < 0.01 && explicit_run.max_energy_drift < 5e-3;
   std::printf("explicit vs implicit peak force within 1 %%: %s\n",
               dF < 0.01 ? "yes" : "NO");
   std::printf("explicit vs implicit contact duration within 1 %%: %s\n",
               dT < 0.01 ? "yes" : "NO");
   std::printf("explicit energy drift below 0.5 %%: %s\n",
               explicit_run.max_energy_drift < 5e-3 ? "yes" : "NO");
-  std::printf("explicit momentum balance error below 0.5 %%: %s\n",
-              explicit_run.momentum_balance_error < 5e-3 ? "yes" : "NO");
 
   // 2 us is about twice the stability limit on this mesh (1.0 us).
   bool refused = false;

@@ -1,7 +1,8 @@
 // Whole-program check on a small mesh: the impact of the paper's ball on the
 // n = 1 plate conserves total energy (average-acceleration Newmark) to
-// < 0.5 %, and the impactor's momentum balance int F dt = m (V0 + V_dep)
-// holds to < 0.5 %.  Also for a homogeneous plate and a re-striking case.
+// < 0.5 %, and the ball leaves.  Also for a homogeneous plate and a
+// re-striking case.  (The impactor's balance int F dt = m (V0 + V_dep) is an
+// identity of its update for gamma = 1/2, not a check: not asserted.)
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
@@ -36,18 +37,16 @@ main(int argc, char **argv)
      "subsection Time integration\n set Time step = 2e-6\n set End time = 600e-6\nend\n"}};
   for (const auto &[name, settings] : cases)
     {
-      const ImpactResults r        = run_impact(settings);
-      const bool          energy   = r.max_energy_drift < 5e-3;
-      const bool          momentum = r.momentum_balance_error < 5e-3;
+      const ImpactResults r      = run_impact(settings);
+      const bool          energy = r.max_energy_drift < 5e-3;
       const bool          left =
         std::isfinite(r.departure_velocity) && r.departure_velocity > 0;
-      ok = ok && energy && momentum && left;
-      std::printf("%s:\n  energy drift below 0.5 %%: %s\n"
-                  "  momentum balance error below 0.5 %%: %s\n"
+      ok = ok && energy && left;
+      std::printf("%s:\n  energy drift %.2e, below 0.5 %%: %s\n"
                   "  ball left the plate: %s\n",
                   name,
+                  r.max_energy_drift,
                   energy ? "yes" : "NO",
-                  momentum ? "yes" : "NO",
                   left ? "yes" : "NO");
     }
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");

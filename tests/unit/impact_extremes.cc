@@ -5,8 +5,8 @@
 //  - dt = 0.01 us and 20 us (average acceleration is unconditionally
 //    stable): no blow-up (at 20 us the energy error stays below the
 //    second-order bound (pi dt / T_contact)^2), the ball leaves;
-//  - a ball 100x heavier and 100x lighter: energy and momentum balance
-//    within 0.5 % and the ball leaves.
+//  - a ball 100x heavier and 100x lighter: energy balance within 0.5 % and
+//    the ball leaves.
 // Set FGIMPACT_VERBOSE=1 to print the numbers.
 
 #include <deal.II/base/mpi.h>
@@ -35,12 +35,11 @@ namespace
     if (verbose)
       std::fprintf(stderr,
                    "F %.6g N, contact %.6g us, V_dep %.6g, drift %.3e, "
-                   "momentum %.3e, impacts %u, steps %u\n",
+                   "impacts %u, steps %u\n",
                    r.peak_contact_force,
                    r.contact_duration * 1e6,
                    r.departure_velocity,
                    r.max_energy_drift,
-                   r.momentum_balance_error,
                    r.n_impacts,
                    r.n_time_steps);
     return r;
@@ -107,20 +106,14 @@ main(int argc, char **argv)
     run("subsection Impactor\n set Density = 780000\nend\n"
         "subsection Time integration\n set Time step = 2e-6\n"
         " set End time = 4000e-6\nend\n");
-  ok &=
-    report("ball 100x heavier: energy and momentum within 0.5 %, ball leaves",
-           heavy.max_energy_drift < 5e-3 &&
-             heavy.momentum_balance_error < 5e-3 &&
-             heavy.departure_velocity > 0);
+  ok &= report("ball 100x heavier: energy within 0.5 %, ball leaves",
+               heavy.max_energy_drift < 5e-3 && heavy.departure_velocity > 0);
   const ImpactResults light =
     run("subsection Impactor\n set Density = 78\nend\n"
         "subsection Time integration\n set Time step = 0.1e-6\n"
         " set End time = 100e-6\nend\n");
-  ok &=
-    report("ball 100x lighter: energy and momentum within 0.5 %, ball leaves",
-           light.max_energy_drift < 5e-3 &&
-             light.momentum_balance_error < 5e-3 &&
-             light.departure_velocity > 0);
+  ok &= report("ball 100x lighter: energy within 0.5 %, ball leaves",
+               light.max_energy_drift < 5e-3 && light.departure_velocity > 0);
 
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
   return ok ? 0 : 1;
