@@ -103,10 +103,7 @@ main(int argc, char **argv)
   std::printf(
     "Q2 (nz = 4), homogeneous elements: jumps more than 3x larger: %s\n",
     q2_homog ? "yes" : "NO");
-  const bool smaller = q1_both && q2_graded && q2_homog, graded_5 = true,
-             homog_5 = true;
-  std::printf("%s\n",
-              smaller && graded_5 && homog_5 ? "all checks passed" :
-                                               "SOME CHECKS FAILED");
-  return smaller && graded_5 && homog_5 ? 0 : 1;
+  const bool ok = q1_both && q2_graded && q2_homog;
+  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+  return ok ? 0 : 1;
 }
