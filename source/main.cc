@@ -5,31 +5,21 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <fgimpact/command_line.h>
+#include <fgimpact/input_file.h>
+#include <fgimpact/logger.h>
 #include <fgimpact/simulator.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <sstream>
 #include <string>
 
 namespace
 {
-  const char *usage =
-    "Usage: fgimpact [options] [parameter_file.prm]\n"
-    "\n"
-    "Simulates a sphere striking a functionally graded plate (3D elasticity,\n"
-    "graded 8-node bricks, modified Hertz contact, Newmark + Newton) and\n"
-    "writes history.csv, summary.txt, parameters.prm and optional VTU/PVD\n"
-    "files into the output directory named in the parameter file.\n"
-    "Without a parameter file the documented defaults are used.\n"
-    "\n"
-    "Options:\n"
-    "  -h, --help              print this text and exit\n"
-    "  -p, --print-parameters  print the full documented default .prm and "
-    "exit\n";
-
   /// Collapse a deal.II exception text or any message into one line.
   std::string
   one_line(const std::string &text)
@@ -79,52 +69,66 @@ namespace
     fs::remove(probe, error);
   }
   /**
-   * The options and the parameter file's name.  Returns the exit code if
-   * the program is done (help, parameters printed, a bad option), -1 to
-   * run.
+   * Options that finish the program (help, version, printing the defaults,
+   * a bad command line): the exit code; -1 to go on.
    */
   int
-  parse_command_line(const int    argc,
-                     char        *argv[],
-                     const bool   root,
-                     std::string &prm_file)
+  handle_informational(const fgimpact::CommandLine::Options &options,
+                       const bool                            root)
+  {
+    using namespace fgimpact::CommandLine;
+    if (!root)
+      return options.action == Action::error ? 1 : 0;
+    switch (options.action)
+      {
+        case Action::help:
+          std::cout << usage();
+          return 0;
+        case Action::version:
+          std::cout << version_text();
+          return 0;
+        case Action::print_parameters:
+          {
+            dealii::ParameterHandler prm;
+            fgimpact::Parameters::declare_parameters(prm);
+            prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+            return 0;
+          }
+        case Action::error:
+          std::cerr << "fgimpact: error: " << options.error
+                    << " (see fgimpact --help)\n"
+                    << usage();
+          return 1;
+        default:
+          return -1;
+      }
+  }
+
+  /// Rank 0 reads the input (a file or standard input, includes
+  /// expanded), every rank gets its text; throws ExcMessage.
+  std::unique_ptr<fgimpact::InputFile>
+  read_input(const std::string &prm_file, const MPI_Comm comm)
   {
     using namespace dealii;
-    for (int i = 1; i < argc; ++i)
-      {
-        const std::string arg = argv[i];
-        if (arg == "-h" || arg == "--help")
-          {
-            if (root)
-              std::cout << usage;
-            return 0;
-          }
-        else if (arg == "-p" || arg == "--print-parameters")
-          {
-            ParameterHandler prm;
-            fgimpact::Parameters::declare_parameters(prm);
-            if (root)
-              prm.print_parameters(std::cout, ParameterHandler::PRM);
-            return 0;
-          }
-        else if (!arg.empty() && arg[0] == '-')
-          {
-            if (root)
-              std::cerr << "fgimpact: error: unknown option '" << arg
-                        << "' (see fgimpact --help)\n";
-            return 1;
-          }
-        else if (prm_file.empty())
-          prm_file = arg;
-        else
-          {
-            if (root)
-              std::cerr
-                << "fgimpact: error: more than one parameter file given\n";
-            return 1;
-          }
-      }
-    return -1;
+    std::unique_ptr<fgimpact::InputFile> input;
+    std::string                          error;
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    if (root)
+      try
+        {
+          input = std::make_unique<fgimpact::InputFile>(prm_file);
+        }
+      catch (const ExceptionBase &e)
+        {
+          error = message_of(e);
+        }
+    error = Utilities::MPI::broadcast(comm, error, 0);
+    AssertThrow(error.empty(), ExcMessage(error));
+    const std::string text =
+      Utilities::MPI::broadcast(comm, root ? input->expanded() : "", 0);
+    if (!root)
+      input = std::make_unique<fgimpact::InputFile>(prm_file, text);
+    return input;
   }
 } // namespace
 
@@ -136,22 +140,26 @@ main(int argc, char *argv[])
   using namespace dealii;
   using namespace fgimpact;
 
+  CommandLine::prepare_mpi_environment();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  Logger     logger(root);
 
-  std::string prm_file;
-  const int   exit_code = parse_command_line(argc, argv, root, prm_file);
+  const CommandLine::Options options   = CommandLine::parse(argc, argv);
+  const int                  exit_code = handle_informational(options, root);
   if (exit_code >= 0)
     return exit_code;
+  const std::string &prm_file = options.prm_file;
 
-  ParameterHandler     prm;
-  fgimpact::Parameters parameters;
+  ParameterHandler           prm;
+  fgimpact::Parameters       parameters;
+  std::unique_ptr<InputFile> input;
   // Input errors: everything is checked before any file is written.
   try
     {
       Parameters::declare_parameters(prm);
-      if (!prm_file.empty())
-        prm.parse_input(prm_file);
+      input = read_input(prm_file, MPI_COMM_WORLD);
+      input->parse_into(prm, options.overrides);
       parameters.parse_parameters(prm);
       parameters.validate();
     }
@@ -159,7 +167,7 @@ main(int argc, char *argv[])
     {
       if (root)
         std::cerr << "fgimpact: error in "
-                  << (prm_file.empty() ? "defaults" : prm_file) << ": "
+                  << (prm_file == "-" ? "standard input" : prm_file) << ": "
                   << message_of(e) << '\n';
       return 1;
     }
@@ -179,6 +187,14 @@ main(int argc, char *argv[])
       try
         {
           simulator.setup();
+          if (options.action == CommandLine::Action::validate)
+            {
+              if (root)
+                std::cout << "fgimpact: " << prm_file
+                          << " is valid (checked and set up; nothing run, "
+                             "nothing written)\n";
+              return 0;
+            }
           // Rank 0 makes and checks the directory; every rank learns the
           // outcome, so that all stop together.
           std::string error;
@@ -200,12 +216,20 @@ main(int argc, char *argv[])
             std::cerr << "fgimpact: error: " << message_of(e) << '\n';
           return 1;
         }
+      const std::string &directory = parameters.output.directory;
       if (root)
         {
-          std::ofstream out(parameters.output.directory + "/parameters.prm");
+          const std::string provenance = CommandLine::provenance(
+            argc, argv, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+          logger.open(directory + "/log.txt", provenance);
+          SummaryWriter::set_preamble(provenance);
+          std::ofstream out(directory + "/parameters.prm");
           prm.print_parameters(out, ParameterHandler::PRM);
+          std::ofstream(directory + "/input.prm") << input->original();
         }
       simulator.run();
+      if (root)
+        std::cout << "fgimpact: results in " << directory << '\n';
     }
   catch (const ExceptionBase &e)
     {

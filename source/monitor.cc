@@ -42,6 +42,13 @@ namespace fgimpact
                         "(spmv_ms, solve_ms in summary.txt, for the "
                         "benchmarks in bench/); costs 20 products and 3 "
                         "solves at set-up.");
+      prm.declare_entry("VTU compression",
+                        "speed",
+                        Patterns::Selection("none|speed|default|best"),
+                        "zlib level of the VTU data: none, speed (fastest, "
+                        "default), default (zlib's compromise) or best "
+                        "(smallest files, several times slower).  The values "
+                        "in the files are the same at every level.");
     }
     prm.leave_subsection();
   }
@@ -57,6 +64,13 @@ namespace fgimpact
     log_interval    = prm.get_integer("Log interval");
     print_timing    = prm.get_bool("Print timing");
     instrumentation = prm.get_bool("Instrumentation");
+
+    const std::string level = prm.get("VTU compression");
+    vtu_compression =
+      level == "none"    ? DataOutBase::VtkFlags::no_compression :
+      level == "default" ? DataOutBase::VtkFlags::default_compression :
+      level == "best"    ? DataOutBase::VtkFlags::best_compression :
+                           DataOutBase::VtkFlags::best_speed;
     prm.leave_subsection();
   }
 
@@ -143,6 +157,7 @@ namespace fgimpact
                                             2))
     , top_probe(plate,
                 plate.get_geometry().centre(plate.get_geometry().thickness()))
+    , progress(n_steps, root && parameters.print_timing)
   {
     output_timer.stop();
     output_timer.reset();
@@ -167,7 +182,9 @@ namespace fgimpact
                                       header);
       }
     if (parameters.vtu_interval > 0)
-      vtu = std::make_unique<VtuWriter>(plate, parameters.directory);
+      vtu = std::make_unique<VtuWriter>(plate,
+                                        parameters.directory,
+                                        parameters.vtu_compression);
   }
 
 
@@ -318,6 +335,7 @@ namespace fgimpact
                       sample.E_total / E0 - 1.);
         pcout << line;
       }
+    progress.update(step, std::cout);
   }
 
 

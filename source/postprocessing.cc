@@ -81,10 +81,14 @@ namespace fgimpact
 
 
 
-  VtuWriter::VtuWriter(const PlateModel &plate, const std::string &directory)
+  VtuWriter::VtuWriter(
+    const PlateModel                                 &plate,
+    const std::string                                &directory,
+    const DataOutBase::VtkFlags::ZlibCompressionLevel compression)
     : plate(plate)
     , directory(directory)
     , postprocessor(plate)
+    , compression(compression)
   {
     // DataOut reads ghost values: ghosted copies, allocated once.
     IndexSet relevant;
@@ -156,6 +160,8 @@ namespace fgimpact
       DataOutBase::VtkFlags flags;
       flags.time  = t;
       flags.cycle = step;
+
+      flags.compression_level = compression;
       data_out.set_flags(flags);
 
       std::ofstream piece(directory + "/" + base + "." +
@@ -247,8 +253,24 @@ namespace fgimpact
   SummaryWriter::write(const std::string &filename) const
   {
     std::ofstream out(filename);
-    out << text;
+    out << preamble() << text;
     out.close();
     AssertThrow(out, ExcMessage("cannot write " + filename));
+  }
+
+
+  std::string &
+  SummaryWriter::preamble()
+  {
+    static std::string lines;
+    return lines;
+  }
+
+
+
+  void
+  SummaryWriter::set_preamble(const std::string &comment_lines)
+  {
+    preamble() = comment_lines;
   }
 } // namespace fgimpact

@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 
 #include <fgimpact/contact_model.h>
+#include <fgimpact/logger.h>
 #include <fgimpact/plate_model.h>
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/probes.h>
@@ -30,6 +31,10 @@ namespace fgimpact
     unsigned int log_interval    = 50;
     bool         print_timing    = true;
     bool         instrumentation = false;
+
+    /// Entry "VTU compression" (zlib level of the VTU data).
+    DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression =
+      DataOutBase::VtkFlags::best_speed;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -143,6 +148,7 @@ namespace fgimpact
     std::unique_ptr<VtuWriter> vtu;
     std::vector<RowObserver>   observers;
     Timer                      output_timer;
+    ProgressMeter              progress;
 
     // Contact episodes: alpha(0) = 0 with alpha' > 0 counts as contact.
     bool   in_contact     = true;

@@ -1,6 +1,8 @@
 #ifndef fgimpact_postprocessing_h
 #define fgimpact_postprocessing_h
 
+#include <deal.II/base/data_out_base.h>
+
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <deal.II/numerics/data_postprocessor.h>
@@ -57,7 +59,10 @@ namespace fgimpact
   class VtuWriter
   {
   public:
-    VtuWriter(const PlateModel &plate, const std::string &directory);
+    VtuWriter(const PlateModel                                 &plate,
+              const std::string                                &directory,
+              const DataOutBase::VtkFlags::ZlibCompressionLevel compression =
+                DataOutBase::VtkFlags::best_speed);
 
     /// Waits for the last snapshot to be written.
     ~VtuWriter();
@@ -85,6 +90,8 @@ namespace fgimpact
     TrilinosWrappers::MPI::Vector               u_ghosted, v_ghosted;
     std::vector<std::pair<double, std::string>> times_and_names;
     std::future<void>                           pending;
+
+    const DataOutBase::VtkFlags::ZlibCompressionLevel compression;
   };
 
 
@@ -129,7 +136,15 @@ namespace fgimpact
     void
     write(const std::string &filename) const;
 
+    /// Lines written first by every write(), as '#' comments (the run's
+    /// provenance; set once by the executable, empty by default).
+    static void
+    set_preamble(const std::string &comment_lines);
+
   private:
+    static std::string &
+    preamble();
+
     std::string text;
   };
 } // namespace fgimpact

@@ -1,0 +1,86 @@
+#ifndef fgimpact_input_file_h
+#define fgimpact_input_file_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * A .prm input as the executable reads it: from a file or standard input
+   * ("-"), with every `include` line replaced by the included file's text,
+   * the included path resolved relative to the directory of the file that
+   * contains the line (deal.II itself resolves it against the working
+   * directory; a path found only there is still accepted, for files written
+   * that way).  Parsing it into a ParameterHandler, command-line overrides
+   * ("Section/Entry=value") on top, and one-line errors that name the
+   * entry and suggest the closest declared name ("did you mean").
+   */
+  class InputFile
+  {
+  public:
+    /// Read `filename` ("-": standard input) and expand its includes;
+    /// throws ExcMessage (one line) on a missing file or include loop.
+    explicit InputFile(const std::string &filename);
+
+    /// An input given as text (e.g. broadcast from rank 0); no origins.
+    InputFile(const std::string &name, const std::string &expanded_text);
+
+    /// The text as given (the top-level file, includes not expanded).
+    const std::string &
+    original() const;
+
+    /// The text with the includes expanded (what deal.II parses).
+    const std::string &
+    expanded() const;
+
+    /**
+     * Parse the expanded text into prm (whose entries are declared), then
+     * apply the overrides in order.  Throws ExcMessage with a one-line
+     * message naming the file and line or the override, and for an
+     * undeclared entry or subsection the closest declared names.
+     */
+    void
+    parse_into(ParameterHandler               &prm,
+               const std::vector<std::string> &overrides) const;
+
+  private:
+    /// Where each line of the expanded text comes from.
+    struct Origin
+    {
+      std::string  file;
+      unsigned int line;
+    };
+
+    void
+    expand(const std::string &filename,
+           const std::string &text,
+           const unsigned int depth);
+
+    /// The first undeclared subsection or entry of the expanded text, as a
+    /// message with a suggestion; empty if every name is declared.
+    std::string
+    find_undeclared_name(const ParameterHandler &prm) const;
+
+    std::string         name;
+    std::string         original_text;
+    std::string         expanded_text;
+    std::vector<Origin> origins;
+  };
+
+
+
+  /**
+   * Set one entry from "Section/Sub/Entry=value" (a top-level entry has no
+   * '/').  Throws ExcMessage naming the override: an undeclared path (with
+   * the closest declared names) or a value the entry's pattern rejects.
+   */
+  void
+  apply_override(ParameterHandler &prm, const std::string &assignment);
+} // namespace fgimpact
+
+#endif

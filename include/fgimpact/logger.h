@@ -1,0 +1,96 @@
+#ifndef fgimpact_logger_h
+#define fgimpact_logger_h
+
+#include <chrono>
+#include <fstream>
+#include <memory>
+#include <ostream>
+#include <streambuf>
+#include <string>
+
+namespace fgimpact
+{
+  /**
+   * The executable's log: while it lives, everything written to std::cout
+   * and std::cerr is flushed line by line (so that a redirected stdout
+   * shows the run as it goes, and a killed run keeps its log) and copied
+   * into log.txt once open() names it; what was printed before open() is
+   * kept and written first.  Only rank 0 logs; on other ranks it does
+   * nothing.
+   */
+  class Logger
+  {
+  public:
+    explicit Logger(const bool active);
+
+    /// Restores std::cout and std::cerr.
+    ~Logger();
+
+    /// Start log.txt: `header` first, then everything printed so far.
+    void
+    open(const std::string &filename, const std::string &header);
+
+  private:
+    /// Where both streams' copies go: a file once open, a string before.
+    struct Sink
+    {
+      std::ofstream file;
+      std::string   pending;
+
+      void
+      write(const char *text, const std::streamsize n);
+    };
+
+    /// Writes to the original buffer and the sink, flushing at newlines.
+    class TeeBuffer : public std::streambuf
+    {
+    public:
+      TeeBuffer(std::streambuf *original, Sink &sink);
+
+      std::streambuf *const original;
+
+    protected:
+      int_type
+      overflow(int_type c) override;
+      std::streamsize
+      xsputn(const char *s, std::streamsize n) override;
+      int
+      sync() override;
+
+    private:
+      Sink &sink;
+    };
+
+    const bool                 active;
+    Sink                       sink;
+    std::unique_ptr<TeeBuffer> out, err;
+  };
+
+
+
+  /**
+   * Progress lines every tenth of the time steps: the step, the elapsed
+   * wall time since the first step and the estimated time to the end.  They
+   * hold wall-clock times, so the monitor prints them only with
+   * Output/Print timing = true (the reproducible logs of the tests switch
+   * it off).
+   */
+  class ProgressMeter
+  {
+  public:
+    ProgressMeter(const unsigned int n_steps, const bool enabled);
+
+    /// Call after every step (0 starts the clock); prints when step crosses
+    /// the next tenth.
+    void
+    update(const unsigned int step, std::ostream &out);
+
+  private:
+    const unsigned int                    n_steps;
+    const bool                            enabled;
+    unsigned int                          next_tenth = 1;
+    std::chrono::steady_clock::time_point start;
+  };
+} // namespace fgimpact
+
+#endif

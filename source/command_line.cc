@@ -1,0 +1,201 @@
+#include <deal.II/base/config.h>
+
+#include <fgimpact/command_line.h>
+#include <fgimpact/version.h>
+
+#include <cstdlib>
+#include <ctime>
+#include <string>
+#include <unistd.h>
+
+namespace fgimpact
+{
+  namespace CommandLine
+  {
+    Options
+    parse(const int argc, const char *const *argv)
+    {
+      Options options;
+      if (argc < 2)
+        {
+          options.action = Action::error;
+          options.error  = "no parameter file given";
+          return options;
+        }
+      for (int i = 1; i < argc; ++i)
+        {
+          const std::string arg = argv[i];
+          if (arg == "-h" || arg == "--help")
+            options.action = Action::help;
+          else if (arg == "--version")
+            options.action = Action::version;
+          else if (arg == "-p" || arg == "--print-parameters")
+            options.action = Action::print_parameters;
+          else if (arg == "-s" || arg == "--set")
+            {
+              if (i + 1 == argc)
+                {
+                  options.action = Action::error;
+                  options.error  = "option '" + arg +
+                                  "' needs an argument "
+                                  "\"Section/Entry=value\"";
+                  return options;
+                }
+              options.overrides.emplace_back(argv[++i]);
+            }
+          else if (arg == "--validate")
+            {
+              if (options.action == Action::run)
+                options.action = Action::validate;
+            }
+          else if (arg.size() > 1 && arg[0] == '-')
+            {
+              options.action = Action::error;
+              options.error  = "unknown option '" + arg + "'";
+              return options;
+            }
+          else if (options.prm_file.empty())
+            options.prm_file = arg;
+          else
+            {
+              options.action = Action::error;
+              options.error  = "more than one parameter file given ('" +
+                              options.prm_file + "', '" + arg + "')";
+              return options;
+            }
+          // --help, --version and --print-parameters win over the rest.
+          if (options.action == Action::help ||
+              options.action == Action::version ||
+              options.action == Action::print_parameters)
+            return options;
+        }
+      if (options.prm_file.empty())
+        {
+          options.action = Action::error;
+          options.error  = "no parameter file given";
+        }
+      return options;
+    }
+
+
+
+    std::string
+    usage()
+    {
+      return "Usage: fgimpact [options] parameter_file.prm\n"
+             "       fgimpact [options] -      (read the .prm from standard "
+             "input)\n"
+             "\n"
+             "Simulates a sphere striking a functionally graded plate (3D "
+             "elasticity,\n"
+             "graded 8-node bricks, modified Hertz contact, Newmark + "
+             "Newton) and\n"
+             "writes history.csv, summary.txt, parameters.prm (expanded), "
+             "input.prm\n"
+             "(the input as given), log.txt and optional VTU/PVD files into "
+             "the\n"
+             "output directory named in the parameter file.  A parameter "
+             "file\n"
+             "needs only the entries that differ from the defaults; an "
+             "`include`\n"
+             "line is resolved relative to the file that contains it.\n"
+             "\n"
+             "Options:\n"
+             "  -s, --set \"Section/Entry=value\"\n"
+             "                          set an entry after reading the file, "
+             "as if\n"
+             "                          edited there (repeatable; nested "
+             "subsections\n"
+             "                          joined by '/', e.g. \"Impactor/"
+             "Initial velocity=2\")\n"
+             "  --validate              read and check the input (mesh "
+             "included),\n"
+             "                          print its size, run nothing\n"
+             "  -p, --print-parameters  print the full documented default "
+             ".prm and exit\n"
+             "  --version               print the program, git, deal.II and "
+             "Trilinos\n"
+             "                          versions and exit\n"
+             "  -h, --help              print this text and exit\n";
+    }
+
+
+
+    std::string
+    version_text()
+    {
+      return std::string("fgimpact ") + FGIMPACT_VERSION + "\n" +
+             "git commit " + FGIMPACT_GIT_COMMIT + "\n" + "deal.II " +
+             DEAL_II_PACKAGE_VERSION + "\n" + "Trilinos " +
+             std::to_string(DEAL_II_TRILINOS_VERSION_MAJOR) + "." +
+             std::to_string(DEAL_II_TRILINOS_VERSION_MINOR) + "." +
+             std::to_string(DEAL_II_TRILINOS_VERSION_SUBMINOR) + "\n";
+    }
+
+
+
+    namespace
+    {
+      /// A shell word: quoted when it holds anything but safe characters.
+      std::string
+      shell_quote(const std::string &word)
+      {
+        const std::string safe = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOP"
+                                 "QRSTUVWXYZ0123456789_-./=:,+@%";
+        if (!word.empty() && word.find_first_not_of(safe) == std::string::npos)
+          return word;
+        std::string quoted = "'";
+        for (const char c : word)
+          quoted += (c == '\'' ? std::string("'\\''") : std::string(1, c));
+        return quoted + "'";
+      }
+    } // namespace
+
+
+
+    std::string
+    provenance(const int          argc,
+               const char *const *argv,
+               const unsigned int n_mpi_ranks)
+    {
+      std::string text;
+      std::string lines = version_text();
+      for (std::size_t start = 0, end; start < lines.size(); start = end + 1)
+        {
+          end = lines.find('\n', start);
+          text += "# " + lines.substr(start, end - start) + "\n";
+        }
+      char              date[64];
+      const std::time_t now = std::time(nullptr);
+      std::strftime(date,
+                    sizeof(date),
+                    "%Y-%m-%dT%H:%M:%SZ",
+                    std::gmtime(&now));
+      char host[256] = "unknown";
+      if (gethostname(host, sizeof(host) - 1) != 0)
+        host[0] = '\0';
+      host[sizeof(host) - 1] = '\0';
+      text += std::string("# date ") + date + "\n# host " + host + "\n";
+      text += "# MPI ranks " + std::to_string(n_mpi_ranks) + "\n";
+      text += "# command";
+      for (int i = 0; i < argc; ++i)
+        text += " " + shell_quote(argv[i]);
+      return text + "\n";
+    }
+
+
+
+    void
+    prepare_mpi_environment()
+    {
+      for (const char *launcher_variable :
+           {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK"})
+        if (std::getenv(launcher_variable) != nullptr)
+          return;
+      // The last argument 0: a value already in the environment wins.
+      setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
+      setenv("OMPI_MCA_btl", "self,vader", 0);
+      setenv("OMPI_MCA_pml", "ob1", 0);
+    }
+  } // namespace CommandLine
+} // namespace fgimpact

@@ -1,0 +1,137 @@
+#include <fgimpact/logger.h>
+
+#include <cstdio>
+#include <cstring>
+#include <iostream>
+
+namespace fgimpact
+{
+  void
+  Logger::Sink::write(const char *text, const std::streamsize n)
+  {
+    if (file.is_open())
+      file.write(text, n);
+    else
+      pending.append(text, n);
+  }
+
+
+
+  Logger::TeeBuffer::TeeBuffer(std::streambuf *original, Sink &sink)
+    : original(original)
+    , sink(sink)
+  {}
+
+
+
+  Logger::TeeBuffer::int_type
+  Logger::TeeBuffer::overflow(int_type c)
+  {
+    if (traits_type::eq_int_type(c, traits_type::eof()))
+      return traits_type::not_eof(c);
+    const char ch = traits_type::to_char_type(c);
+    xsputn(&ch, 1);
+    return c;
+  }
+
+
+
+  std::streamsize
+  Logger::TeeBuffer::xsputn(const char *s, std::streamsize n)
+  {
+    const std::streamsize written = original->sputn(s, n);
+    sink.write(s, n);
+    if (std::memchr(s, '\n', n) != nullptr)
+      sync();
+    return written;
+  }
+
+
+
+  int
+  Logger::TeeBuffer::sync()
+  {
+    if (sink.file.is_open())
+      sink.file.flush();
+    return original->pubsync();
+  }
+
+
+
+  Logger::Logger(const bool active)
+    : active(active)
+  {
+    if (!active)
+      return;
+    // printf-style output of the libraries as well: line by line.
+    std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
+    out = std::make_unique<TeeBuffer>(std::cout.rdbuf(), sink);
+    err = std::make_unique<TeeBuffer>(std::cerr.rdbuf(), sink);
+    std::cout.rdbuf(out.get());
+    std::cerr.rdbuf(err.get());
+  }
+
+
+
+  Logger::~Logger()
+  {
+    if (!active)
+      return;
+    std::cout.flush();
+    std::cerr.flush();
+    std::cout.rdbuf(out->original);
+    std::cerr.rdbuf(err->original);
+  }
+
+
+
+  void
+  Logger::open(const std::string &filename, const std::string &header)
+  {
+    if (!active)
+      return;
+    sink.file.open(filename);
+    sink.file << header << sink.pending << std::flush;
+    sink.pending.clear();
+  }
+
+
+
+  ProgressMeter::ProgressMeter(const unsigned int n_steps, const bool enabled)
+    : n_steps(n_steps)
+    , enabled(enabled && n_steps >= 10)
+  {}
+
+
+
+  void
+  ProgressMeter::update(const unsigned int step, std::ostream &out)
+  {
+    if (!enabled)
+      return;
+    if (step == 0)
+      {
+        start = std::chrono::steady_clock::now();
+        return;
+      }
+    if (next_tenth > 10 || 10ul * step < next_tenth * 1ul * n_steps)
+      return;
+    while (next_tenth <= 10 && 10ul * step >= next_tenth * 1ul * n_steps)
+      ++next_tenth;
+    const double elapsed =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+    const double eta = elapsed * (n_steps - step) / step;
+    char         line[160];
+    std::snprintf(line,
+                  sizeof(line),
+                  "  progress %3u %%  step %u of %u  elapsed %.1f s  ETA "
+                  "%.1f s\n",
+                  static_cast<unsigned int>((100ul * step) / n_steps),
+                  step,
+                  n_steps,
+                  elapsed,
+                  eta);
+    out << line;
+  }
+} // namespace fgimpact
