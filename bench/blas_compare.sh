@@ -94,7 +94,7 @@ for case in "40 20 4 400" "80 40 8 20"; do
       "Output/Instrumentation=true" "Output/Directory=$dir" "Output/VTU interval=0" "Output/Log interval=0"
     loaded=$("${ENVV[@]}" ldd "$exe" | awk '$1 == "libblas.so.3" {print $3}')
     loaded=$(readlink -f "$loaded")
-    "${ENVV[@]}" /usr/bin/time -v -o "$dir/time.txt" "$exe" "$dir/run.prm" > "$dir/log.txt" 2>&1
+    "${ENVV[@]}" /usr/bin/time -v -o "$dir/time.txt" "$exe" "$dir/run.prm" > "$dir/run.log" 2>&1
     rss=$(gnu_time_rss_mb "$dir/time.txt" %.1f)
     line=$(awk -v m="$method" -v b="$blas" -v mesh="$mesh" -v T="$T" -v lib="$loaded" \
       -v n="$(summary_value "$dir" n_dofs)" \

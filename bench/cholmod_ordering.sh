@@ -32,7 +32,7 @@ for c in "${cases[@]}"; do
       "Geometry/Subdivisions z=$nz" "Time integration/End time=${T}e-6" \
       "Linear solver/Type=cholmod" "Linear solver/CHOLMOD ordering=$ordering" \
       "Output/Instrumentation=true" "Output/Directory=$dir" "Output/VTU interval=0" "Output/Log interval=0"
-    /usr/bin/time -v -o "$dir/time.txt" "$exe" "$dir/run.prm" > "$dir/log.txt" 2>&1
+    /usr/bin/time -v -o "$dir/time.txt" "$exe" "$dir/run.prm" > "$dir/run.log" 2>&1
     rss=$(gnu_time_rss_mb "$dir/time.txt")
     vals=$ordering
     for k in factorization_s solve_ms spmv_ms time_per_step_ms; do

@@ -49,7 +49,7 @@ run() { # id study path ranks nx ny nz end_us
   printf '%-28s ranks %s %-11s ... ' "$id" "$ranks" "${nx}x${ny}x${nz}"
   local status=0
   timeout 1800 /usr/bin/time -v -o "$dir/time.txt" \
-    mpirun -n "$ranks" "$exe" "$dir/run.prm" > "$dir/log.txt" 2>&1 || status=$?
+    mpirun -n "$ranks" "$exe" "$dir/run.prm" > "$dir/run.log" 2>&1 || status=$?
   if [ ! -s "$dir/summary.txt" ]; then
     echo "FAILED (exit $status)"
     echo "$id,$study,$path,$ranks,${nx}x${ny}x${nz},,,,,,,,,failed" >> "$csv"

@@ -11,7 +11,7 @@
 #
 # The executable is $FGIMPACT (default build/fgimpact); it is copied to
 # DIR/fgimpact_bench first, so that a rebuild during the benchmark does not
-# change it.  Every run gets DIR/runs/<id>/{run.prm,log.txt,time.txt,summary.txt}.
+# change it.  Every run gets DIR/runs/<id>/{run.prm,run.log (stdout; fgimpact writes its own log.txt too),time.txt,summary.txt}.
 # Results: DIR/results.csv and DIR/results.md (Markdown table); plots with
 #   /usr/bin/python3 bench/plot_benchmark.py DIR/results.csv
 #
@@ -136,10 +136,10 @@ run_case() { # id group scheme solver precond nx ny nz end_us [Section/Entry=val
   local status=0
   # 20 minutes hard limit per run (none of the planned rows comes close).
   timeout 1200 /usr/bin/time -v -o "$dir/time.txt" "$exe" "$dir/run.prm" \
-    > "$dir/log.txt" 2>&1 || status=$?
+    > "$dir/run.log" 2>&1 || status=$?
   local note=""
   if [ ! -s "$dir/summary.txt" ]; then
-    note="failed (exit $status): $(grep -m1 -iE 'error|exception|what' "$dir/log.txt" | cut -c1-150)"
+    note="failed (exit $status): $(grep -m1 -iE 'error|exception|what' "$dir/run.log" | cut -c1-150)"
     echo "FAILED (exit $status)"
     echo "$id,$group,$scheme,$solver,$precond,$mesh,,$T,,,,,,,,,,,,,,,,,,,,$status,$(csv_quote "$note")" >> "$csv"
     return 0
@@ -160,7 +160,7 @@ run_case() { # id group scheme solver precond nx ny nz end_us [Section/Entry=val
   local elapsed rss_mb dt
   elapsed=$(gnu_time_elapsed_s "$dir/time.txt")
   rss_mb=$(gnu_time_rss_mb "$dir/time.txt" %.1f)
-  dt=$(sed -n 's/.*; dt = \([0-9.e+-]*\) us.*/\1/p' "$dir/log.txt" | head -1)
+  dt=$(sed -n 's/.*; dt = \([0-9.e+-]*\) us.*/\1/p' "$dir/run.log" | head -1)
   # dt from the step count when stdout was lost (the MUMPS crash at exit).
   [ -z "$dt" ] && dt=$(awk -v T="$T" -v n="$n_steps" 'BEGIN {printf "%.6g", T / n}')
   awk -v id="$id" -v group="$group" -v scheme="$scheme" -v solver="$solver" \

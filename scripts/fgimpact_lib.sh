@@ -10,10 +10,11 @@
 #       (Accuracy).  Overrides of one subsection are grouped, in the order
 #       their subsections first appear; a later override of the same entry
 #       wins (deal.II reads the lines in order).  BASE is usually
-#       prm/default.prm; an empty BASE writes no include.  deal.II opens an
-#       include relative to the working directory of the run, not relative
-#       to OUT, so BASE must be a path from the directory fgimpact runs in
-#       (the repository root); write_prm fails when it does not exist there.
+#       prm/default.prm; an empty BASE writes no include.  BASE is a path
+#       from the working directory of the caller; the include line holds its
+#       absolute path, so OUT can live anywhere (fgimpact resolves a relative
+#       include against the including file's directory).  write_prm fails
+#       when BASE does not exist.
 #   summary_value DIR KEY
 #       Print the value of KEY in DIR/summary.txt ("key = value" lines);
 #       print an error naming the file and return 1 when the file or the key
@@ -39,10 +40,10 @@ write_prm() {
   local out=$1 base=$2 arg key section seen indent part
   shift 2
   if [ -n "$base" ] && [ ! -f "$base" ]; then
-    echo "write_prm: base $base not found in $(pwd) (an include is opened" \
-         "relative to the working directory: run from the repository root)" >&2
+    echo "write_prm: base $base not found in $(pwd)" >&2
     return 1
   fi
+  [ -n "$base" ] && base="$(cd "$(dirname "$base")" && pwd)/$(basename "$base")"
   local -a sections=()
   for arg in "$@"; do
     key=${arg%%=*}
