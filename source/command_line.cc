@@ -18,8 +18,9 @@ namespace fgimpact
       Options options;
       if (argc < 2)
         {
-          options.action = Action::error;
-          options.error  = "no parameter file given";
+          options.action     = Action::error;
+          options.error      = "no parameter file given";
+          options.show_usage = true;
           return options;
         }
       for (int i = 1; i < argc; ++i)

@@ -97,7 +97,7 @@ namespace
         case Action::error:
           std::cerr << "fgimpact: error: " << options.error
                     << " (see fgimpact --help)\n"
-                    << usage();
+                    << (options.show_usage ? usage() : "");
           return 1;
         default:
           return -1;

@@ -1,0 +1,219 @@
+// The executable's command line, run as a separate process: an override
+// `-s "Section/Entry=value"` gives the same history.csv as editing the
+// file, so do the .prm read from standard input and an include resolved
+// relative to the including file; --validate checks and writes nothing;
+// --version and the provenance lines; one-line errors with "did you mean";
+// no argument prints the usage and exits 1.
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+  bool all_ok = true;
+
+  /// Run the executable with arguments args (shell words); stdout and
+  /// stderr into cli.stdout and cli.stderr; the exit code.
+  int
+  run(const std::string &args)
+  {
+    const std::string command = std::string(FGIMPACT_EXECUTABLE) + " " + args +
+                                " > cli.stdout 2> cli.stderr";
+    const int status = std::system(command.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+  std::string
+  read(const std::string &filename)
+  {
+    std::ifstream     in(filename);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+  }
+
+  void
+  write(const std::string &filename, const std::string &text)
+  {
+    std::ofstream(filename) << text;
+  }
+
+  bool
+  contains(const std::string &text, const std::string &part)
+  {
+    return text.find(part) != std::string::npos;
+  }
+
+  unsigned int
+  n_lines(const std::string &text)
+  {
+    unsigned int n = 0;
+    for (const char c : text)
+      n += (c == '\n');
+    return n;
+  }
+
+  void
+  check(const std::string &what, const bool ok)
+  {
+    all_ok = all_ok && ok;
+    std::printf("%s: %s\n", what.c_str(), ok ? "yes" : "NO");
+  }
+
+  /// A small, fast impact scene writing into directory `out`.
+  std::string
+  scene(const std::string &out, const std::string &extra = "")
+  {
+    return "subsection Geometry\n set Subdivisions x = 10\n"
+           " set Subdivisions y = 6\n set Subdivisions z = 2\nend\n"
+           "subsection Time integration\n set Time step = 2e-6\n"
+           " set End time = 100e-6\nend\n"
+           "subsection Output\n set Directory = " +
+           out + "\n set Log interval = 0\n set Print timing = false\nend\n" +
+           extra;
+  }
+
+  /// history.csv of a run, or "" if missing.
+  std::string
+  history(const std::string &out)
+  {
+    return read(out + "/history.csv");
+  }
+} // namespace
+
+
+
+int
+main()
+{
+  for (const char *d : {"cli_base",
+                        "cli_edited",
+                        "cli_set",
+                        "cli_stdin",
+                        "cli_include",
+                        "cli_validate",
+                        "cli_bad",
+                        "cli_sub"})
+    fs::remove_all(d);
+  const std::string velocity_2 =
+    "subsection Impactor\n set Initial velocity = 2\nend\n";
+
+  // --version and no arguments.
+  {
+    const int         code = run("--version");
+    const std::string out  = read("cli.stdout");
+    check("--version exits 0 and names program, commit, deal.II, Trilinos",
+          code == 0 && contains(out, "fgimpact ") &&
+            contains(out, "git commit ") && contains(out, "deal.II 9.") &&
+            contains(out, "Trilinos "));
+    const int code_none = run("");
+    check("no argument: exit 1 and the usage",
+          code_none == 1 && contains(read("cli.stderr"), "Usage:"));
+  }
+
+  // The base run, the edited file, and the same edit by -s.
+  write("cli_base.prm", scene("cli_base"));
+  write("cli_edited.prm", scene("cli_edited", velocity_2));
+  write("cli_set.prm", scene("cli_set"));
+  check("base run exits 0", run("cli_base.prm") == 0);
+  check("edited run exits 0", run("cli_edited.prm") == 0);
+  check("-s run exits 0",
+        run("cli_set.prm -s 'Impactor/Initial velocity=2'") == 0);
+  check("-s gives the edited file's history.csv, byte for byte",
+        !history("cli_set").empty() &&
+          history("cli_set") == history("cli_edited"));
+  check("... and it differs from the base run's",
+        history("cli_set") != history("cli_base"));
+  check("the later of two -s of one entry wins",
+        run("cli_set.prm -s 'Impactor/Initial velocity=3' "
+            "-s 'Impactor/Initial velocity=2'") == 0 &&
+          history("cli_set") == history("cli_edited"));
+
+  // The .prm from standard input.
+  write("cli_stdin.prm", scene("cli_stdin", velocity_2));
+  check("'-' reads standard input: the same history",
+        run("- < cli_stdin.prm") == 0 &&
+          history("cli_stdin") == history("cli_edited"));
+
+  // An include relative to the including file (run from another directory).
+  fs::create_directories("cli_sub/deeper");
+  write("cli_sub/deeper/base.prm", scene("cli_include"));
+  write("cli_sub/case.prm", "include deeper/base.prm\n" + velocity_2);
+  check("include resolved relative to the including file",
+        run("cli_sub/case.prm") == 0 &&
+          history("cli_include") == history("cli_edited"));
+  write("cli_sub/loop.prm", "include loop.prm\n");
+  {
+    const int         code = run("cli_sub/loop.prm");
+    const std::string err  = read("cli.stderr");
+    check("an include loop: exit 1, one line naming the include",
+          code == 1 && n_lines(err) == 1 && contains(err, "include"));
+  }
+
+  // Provenance and the log.
+  {
+    const std::string log     = read("cli_set/log.txt");
+    const std::string summary = read("cli_set/summary.txt");
+    check("log.txt starts with the version and has the command line",
+          log.rfind("# fgimpact ", 0) == 0 && contains(log, "# command ") &&
+            contains(log, "Impactor/Initial velocity=2") &&
+            contains(log, "# MPI ranks 1"));
+    check("log.txt holds the run's log and names the output directory",
+          contains(log, "peak force") &&
+            contains(log, "fgimpact: results in cli_set"));
+    check("summary.txt starts with '#' provenance lines, then the keys",
+          summary.rfind("# fgimpact ", 0) == 0 &&
+            contains(summary, "\npeak_contact_force_N = "));
+    check("input.prm is the input as given",
+          read("cli_set/input.prm") == read("cli_set.prm") &&
+            read("cli_include/input.prm") == read("cli_sub/case.prm"));
+  }
+
+  // --validate: checks, runs nothing, writes nothing.
+  write("cli_validate.prm", scene("cli_validate"));
+  check("--validate of a good file: exit 0, no output directory",
+        run("--validate cli_validate.prm") == 0 && !fs::exists("cli_validate"));
+  write("cli_bad.prm",
+        scene("cli_bad", "subsection Impactor\n set Radious = 0.01\nend\n"));
+  {
+    const int         code = run("--validate cli_bad.prm");
+    const std::string err  = read("cli.stderr");
+    check("--validate of a misspelled entry: exit 1, one line, 'did you "
+          "mean 'Radius'?'",
+          code == 1 && n_lines(err) == 1 &&
+            contains(err, "did you mean 'Radius'") && !fs::exists("cli_bad"));
+  }
+  write("cli_bad.prm",
+        scene("cli_bad", "subsection Impacter\n set Radius = 0.01\nend\n"));
+  {
+    const int         code = run("cli_bad.prm");
+    const std::string err  = read("cli.stderr");
+    check("a misspelled subsection: exit 1, one line, 'did you mean "
+          "'Impactor'?'",
+          code == 1 && n_lines(err) == 1 &&
+            contains(err, "did you mean 'Impactor'") && !fs::exists("cli_bad"));
+  }
+  {
+    const int code        = run("cli_base.prm -s 'Impactor/Initial velocty=2'");
+    const std::string err = read("cli.stderr");
+    check("-s with a misspelled path: exit 1, one line, the closest path",
+          code == 1 && n_lines(err) == 1 &&
+            contains(err, "did you mean 'Impactor/Initial velocity'"));
+  }
+  {
+    const int code = run("cli_base.prm -s 'Impactor/Initial velocity=x'");
+    const std::string err = read("cli.stderr");
+    check("-s with a bad value: exit 1, one line naming the entry",
+          code == 1 && n_lines(err) == 1 &&
+            contains(err, "Impactor/Initial velocity"));
+  }
+  std::printf("%s\n", all_ok ? "OK" : "FAILED");
+  return 0;
+}
