@@ -77,6 +77,8 @@ namespace
                        const bool                            root)
   {
     using namespace fgimpact::CommandLine;
+    if (options.action == Action::run || options.action == Action::validate)
+      return -1;
     if (!root)
       return options.action == Action::error ? 1 : 0;
     switch (options.action)
