@@ -32,8 +32,10 @@ namespace fgimpact
       prm.declare_entry("Print timing",
                         "true",
                         Patterns::Bool(),
-                        "Print the wall-clock timing table at the end (turn "
-                        "off for reproducible logs).");
+                        "Print the wall-clock timing table at the end and a "
+                        "progress line (elapsed time, estimate of the time "
+                        "left) at every tenth of the time steps (turn off "
+                        "for reproducible logs).");
       prm.declare_entry("Instrumentation",
                         "false",
                         Patterns::Bool(),
