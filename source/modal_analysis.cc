@@ -215,7 +215,9 @@ namespace fgimpact
 
 
   void
-  ModalAnalysis::write_output(const std::string &directory) const
+  ModalAnalysis::write_output(
+    const std::string                                &directory,
+    const DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression) const
   {
     if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
       {
@@ -244,7 +246,7 @@ namespace fgimpact
     // steps 1..N (ParaView's time bar then steps through the modes).
     TrilinosWrappers::MPI::Vector zero;
     plate.initialize_vector(zero);
-    VtuWriter vtu(plate, directory);
+    VtuWriter vtu(plate, directory, vtu_compression);
     for (unsigned int j = 0; j < shapes.size(); ++j)
       {
         TrilinosWrappers::MPI::Vector shape = shapes[j];

@@ -48,7 +48,8 @@ namespace fgimpact
                                 plate,
                                 impactor.impact_point(g.length(), g.width()));
         analysis.solve();
-        analysis.write_output(parameters.output.directory);
+        analysis.write_output(parameters.output.directory,
+                              parameters.output.vtu_compression);
         const auto &r = analysis.get_results();
         char        line[300];
         std::snprintf(line,
@@ -82,7 +83,8 @@ namespace fgimpact
                                parameters.linear_solver,
                                plate);
         analysis.solve();
-        analysis.write_output(parameters.output.directory);
+        analysis.write_output(parameters.output.directory,
+                              parameters.output.vtu_compression);
         pcout << "  " << analysis.get_modes().size() << " modes after "
               << analysis.n_iterations() << " subspace iterations:\n";
         for (unsigned int j = 0; j < analysis.get_modes().size(); ++j)

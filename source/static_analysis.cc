@@ -152,7 +152,9 @@ namespace fgimpact
 
 
   void
-  StaticAnalysis::write_output(const std::string &directory) const
+  StaticAnalysis::write_output(
+    const std::string                                &directory,
+    const DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression) const
   {
     if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
       {
@@ -179,7 +181,7 @@ namespace fgimpact
       }
     TrilinosWrappers::MPI::Vector zero;
     plate.initialize_vector(zero);
-    VtuWriter vtu(plate, directory);
+    VtuWriter vtu(plate, directory, vtu_compression);
     vtu.write(0, 0., u, zero);
     vtu.finish();
   }

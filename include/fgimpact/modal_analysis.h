@@ -1,6 +1,7 @@
 #ifndef fgimpact_modal_analysis_h
 #define fgimpact_modal_analysis_h
 
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/lac/trilinos_vector.h>
@@ -65,7 +66,9 @@ namespace fgimpact
 
     /// frequencies.csv, summary.txt and one VTU per mode shape.
     void
-    write_output(const std::string &directory) const;
+    write_output(const std::string &directory,
+                 const DataOutBase::VtkFlags::ZlibCompressionLevel
+                   vtu_compression = DataOutBase::VtkFlags::best_speed) const;
 
   private:
     const Parameters                           parameters;

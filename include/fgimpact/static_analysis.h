@@ -1,6 +1,7 @@
 #ifndef fgimpact_static_analysis_h
 #define fgimpact_static_analysis_h
 
+#include <deal.II/base/data_out_base.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/lac/trilinos_vector.h>
@@ -75,7 +76,9 @@ namespace fgimpact
 
     /// Write summary.txt and a VTU file of the fields into directory.
     void
-    write_output(const std::string &directory) const;
+    write_output(const std::string &directory,
+                 const DataOutBase::VtkFlags::ZlibCompressionLevel
+                   vtu_compression = DataOutBase::VtkFlags::best_speed) const;
 
   private:
     void
