@@ -132,6 +132,24 @@ namespace
       input = std::make_unique<fgimpact::InputFile>(prm_file, text);
     return input;
   }
+  /// Rank 0, before the run: log.txt (provenance first), the provenance
+  /// for summary.txt, parameters.prm (expanded) and input.prm (as given).
+  void
+  start_run_files(const std::string              &directory,
+                  const int                       argc,
+                  const char *const              *argv,
+                  fgimpact::Logger               &logger,
+                  const dealii::ParameterHandler &prm,
+                  const fgimpact::InputFile      &input)
+  {
+    const std::string provenance = fgimpact::CommandLine::provenance(
+      argc, argv, dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+    logger.open(directory + "/log.txt", provenance);
+    fgimpact::SummaryWriter::set_preamble(provenance);
+    std::ofstream out(directory + "/parameters.prm");
+    prm.print_parameters(out, dealii::ParameterHandler::PRM);
+    std::ofstream(directory + "/input.prm") << input.original();
+  }
 } // namespace
 
 
@@ -220,15 +238,7 @@ main(int argc, char *argv[])
         }
       const std::string &directory = parameters.output.directory;
       if (root)
-        {
-          const std::string provenance = CommandLine::provenance(
-            argc, argv, Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
-          logger.open(directory + "/log.txt", provenance);
-          SummaryWriter::set_preamble(provenance);
-          std::ofstream out(directory + "/parameters.prm");
-          prm.print_parameters(out, ParameterHandler::PRM);
-          std::ofstream(directory + "/input.prm") << input->original();
-        }
+        start_run_files(directory, argc, argv, logger, prm, *input);
       simulator.run();
       if (root)
         std::cout << "fgimpact: results in " << directory << '\n';
