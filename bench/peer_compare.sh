@@ -56,13 +56,14 @@ fi
 now() { date +%s.%N; }
 median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2}'; }
 
-# One untimed run each: the script compiles its forms on the first run.
-/usr/bin/python3 "$peer" impact 1 --solver mumps > "$out/peer.log" 2>&1
+# The script writes its history CSV into its working directory: run it in
+# DIR.  One untimed run each: the script compiles its forms on the first run.
+(cd "$out" && /usr/bin/python3 "$peer" impact 1 --solver mumps) > "$out/peer.log" 2>&1
 "$exe" "${fg_args[@]}" > "$out/fgimpact.log" 2>&1
 
 : > "$out/times_peer.txt"; : > "$out/times_fgimpact.txt"
 for i in $(seq "$runs"); do
-  t0=$(now); /usr/bin/python3 "$peer" impact 1 --solver mumps > "$out/peer.log" 2>&1; t1=$(now)
+  t0=$(now); (cd "$out" && /usr/bin/python3 "$peer" impact 1 --solver mumps) > "$out/peer.log" 2>&1; t1=$(now)
   echo "$t1 - $t0" | bc -l >> "$out/times_peer.txt"
   t0=$(now); "$exe" "${fg_args[@]}" > "$out/fgimpact.log" 2>&1; t1=$(now)
   echo "$t1 - $t0" | bc -l >> "$out/times_fgimpact.txt"
