@@ -1,4 +1,10 @@
+#include <deal.II/lac/solver_control.h>
+
 #include <fgimpact/impact_driver.h>
+#include <fgimpact/run_control.h>
+
+#include <csignal>
+#include <cstdio>
 
 namespace fgimpact
 {
@@ -47,7 +53,21 @@ namespace fgimpact
                                   *contact,
                                   impactor.mass(),
                                   impactor.initial_velocity());
-    stepper->initialize(parameters.output.instrumentation);
+    try
+      {
+        stepper->initialize(parameters.output.instrumentation);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        AssertThrow(false,
+                    ExcNumericalFailure(
+                      "the linear solver did not converge during set-up "
+                      "(the contact compliance solves) after " +
+                      std::to_string(e.last_step) +
+                      " iterations; raise Linear solver/Max iterations (now " +
+                      std::to_string(parameters.linear_solver.max_iterations) +
+                      ") or use Linear solver/Type = auto."));
+      }
     results.factorization_time = factorization_timer.wall_time();
     results.spmv_time          = stepper->costs().spmv;
     results.solve_time         = stepper->costs().solve;
@@ -71,6 +91,10 @@ namespace fgimpact
   void
   ImpactDriver::run()
   {
+    // SIGINT/SIGTERM only set a flag from here on (before history.csv
+    // exists, so that its existence tells a test that the loop can be
+    // stopped).
+    const SignalGuard signals;
     // The monitor opens the output files: only now, after setup() passed.
     monitor = std::make_unique<ImpactMonitor>(parameters.output,
                                               plate,
@@ -92,13 +116,74 @@ namespace fgimpact
 
     // Plain timers (not TimerOutput, whose destructor writes to the screen
     // when an exception such as a Newton failure is on its way out).
-    Timer loop_timer;
-    for (timestep = 1; timestep <= n_steps; ++timestep)
-      do_timestep();
-    monitor->close_output();
+    // SIGINT/SIGTERM and failed writes are looked at once per step, agreed
+    // over the ranks (one all-reduce of an int), so all stop together.
+    const MPI_Comm comm = plate.get_mpi_communicator();
+    Timer          loop_timer;
+    unsigned int   steps_done = 0;
+    int            stop       = 0;
+    try
+      {
+        while (steps_done < n_steps && stop == 0)
+          {
+            timestep = steps_done + 1;
+            do_timestep();
+            steps_done = timestep;
+            stop       = agreed_stop(comm, !monitor->output_failure().empty());
+          }
+        monitor->close_output();
+        if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
+          stop = -1;
+      }
+    catch (...)
+      {
+        finish_failed_run(steps_done, loop_timer.wall_time());
+        throw;
+      }
     loop_timer.stop();
+    AssertThrow(stop >= 0,
+                ExcOutputFailure(monitor->output_failure().empty() ?
+                                   "writing the output failed on another MPI "
+                                   "rank (disk full or I/O error)." :
+                                   monitor->output_failure()));
 
-    monitor->finish(ball, loop_timer.wall_time(), total_timer.wall_time());
+    monitor->finish(ball,
+                    steps_done,
+                    stop > 0 ? "interrupted" : "completed",
+                    loop_timer.wall_time(),
+                    total_timer.wall_time());
+    if (stop > 0)
+      {
+        char text[300];
+        std::snprintf(text,
+                      sizeof(text),
+                      "interrupted by %s after time step %u of %u (t = %.3f "
+                      "us); history.csv, solution.pvd and summary.txt "
+                      "(status = interrupted) are complete.",
+                      stop == SIGINT  ? "SIGINT" :
+                      stop == SIGTERM ? "SIGTERM" :
+                                        "a signal",
+                      steps_done,
+                      n_steps,
+                      steps_done * dt * 1e6);
+        throw RunInterrupted(stop, text);
+      }
+  }
+
+
+
+  void
+  ImpactDriver::finish_failed_run(const unsigned int steps_done,
+                                  const double       loop_time)
+  {
+    try
+      {
+        monitor->close_output();
+        monitor->finish(
+          ball, steps_done, "failed", loop_time, total_timer.wall_time());
+      }
+    catch (...)
+      {}
   }
 
 

@@ -5,11 +5,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <fgimpact/run_control.h>
 #include <fgimpact/simulator.h>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -30,54 +28,6 @@ namespace
     "  -p, --print-parameters  print the full documented default .prm and "
     "exit\n";
 
-  /// Collapse a deal.II exception text or any message into one line.
-  std::string
-  one_line(const std::string &text)
-  {
-    std::string out;
-    bool        space = false;
-    for (const char ch : text)
-      {
-        if (ch == '\n' || ch == '\t' || ch == ' ')
-          space = !out.empty();
-        else
-          {
-            if (space)
-              out += ' ';
-            out += ch;
-            space = false;
-          }
-      }
-    return out;
-  }
-
-  std::string
-  message_of(const dealii::ExceptionBase &e)
-  {
-    std::ostringstream s;
-    e.print_info(s);
-    return one_line(s.str());
-  }
-
-  /// Make the output directory and check that files can be written there.
-  void
-  prepare_output_directory(const std::string &directory)
-  {
-    namespace fs = std::filesystem;
-    std::error_code error;
-    fs::create_directories(directory, error);
-    AssertThrow(!error && fs::is_directory(directory),
-                dealii::ExcMessage("Output/Directory '" + directory +
-                                   "' cannot be created: " + error.message()));
-    const std::string probe = directory + "/.fgimpact_write_test";
-    {
-      std::ofstream test(probe);
-      AssertThrow(test.good(),
-                  dealii::ExcMessage("Output/Directory '" + directory +
-                                     "' is not writable."));
-    }
-    fs::remove(probe, error);
-  }
   /**
    * The options and the parameter file's name.  Returns the exit code if
    * the program is done (help, parameters printed, a bad option), -1 to
@@ -147,77 +97,56 @@ main(int argc, char *argv[])
   ParameterHandler     prm;
   fgimpact::Parameters parameters;
   // Input errors: everything is checked before any file is written.
+  // Failures are reported in one line with their exit code by
+  // report_failure() (source/run_control.cc).
   try
     {
       Parameters::declare_parameters(prm);
       if (!prm_file.empty())
-        prm.parse_input(prm_file);
+        read_parameter_file(prm, prm_file);
       parameters.parse_parameters(prm);
       parameters.validate();
+      for (const auto &warning : parameters.warnings())
+        if (root)
+          std::cerr << "fgimpact: warning: " << warning << std::endl;
     }
-  catch (const ExceptionBase &e)
+  catch (...)
     {
-      if (root)
-        std::cerr << "fgimpact: error in "
-                  << (prm_file.empty() ? "defaults" : prm_file) << ": "
-                  << message_of(e) << '\n';
-      return 1;
-    }
-  catch (const std::exception &e)
-    {
-      if (root)
-        std::cerr << "fgimpact: error in " << prm_file << ": "
-                  << one_line(e.what()) << '\n';
-      return 1;
+      return report_failure(std::current_exception(),
+                            root,
+                            1,
+                            "error in " +
+                              (prm_file.empty() ? "defaults" : prm_file));
     }
 
   try
     {
       Simulator simulator(parameters, MPI_COMM_WORLD);
       // Everything that can fail on bad input is checked before any file
-      // is written: setup() writes nothing.
+      // is written: setup() writes nothing.  Rank 0 makes, checks and
+      // cleans the directory and writes parameters.prm; every rank learns
+      // the outcome, so that all stop together.
       try
         {
           simulator.setup();
-          // Rank 0 makes and checks the directory; every rank learns the
-          // outcome, so that all stop together.
-          std::string error;
-          if (root)
-            try
-              {
-                prepare_output_directory(parameters.output.directory);
-              }
-            catch (const ExceptionBase &e)
-              {
-                error = message_of(e);
-              }
-          error = Utilities::MPI::broadcast(MPI_COMM_WORLD, error, 0);
-          AssertThrow(error.empty(), ExcMessage(error));
+          run_on_root(MPI_COMM_WORLD, [&]() {
+            prepare_output_directory(parameters.output);
+            std::ostringstream text;
+            prm.print_parameters(text, ParameterHandler::PRM);
+            write_file_atomically(parameters.output.directory +
+                                    "/parameters.prm",
+                                  text.str());
+          });
         }
-      catch (const ExceptionBase &e)
+      catch (...)
         {
-          if (root)
-            std::cerr << "fgimpact: error: " << message_of(e) << '\n';
-          return 1;
-        }
-      if (root)
-        {
-          std::ofstream out(parameters.output.directory + "/parameters.prm");
-          prm.print_parameters(out, ParameterHandler::PRM);
+          return report_failure(std::current_exception(), root, 1);
         }
       simulator.run();
     }
-  catch (const ExceptionBase &e)
+  catch (...)
     {
-      if (root)
-        std::cerr << "fgimpact: error: " << message_of(e) << '\n';
-      return 2;
-    }
-  catch (const std::exception &e)
-    {
-      if (root)
-        std::cerr << "fgimpact: error: " << one_line(e.what()) << '\n';
-      return 2;
+      return report_failure(std::current_exception(), root, 2);
     }
   return 0;
 }
