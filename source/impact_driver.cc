@@ -141,11 +141,17 @@ namespace fgimpact
         throw;
       }
     loop_timer.stop();
-    AssertThrow(stop >= 0,
-                ExcOutputFailure(monitor->output_failure().empty() ?
-                                   "writing the output failed on another MPI "
-                                   "rank (disk full or I/O error)." :
-                                   monitor->output_failure()));
+    if (stop < 0)
+      {
+        // A failed write (disk full): summary.txt marked failed if it can
+        // still be written, then one line naming the file.
+        finish_failed_run(steps_done, loop_timer.wall_time());
+        AssertThrow(false,
+                    ExcOutputFailure(monitor->output_failure().empty() ?
+                                       "writing the output failed on another "
+                                       "MPI rank (disk full or I/O error)." :
+                                       monitor->output_failure()));
+      }
 
     monitor->finish(ball,
                     steps_done,

@@ -327,8 +327,8 @@ namespace fgimpact
         std::snprintf(text,
                       sizeof(text),
                       "  WARNING: the relative energy drift reached %.3e at "
-                      "%s (warning level 1e-2): the results may be "
-                      "inaccurate; reduce Time integration/Time step.\n",
+                      "%s; above 1e-2 the results may be inaccurate: reduce "
+                      "Time integration/Time step.\n",
                       drift,
                       where);
         pcout << text;

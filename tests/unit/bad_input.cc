@@ -36,6 +36,7 @@ namespace
   enum class Setup
   {
     plain,          // case.prm = prm + Output/Directory
+    output_first,   // case.prm = Output/Directory + prm
     bom,            // ... preceded by a UTF-8 byte-order mark
     crlf,           // ... with Windows line ends
     include_crlf,   // case.prm includes a BOM + CRLF file with prm
@@ -45,8 +46,9 @@ namespace
     mutual_include, // two files include each other
     missing_file,   // the parameter file does not exist
     directory_is_a_file,
-    not_empty,  // Overwrite = false into a directory with a file
-    stale_files // Overwrite = true removes an earlier run's files
+    not_empty,   // Overwrite = false into a directory with a file
+    stale_files, // Overwrite = true removes an earlier run's files
+    dev_full     // Output/Directory/<full_file> is a link to /dev/full
   };
 
   struct Case
@@ -55,7 +57,8 @@ namespace
     std::string prm;
     int         exit_code;
     const char *must_name; // in the one line on stderr
-    Setup       setup = Setup::plain;
+    Setup       setup     = Setup::plain;
+    const char *full_file = ""; // for Setup::dev_full
   };
 
   std::string
@@ -73,12 +76,15 @@ namespace
   bool
   output_is_clean(const std::string &dir)
   {
-    if (!fs::exists(dir))
+    if (!fs::is_directory(dir))
       return true;
     for (const auto &entry : fs::directory_iterator(dir))
       if (entry.path().extension() == ".tmp")
         return false;
-    const std::string history = read(dir + "/history.csv");
+    // (Regular files only: history.csv may be a link to /dev/full.)
+    const std::string history = fs::is_regular_file(dir + "/history.csv") ?
+                                  read(dir + "/history.csv") :
+                                  "";
     if (!history.empty())
       {
         if (history.back() != '\n')
@@ -91,7 +97,7 @@ namespace
           if (std::count(line.begin(), line.end(), ',') != fields)
             return false;
       }
-    if (fs::exists(dir + "/summary.txt"))
+    if (fs::is_regular_file(dir + "/summary.txt"))
       {
         const std::string summary = read(dir + "/summary.txt");
         if (summary.find("status = ") == std::string::npos ||
@@ -144,12 +150,22 @@ namespace
           return "first.prm";
         case Setup::missing_file:
           return "no_such_file.prm";
+        case Setup::output_first:
+          write("case.prm",
+                "subsection Output\n set Directory = " + dir + "\nend\n" +
+                  c.prm);
+          return "case.prm";
         case Setup::directory_is_a_file:
           write(dir, "a file, not a directory\n");
           break;
         case Setup::not_empty:
           fs::create_directories(dir);
           write(dir + "/notes.txt", "someone's file\n");
+          break;
+        case Setup::dev_full:
+          // A full disk: every write to this file fails with ENOSPC.
+          fs::create_directories(dir);
+          fs::create_symlink("/dev/full", dir + "/" + c.full_file);
           break;
         case Setup::stale_files:
           fs::create_directories(dir);
@@ -173,6 +189,11 @@ main()
     "subsection Newton\n set Tolerance = 1e-15\n set Max iterations = 1\nend\n";
   const std::vector<Case> cases = {
     // Malformed and out-of-range entries (exit code 1, nothing written).
+    {"missing end",
+     "subsection Geometry\n set Length a = 0.2\n",
+     1,
+     "'end'",
+     Setup::output_first},
     {"malformed number",
      "subsection Geometry\n set Length a = 0.2m\nend\n",
      1,
@@ -346,6 +367,31 @@ main()
      small + "subsection Impactor\n set Mass = 1e-9\nend\n",
      2,
      "Time integration/Time step"},
+    // A full disk (/dev/full) under one output file at a time.
+    {"disk full: parameters.prm",
+     small,
+     2,
+     "parameters.prm",
+     Setup::dev_full,
+     "parameters.prm.tmp"},
+    {"disk full: history.csv",
+     small,
+     2,
+     "history.csv",
+     Setup::dev_full,
+     "history.csv"},
+    {"disk full: solution.pvd during the run",
+     small + "subsection Output\n set VTU interval = 5\nend\n",
+     2,
+     "solution.pvd",
+     Setup::dev_full,
+     "solution.pvd.tmp"},
+    {"disk full: summary.txt",
+     small,
+     2,
+     "summary.txt",
+     Setup::dev_full,
+     "summary.txt.tmp"},
     // Inputs that run: read normally, with a warning, or with 'none'.
     {"byte-order mark", small + short_run, 0, "", Setup::bom},
     {"Windows line ends", small + short_run, 0, "", Setup::crlf},
@@ -413,7 +459,7 @@ main()
               summary.find("departure_velocity_m_s = none") !=
                 std::string::npos;
         }
-      if (c.exit_code == 2)
+      if (c.exit_code == 2 && fs::exists(dir + "/summary.txt"))
         clean = clean && read(dir + "/summary.txt").find("status = failed") !=
                            std::string::npos;
       (c.exit_code == 0 ? ran : refused) += right_code ? 1 : 0;

@@ -57,6 +57,7 @@ namespace
           << "\n set VTU interval = 50\n set Log interval = 0\n"
              " set Print timing = false\nend\n";
     }
+    std::fflush(stdout); // not twice: the child inherits the buffer
     const pid_t pid = fork();
     if (pid == 0)
       {
