@@ -429,9 +429,10 @@ namespace fgimpact
       std::abs(r.impulse - m_i * (V0 - ball.v)) / (m_i * V0);
 
     if (in_contact || !separated_once)
-      pcout << "  WARNING: the impactor is still in contact at the end time; "
-               "contact_duration and departure_velocity are not defined and "
-               "written as 'none' (raise Time integration/End time).\n";
+      pcout << "  WARNING: the impactor is still in contact at the last time "
+               "step; contact_duration and departure_velocity do not exist "
+               "and are written as 'none' (raise Time integration/End "
+               "time).\n";
     if (r.n_impacts > 1)
       pcout << "  note: the impactor struck the plate " << r.n_impacts
             << " times.\n";

@@ -182,305 +182,344 @@ namespace
 
 
 
+namespace
+{
+  /// Malformed, out-of-range, inconsistent and meaningless entries.
+  std::vector<Case>
+  entry_cases()
+  {
+    return {
+      // Malformed and out-of-range entries (exit code 1, nothing written).
+      {"missing end",
+       "subsection Geometry\n set Length a = 0.2\n",
+       1,
+       "'end'",
+       Setup::output_first},
+      {"malformed number",
+       "subsection Geometry\n set Length a = 0.2m\nend\n",
+       1,
+       "Length a"},
+      {"out of range",
+       "subsection Material\n set Poisson's ratio = 0.7\nend\n",
+       1,
+       "Poisson's ratio"},
+      {"unknown entry",
+       "subsection Impactor\n set Radious = 0.01\nend\n",
+       1,
+       "Radious"},
+      {"misspelled subsection",
+       "subsection Geometri\n set Length a = 0.2\nend\n",
+       1,
+       "Geometri"},
+      {"negative thickness",
+       "subsection Geometry\n set Thickness h = -0.02\nend\n",
+       1,
+       "Thickness h"},
+      {"zero subdivisions",
+       "subsection Geometry\n set Subdivisions x = 0\nend\n",
+       1,
+       "Subdivisions x"},
+      {"NaN value",
+       "subsection Impactor\n set Initial velocity = nan\nend\n",
+       1,
+       "Initial velocity"},
+      {"inf value",
+       "subsection Material\n set Metal Young's modulus = inf\nend\n",
+       1,
+       "Metal Young's modulus"},
+      {"1e400",
+       "subsection Impactor\n set Density = 1e400\nend\n",
+       1,
+       "Density"},
+      {"empty value",
+       "subsection Material\n set Power-law index =\nend\n",
+       1,
+       "Power-law index"},
+      {"bad selection",
+       "subsection Boundary conditions\n set Face x min = pinned\nend\n",
+       1,
+       "Face x min"},
+      {"bad problem type", "set Problem type = dynamic\n", 1, "Problem type"},
+      {"bad solver type",
+       "subsection Linear solver\n set Type = lu\nend\n",
+       1,
+       "Type"},
+      {"degree 3",
+       "subsection Finite element\n set Degree = 3\nend\n",
+       1,
+       "Degree"},
+      {"negative log interval",
+       "subsection Output\n set Log interval = -1\nend\n",
+       1,
+       "Log interval"},
+      {"bad bool",
+       "subsection Output\n set Overwrite = maybe\nend\n",
+       1,
+       "Overwrite"},
+      {"bad accuracy preset", "set Accuracy = ultra\n", 1, "Accuracy"},
+      {"zero modes",
+       "set Problem type = modal\nsubsection Modal\n set Number of modes = 0\nend\n",
+       1,
+       "Number of modes"},
+      // Inconsistent entries and impossible geometry.
+      {"impact point outside the plate",
+       "subsection Impactor\n set Impact point x = 0.5\nend\n",
+       1,
+       "Impact point x"},
+      {"impact point on the edge",
+       "subsection Impactor\n set Impact point y = 0.1\nend\n",
+       1,
+       "Impact point y"},
+      {"end time shorter than a step",
+       "subsection Time integration\n set End time = 1e-7\nend\n",
+       1,
+       "End time"},
+      {"more than 1e8 steps",
+       "subsection Time integration\n set End time = 1000\nend\n",
+       1,
+       "End time"},
+      {"implicit with automatic step",
+       "subsection Time integration\n set Time step = 0\nend\n",
+       1,
+       "Time step"},
+      {"Newmark gamma 1, beta 1/4",
+       "subsection Time integration\n set Newmark gamma = 1\n set Newmark beta = 0.25\nend\n",
+       1,
+       "Newmark beta"},
+      {"Newmark gamma 0.8, beta 0.3",
+       "subsection Time integration\n set Newmark gamma = 0.8\n set Newmark beta = 0.3\nend\n",
+       1,
+       "Newmark beta"},
+      {"Newmark gamma below 1/2",
+       "subsection Time integration\n set Newmark gamma = 0.4\nend\n",
+       1,
+       "Newmark gamma"},
+      {"explicit step above the stability limit",
+       small +
+         "subsection Time integration\n set Scheme = explicit\n set Time step = 1e-5\nend\n",
+       1,
+       "Time step"},
+      {"impactor wider than the plate",
+       "subsection Impactor\n set Radius = 10\nend\n",
+       1,
+       "Impactor/Radius"},
+      {"static load on a free plate",
+       "set Problem type = static\n" + small + all_free,
+       1,
+       "Boundary conditions/Face x min"},
+      {"modal shift 0 on a free plate",
+       "set Problem type = modal\n" + small + all_free,
+       1,
+       "Boundary conditions/Face x min"},
+      {"static, only x faces supported",
+       "set Problem type = static\n" + small +
+         "subsection Boundary conditions\n set Face y min = free\n set Face y max = free\nend\n",
+       1,
+       "translation in x"}};
+  }
+
+
+
+  /// Files that are not parameter files, output directories, numerical
+  /// failures, full disks, and inputs that must run.
+  std::vector<Case>
+  file_and_run_cases()
+  {
+    const std::string newton =
+      "subsection Newton\n set Tolerance = 1e-15\n set Max iterations = 1\nend\n";
+    return {
+      // Files that are not parameter files.
+      {"parameter file is a directory",
+       "",
+       1,
+       "a_directory.prm",
+       Setup::directory},
+      {"parameter file is /dev/zero", "", 1, "zero.prm", Setup::dev_zero},
+      {"parameter file includes itself",
+       small,
+       1,
+       "includes itself",
+       Setup::self_include},
+      {"two files include each other",
+       small,
+       1,
+       "includes itself",
+       Setup::mutual_include},
+      {"parameter file missing",
+       "",
+       1,
+       "no_such_file.prm",
+       Setup::missing_file},
+      {"include of a missing file",
+       "include not_there.prm\n",
+       1,
+       "not_there.prm"},
+      // Output directories.
+      {"unwritable output directory", "", 1, "Output/Directory"},
+      {"output directory is a file",
+       "",
+       1,
+       "Output/Directory",
+       Setup::directory_is_a_file},
+      {"Overwrite = false, directory not empty",
+       small + "subsection Output\n set Overwrite = false\nend\n",
+       1,
+       "Output/Overwrite",
+       Setup::not_empty},
+      // Numerical failures (exit code 2, one line naming the step or phase).
+      {"Newton failure", small + newton, 2, "time step 1 "},
+      {"cg capped at 2 iterations in set-up",
+       small +
+         "subsection Linear solver\n set Type = cg\n set Max iterations = 2\nend\n",
+       2,
+       "Linear solver/Max iterations"},
+      {"cg capped at 2 iterations, static",
+       "set Problem type = static\n" + small +
+         "subsection Linear solver\n set Type = cg\n set Max iterations = 2\nend\n",
+       2,
+       "static solve"},
+      {"time step longer than the contact",
+       small +
+         "subsection Time integration\n set Time step = 1e-4\n set End time = 4e-3\nend\n",
+       2,
+       "Time integration/Time step"},
+      {"impactor of 1e-9 kg",
+       small + "subsection Impactor\n set Mass = 1e-9\nend\n",
+       2,
+       "Time integration/Time step"},
+      // A full disk (/dev/full) under one output file at a time.
+      {"disk full: parameters.prm",
+       small,
+       2,
+       "parameters.prm",
+       Setup::dev_full,
+       "parameters.prm.tmp"},
+      {"disk full: history.csv",
+       small,
+       2,
+       "history.csv",
+       Setup::dev_full,
+       "history.csv"},
+      {"disk full: solution.pvd during the run",
+       small + "subsection Output\n set VTU interval = 5\nend\n",
+       2,
+       "solution.pvd",
+       Setup::dev_full,
+       "solution.pvd.tmp"},
+      {"disk full: summary.txt",
+       small,
+       2,
+       "summary.txt",
+       Setup::dev_full,
+       "summary.txt.tmp"},
+      // Inputs that run: read normally, with a warning, or with 'none'.
+      {"byte-order mark", small + short_run, 0, "", Setup::bom},
+      {"Windows line ends", small + short_run, 0, "", Setup::crlf},
+      {"included file with BOM and CRLF",
+       small + short_run,
+       0,
+       "",
+       Setup::include_crlf},
+      {"odd subdivisions, central impact",
+       "subsection Geometry\n set Subdivisions x = 5\n set Subdivisions y = 2\n set Subdivisions z = 1\nend\n" +
+         short_run,
+       0,
+       "Subdivisions"},
+      {"ball still in contact at the end time", small + short_run, 0, ""},
+      {"Overwrite = true removes stale files",
+       small + short_run,
+       0,
+       "",
+       Setup::stale_files}};
+  }
+
+
+
+  /// Run one case; print what it checks; count it.
+  bool
+  check(const Case        &c,
+        const unsigned int i,
+        unsigned int      &refused,
+        unsigned int      &ran,
+        unsigned int      &crashes)
+  {
+    const std::string dir =
+      c.name == std::string("unwritable output directory") ?
+        "/proc/fgimpact_cannot_write" :
+        "bad_out_" + std::to_string(i);
+    fs::remove_all(dir);
+    const std::string prm_file = prepare(c, dir);
+    const std::string command  = std::string(FGIMPACT_EXECUTABLE) + " " +
+                                prm_file + " > case.stdout 2> case.stderr";
+    const int  status    = std::system(command.c_str());
+    const int  exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const bool crashed   = !WIFEXITED(status) || exit_code > 128;
+    crashes += crashed ? 1 : 0;
+
+    const std::string text       = read("case.stderr");
+    const auto        lines      = std::count(text.begin(), text.end(), '\n');
+    const bool        right_code = exit_code == c.exit_code;
+    // A refusal or a warning: exactly one line, naming the parameter.
+    const bool quiet    = c.exit_code == 0 && std::string(c.must_name).empty();
+    const bool one_line = quiet ? lines == 0 : lines == 1;
+    const bool named    = text.find(c.must_name) != std::string::npos;
+    bool       clean    = output_is_clean(dir);
+    if (c.exit_code == 1)
+      clean =
+        clean &&
+        (c.setup == Setup::not_empty ? !fs::exists(dir + "/history.csv") :
+         c.setup == Setup::directory_is_a_file ? fs::is_regular_file(dir) :
+                                                 !fs::exists(dir));
+    if (c.exit_code == 0)
+      {
+        // A run that completed; a quantity that does not exist is 'none'.
+        const std::string summary = read(dir + "/summary.txt");
+        clean =
+          clean && summary.find("status = completed") != std::string::npos;
+        if (c.setup == Setup::stale_files)
+          clean = clean && !fs::exists(dir + "/solution_99999.0.vtu");
+        if (c.name == std::string("ball still in contact at the end time"))
+          clean =
+            clean &&
+            summary.find("contact_duration_us = none") != std::string::npos &&
+            summary.find("departure_velocity_m_s = none") != std::string::npos;
+      }
+    if (c.exit_code == 2 && fs::exists(dir + "/summary.txt"))
+      clean = clean && read(dir + "/summary.txt").find("status = failed") !=
+                         std::string::npos;
+    (c.exit_code == 0 ? ran : refused) += right_code ? 1 : 0;
+
+    const bool pass = right_code && one_line && named && clean && !crashed;
+    std::printf("%2u %s: exit code %d %s, %s %s, names '%s' %s, output %s\n",
+                i + 1,
+                c.name,
+                c.exit_code,
+                right_code ? "yes" : "NO",
+                quiet ? "stderr empty" : "one line",
+                one_line ? "yes" : "NO",
+                c.must_name,
+                named ? "yes" : "NO",
+                clean ? "clean" : "NOT CLEAN");
+    if (!pass)
+      std::printf("  exit code was %d, stderr was: %s\n",
+                  exit_code,
+                  text.c_str());
+    return pass;
+  }
+} // namespace
+
+
+
 int
 main()
 {
-  const std::string newton =
-    "subsection Newton\n set Tolerance = 1e-15\n set Max iterations = 1\nend\n";
-  const std::vector<Case> cases = {
-    // Malformed and out-of-range entries (exit code 1, nothing written).
-    {"missing end",
-     "subsection Geometry\n set Length a = 0.2\n",
-     1,
-     "'end'",
-     Setup::output_first},
-    {"malformed number",
-     "subsection Geometry\n set Length a = 0.2m\nend\n",
-     1,
-     "Length a"},
-    {"out of range",
-     "subsection Material\n set Poisson's ratio = 0.7\nend\n",
-     1,
-     "Poisson's ratio"},
-    {"unknown entry",
-     "subsection Impactor\n set Radious = 0.01\nend\n",
-     1,
-     "Radious"},
-    {"misspelled subsection",
-     "subsection Geometri\n set Length a = 0.2\nend\n",
-     1,
-     "Geometri"},
-    {"negative thickness",
-     "subsection Geometry\n set Thickness h = -0.02\nend\n",
-     1,
-     "Thickness h"},
-    {"zero subdivisions",
-     "subsection Geometry\n set Subdivisions x = 0\nend\n",
-     1,
-     "Subdivisions x"},
-    {"NaN value",
-     "subsection Impactor\n set Initial velocity = nan\nend\n",
-     1,
-     "Initial velocity"},
-    {"inf value",
-     "subsection Material\n set Metal Young's modulus = inf\nend\n",
-     1,
-     "Metal Young's modulus"},
-    {"1e400", "subsection Impactor\n set Density = 1e400\nend\n", 1, "Density"},
-    {"empty value",
-     "subsection Material\n set Power-law index =\nend\n",
-     1,
-     "Power-law index"},
-    {"bad selection",
-     "subsection Boundary conditions\n set Face x min = pinned\nend\n",
-     1,
-     "Face x min"},
-    {"bad problem type", "set Problem type = dynamic\n", 1, "Problem type"},
-    {"bad solver type",
-     "subsection Linear solver\n set Type = lu\nend\n",
-     1,
-     "Type"},
-    {"degree 3",
-     "subsection Finite element\n set Degree = 3\nend\n",
-     1,
-     "Degree"},
-    {"negative log interval",
-     "subsection Output\n set Log interval = -1\nend\n",
-     1,
-     "Log interval"},
-    {"bad bool",
-     "subsection Output\n set Overwrite = maybe\nend\n",
-     1,
-     "Overwrite"},
-    {"bad accuracy preset", "set Accuracy = ultra\n", 1, "Accuracy"},
-    {"zero modes",
-     "set Problem type = modal\nsubsection Modal\n set Number of modes = 0\nend\n",
-     1,
-     "Number of modes"},
-    // Inconsistent entries and impossible geometry.
-    {"impact point outside the plate",
-     "subsection Impactor\n set Impact point x = 0.5\nend\n",
-     1,
-     "Impact point x"},
-    {"impact point on the edge",
-     "subsection Impactor\n set Impact point y = 0.1\nend\n",
-     1,
-     "Impact point y"},
-    {"end time shorter than a step",
-     "subsection Time integration\n set End time = 1e-7\nend\n",
-     1,
-     "End time"},
-    {"more than 1e8 steps",
-     "subsection Time integration\n set End time = 1000\nend\n",
-     1,
-     "End time"},
-    {"implicit with automatic step",
-     "subsection Time integration\n set Time step = 0\nend\n",
-     1,
-     "Time step"},
-    {"Newmark gamma 1, beta 1/4",
-     "subsection Time integration\n set Newmark gamma = 1\n set Newmark beta = 0.25\nend\n",
-     1,
-     "Newmark beta"},
-    {"Newmark gamma 0.8, beta 0.3",
-     "subsection Time integration\n set Newmark gamma = 0.8\n set Newmark beta = 0.3\nend\n",
-     1,
-     "Newmark beta"},
-    {"Newmark gamma below 1/2",
-     "subsection Time integration\n set Newmark gamma = 0.4\nend\n",
-     1,
-     "Newmark gamma"},
-    {"explicit step above the stability limit",
-     small +
-       "subsection Time integration\n set Scheme = explicit\n set Time step = 1e-5\nend\n",
-     1,
-     "Time step"},
-    {"impactor wider than the plate",
-     "subsection Impactor\n set Radius = 10\nend\n",
-     1,
-     "Impactor/Radius"},
-    {"static load on a free plate",
-     "set Problem type = static\n" + small + all_free,
-     1,
-     "Boundary conditions/Face x min"},
-    {"modal shift 0 on a free plate",
-     "set Problem type = modal\n" + small + all_free,
-     1,
-     "Boundary conditions/Face x min"},
-    {"static, only x faces supported",
-     "set Problem type = static\n" + small +
-       "subsection Boundary conditions\n set Face y min = free\n set Face y max = free\nend\n",
-     1,
-     "translation in x"},
-    // Files that are not parameter files.
-    {"parameter file is a directory",
-     "",
-     1,
-     "a_directory.prm",
-     Setup::directory},
-    {"parameter file is /dev/zero", "", 1, "zero.prm", Setup::dev_zero},
-    {"parameter file includes itself",
-     small,
-     1,
-     "includes itself",
-     Setup::self_include},
-    {"two files include each other",
-     small,
-     1,
-     "includes itself",
-     Setup::mutual_include},
-    {"parameter file missing", "", 1, "no_such_file.prm", Setup::missing_file},
-    {"include of a missing file",
-     "include not_there.prm\n",
-     1,
-     "not_there.prm"},
-    // Output directories.
-    {"unwritable output directory", "", 1, "Output/Directory"},
-    {"output directory is a file",
-     "",
-     1,
-     "Output/Directory",
-     Setup::directory_is_a_file},
-    {"Overwrite = false, directory not empty",
-     small + "subsection Output\n set Overwrite = false\nend\n",
-     1,
-     "Output/Overwrite",
-     Setup::not_empty},
-    // Numerical failures (exit code 2, one line naming the step or phase).
-    {"Newton failure", small + newton, 2, "time step 1 "},
-    {"cg capped at 2 iterations in set-up",
-     small +
-       "subsection Linear solver\n set Type = cg\n set Max iterations = 2\nend\n",
-     2,
-     "Linear solver/Max iterations"},
-    {"cg capped at 2 iterations, static",
-     "set Problem type = static\n" + small +
-       "subsection Linear solver\n set Type = cg\n set Max iterations = 2\nend\n",
-     2,
-     "static solve"},
-    {"time step longer than the contact",
-     small +
-       "subsection Time integration\n set Time step = 1e-4\n set End time = 4e-3\nend\n",
-     2,
-     "Time integration/Time step"},
-    {"impactor of 1e-9 kg",
-     small + "subsection Impactor\n set Mass = 1e-9\nend\n",
-     2,
-     "Time integration/Time step"},
-    // A full disk (/dev/full) under one output file at a time.
-    {"disk full: parameters.prm",
-     small,
-     2,
-     "parameters.prm",
-     Setup::dev_full,
-     "parameters.prm.tmp"},
-    {"disk full: history.csv",
-     small,
-     2,
-     "history.csv",
-     Setup::dev_full,
-     "history.csv"},
-    {"disk full: solution.pvd during the run",
-     small + "subsection Output\n set VTU interval = 5\nend\n",
-     2,
-     "solution.pvd",
-     Setup::dev_full,
-     "solution.pvd.tmp"},
-    {"disk full: summary.txt",
-     small,
-     2,
-     "summary.txt",
-     Setup::dev_full,
-     "summary.txt.tmp"},
-    // Inputs that run: read normally, with a warning, or with 'none'.
-    {"byte-order mark", small + short_run, 0, "", Setup::bom},
-    {"Windows line ends", small + short_run, 0, "", Setup::crlf},
-    {"included file with BOM and CRLF",
-     small + short_run,
-     0,
-     "",
-     Setup::include_crlf},
-    {"odd subdivisions, central impact",
-     "subsection Geometry\n set Subdivisions x = 5\n set Subdivisions y = 2\n set Subdivisions z = 1\nend\n" +
-       short_run,
-     0,
-     "Subdivisions"},
-    {"ball still in contact at the end time", small + short_run, 0, ""},
-    {"Overwrite = true removes stale files",
-     small + short_run,
-     0,
-     "",
-     Setup::stale_files}};
-
+  std::vector<Case> cases = entry_cases();
+  for (const auto &c : file_and_run_cases())
+    cases.push_back(c);
   bool         ok      = true;
   unsigned int refused = 0, ran = 0, crashes = 0;
   for (unsigned int i = 0; i < cases.size(); ++i)
-    {
-      const Case       &c = cases[i];
-      const std::string dir =
-        c.name == std::string("unwritable output directory") ?
-          "/proc/fgimpact_cannot_write" :
-          "bad_out_" + std::to_string(i);
-      fs::remove_all(dir);
-      const std::string prm_file = prepare(c, dir);
-      const std::string command  = std::string(FGIMPACT_EXECUTABLE) + " " +
-                                  prm_file + " > case.stdout 2> case.stderr";
-      const int  status    = std::system(command.c_str());
-      const int  exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-      const bool crashed   = !WIFEXITED(status) || exit_code > 128;
-      crashes += crashed ? 1 : 0;
-
-      const std::string text       = read("case.stderr");
-      const auto        lines      = std::count(text.begin(), text.end(), '\n');
-      const bool        right_code = exit_code == c.exit_code;
-      // A refusal or a warning: exactly one line, naming the parameter.
-      const bool quiet = c.exit_code == 0 && std::string(c.must_name).empty();
-      const bool one_line = quiet ? lines == 0 : lines == 1;
-      const bool named    = text.find(c.must_name) != std::string::npos;
-      bool       clean    = output_is_clean(dir);
-      if (c.exit_code == 1)
-        clean =
-          clean &&
-          (c.setup == Setup::not_empty ? !fs::exists(dir + "/history.csv") :
-           c.setup == Setup::directory_is_a_file ? fs::is_regular_file(dir) :
-                                                   !fs::exists(dir));
-      if (c.exit_code == 0)
-        {
-          // A run that completed; a quantity that does not exist is 'none'.
-          const std::string summary = read(dir + "/summary.txt");
-          clean =
-            clean && summary.find("status = completed") != std::string::npos;
-          if (c.setup == Setup::stale_files)
-            clean = clean && !fs::exists(dir + "/solution_99999.0.vtu");
-          if (c.name == std::string("ball still in contact at the end time"))
-            clean =
-              clean &&
-              summary.find("contact_duration_us = none") != std::string::npos &&
-              summary.find("departure_velocity_m_s = none") !=
-                std::string::npos;
-        }
-      if (c.exit_code == 2 && fs::exists(dir + "/summary.txt"))
-        clean = clean && read(dir + "/summary.txt").find("status = failed") !=
-                           std::string::npos;
-      (c.exit_code == 0 ? ran : refused) += right_code ? 1 : 0;
-
-      const bool pass = right_code && one_line && named && clean && !crashed;
-      ok              = ok && pass;
-      std::printf("%2u %s: exit code %d %s, %s %s, names '%s' %s, output %s\n",
-                  i + 1,
-                  c.name,
-                  c.exit_code,
-                  right_code ? "yes" : "NO",
-                  quiet ? "stderr empty" : "one line",
-                  one_line ? "yes" : "NO",
-                  c.must_name,
-                  named ? "yes" : "NO",
-                  clean ? "clean" : "NOT CLEAN");
-      if (!pass)
-        std::printf("  exit code was %d, stderr was: %s\n",
-                    exit_code,
-                    text.c_str());
-    }
+    ok = check(cases[i], i, refused, ran, crashes) && ok;
   std::printf(
     "inputs tried: %u, refused with the right exit code: %u, ran: %u, crashes: %u\n",
     static_cast<unsigned int>(cases.size()),
