@@ -2,7 +2,9 @@
 // finishes the time step, completes history.csv, writes summary.txt with
 // status = interrupted and the time reached, closes the PVD, prints one
 // line and exits with 128 + the signal number.  Runs the executable as a
-// process and signals it once its time loop runs (history.csv exists).
+// process and signals it once its time loop runs (history.csv exists);
+// the third run is on two MPI ranks (mpiexec, as the mpirun=2 tests) and
+// signals one rank only: both must stop at the same step.
 
 #include <algorithm>
 #include <chrono>
@@ -40,10 +42,38 @@ namespace
     return summary.substr(begin, summary.find('\n', begin) - begin);
   }
 
-  bool
-  run_and_stop(const int signal, const char *signal_name)
+  /// A child process of parent (an MPI rank started by mpiexec), or 0.
+  pid_t
+  child_of(const pid_t parent)
   {
-    const std::string dir = std::string("signal_out_") + signal_name;
+    pid_t child = 0;
+    for (const auto &entry : fs::directory_iterator("/proc"))
+      {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos)
+          continue;
+        // /proc/N/stat: "N (command) state ppid ..."
+        const std::string stat  = read(entry.path().string() + "/stat");
+        const auto        paren = stat.rfind(')');
+        if (paren == std::string::npos)
+          continue;
+        std::istringstream rest(stat.substr(paren + 1));
+        std::string        state;
+        pid_t              ppid = 0;
+        rest >> state >> ppid;
+        if (ppid == parent)
+          child = std::stoi(name);
+      }
+    return child;
+  }
+
+
+
+  bool
+  run_and_stop(const int signal, const char *signal_name, const bool mpi)
+  {
+    const std::string dir =
+      std::string("signal_out_") + signal_name + (mpi ? "_mpi" : "");
     fs::remove_all(dir);
     {
       // 20 x 10 x 2 elements and 0.2 s (200,000 steps): minutes, were it
@@ -63,29 +93,56 @@ namespace
       {
         std::freopen("signal.stdout", "w", stdout);
         std::freopen("signal.stderr", "w", stderr);
-        execl(FGIMPACT_EXECUTABLE,
-              FGIMPACT_EXECUTABLE,
-              "signal.prm",
-              static_cast<char *>(nullptr));
+        if (mpi)
+          execlp("mpiexec",
+                 "mpiexec",
+                 "-n",
+                 "2",
+                 FGIMPACT_EXECUTABLE,
+                 "signal.prm",
+                 static_cast<char *>(nullptr));
+        else
+          execl(FGIMPACT_EXECUTABLE,
+                FGIMPACT_EXECUTABLE,
+                "signal.prm",
+                static_cast<char *>(nullptr));
         _exit(127);
       }
     // The time loop runs once history.csv exists; let it run a little.
     for (unsigned int i = 0; i < 600 && !fs::exists(dir + "/history.csv"); ++i)
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    kill(pid, signal);
+    // On two ranks: one rank only is signalled.
+    const pid_t target = mpi ? child_of(pid) : pid;
+    if (target > 0)
+      kill(target, signal);
     int status = 0;
     waitpid(pid, &status, 0);
 
     const bool exit_code =
       WIFEXITED(status) && WEXITSTATUS(status) == 128 + signal;
     const std::string err = read("signal.stderr");
-    const bool one_line   = std::count(err.begin(), err.end(), '\n') == 1 &&
-                          err.find("interrupted by") != std::string::npos;
+    // One line from fgimpact (on two ranks, from rank 0 only; mpiexec
+    // adds its own notice of the non-zero exit code).
+    std::istringstream err_lines(err);
+    std::string        err_line;
+    unsigned int       ours = 0, interrupted_lines = 0;
+    while (std::getline(err_lines, err_line))
+      if (err_line.rfind("fgimpact: ", 0) == 0)
+        {
+          ++ours;
+          if (err_line.find("interrupted by") != std::string::npos)
+            ++interrupted_lines;
+        }
+    const bool one_line =
+      ours == 1 && interrupted_lines == 1 &&
+      (mpi || std::count(err.begin(), err.end(), '\n') == 1);
     const std::string summary = read(dir + "/summary.txt");
-    const bool interrupted    = value_of(summary, "status") == "interrupted";
-    const std::string steps   = value_of(summary, "n_time_steps");
-    const std::string t_end   = value_of(summary, "time_reached_us");
+    const bool        interrupted =
+      value_of(summary, "status") == "interrupted" &&
+      value_of(summary, "n_mpi_ranks") == (mpi ? "2" : "1");
+    const std::string steps = value_of(summary, "n_time_steps");
+    const std::string t_end = value_of(summary, "time_reached_us");
     // history.csv: the header and one complete row per step done.
     const std::string  history = read(dir + "/history.csv");
     std::istringstream lines(history);
@@ -112,10 +169,11 @@ namespace
     const bool pvd_closed = pvd.find("</VTKFile>") != std::string::npos &&
                             !fs::exists(dir + "/solution.pvd.tmp");
 
-    std::printf("%s: exit code %d %s, one line on stderr %s, status = "
+    std::printf("%s%s: exit code %d %s, one line on stderr %s, status = "
                 "interrupted %s, history rows complete %s, one row per step "
                 "done %s, time reached = last row %s, PVD closed %s\n",
                 signal_name,
+                mpi ? " to one of 2 MPI ranks" : "",
                 128 + signal,
                 exit_code ? "yes" : "NO",
                 one_line ? "yes" : "NO",
@@ -140,9 +198,10 @@ namespace
 int
 main()
 {
-  const bool term = run_and_stop(SIGTERM, "SIGTERM");
-  const bool intr = run_and_stop(SIGINT, "SIGINT");
-  std::printf("%s\n",
-              term && intr ? "all checks passed" : "SOME CHECKS FAILED");
-  return term && intr ? 0 : 1;
+  const bool term = run_and_stop(SIGTERM, "SIGTERM", false);
+  const bool intr = run_and_stop(SIGINT, "SIGINT", false);
+  const bool mpi  = run_and_stop(SIGTERM, "SIGTERM", true);
+  const bool ok   = term && intr && mpi;
+  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+  return ok ? 0 : 1;
 }
