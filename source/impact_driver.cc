@@ -3,6 +3,7 @@
 #include <fgimpact/impact_driver.h>
 #include <fgimpact/run_control.h>
 
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 
@@ -76,6 +77,29 @@ namespace fgimpact
     n_steps = parameters.time_integration.n_steps(dt);
     pcout << "  " << stepper->description() << "; dt = " << dt * 1e6 << " us, "
           << n_steps << " steps\n";
+
+    // Can dt resolve the contact?  Hertz's duration on a rigid half-space,
+    // T = 2.943 alpha_max / V0 with alpha_max = (5 m V0^2 / (4 K))^(2/5),
+    // is a lower bound of the plate's (99 us against 126 us in the default
+    // scene): fewer than 20 steps in it is a coarse time history.
+    const double m = impactor.mass(), V0 = impactor.initial_velocity();
+    const double alpha_max =
+      std::pow(1.25 * m * V0 * V0 / contact_law.force(1.), 0.4);
+    const double T_hertz = 2.943 * alpha_max / V0;
+    if (dt > T_hertz / 20.)
+      {
+        char text[400];
+        std::snprintf(text,
+                      sizeof(text),
+                      "  WARNING: Time integration/Time step = %.4g us "
+                      "resolves the contact (Hertz half-space estimate %.4g "
+                      "us) with only %.1f steps; use at most %.3g us.\n",
+                      dt * 1e6,
+                      T_hertz * 1e6,
+                      T_hertz / dt,
+                      T_hertz / 20. * 1e6);
+        pcout << text;
+      }
   }
 
 

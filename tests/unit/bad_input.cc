@@ -484,6 +484,11 @@ namespace
             summary.find("contact_duration_us = none") != std::string::npos &&
             summary.find("departure_velocity_m_s = none") != std::string::npos;
       }
+    // The log warned that the step cannot resolve the contact.
+    if (c.name == std::string("time step longer than the contact"))
+      clean = clean &&
+              read("case.stdout").find("WARNING: Time integration/Time step") !=
+                std::string::npos;
     if (c.exit_code == 2 && fs::exists(dir + "/summary.txt"))
       clean = clean && read(dir + "/summary.txt").find("status = failed") !=
                          std::string::npos;
