@@ -168,13 +168,15 @@ namespace fgimpact
     if (stop < 0)
       {
         // A failed write (disk full): summary.txt marked failed if it can
-        // still be written, then one line naming the file.
+        // still be written, then one line naming the file, which rank 0
+        // learns from the failing rank (all ranks are here together).
         finish_failed_run(steps_done, loop_timer.wall_time());
-        AssertThrow(false,
-                    ExcOutputFailure(monitor->output_failure().empty() ?
-                                       "writing the output failed on another "
-                                       "MPI rank (disk full or I/O error)." :
-                                       monitor->output_failure()));
+        std::string message;
+        for (const auto &m :
+             Utilities::MPI::all_gather(comm, monitor->output_failure()))
+          if (message.empty())
+            message = m;
+        AssertThrow(false, ExcOutputFailure(message));
       }
 
     monitor->finish(ball,
