@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fgimpact/input_file.h>
+#include <fgimpact/run_control.h>
 
 #include <algorithm>
 #include <cctype>
@@ -19,33 +20,69 @@ namespace fgimpact
   {
     namespace fs = std::filesystem;
 
-    /// Includes nested deeper than this are taken for a loop.
-    constexpr unsigned int max_include_depth = 20;
+    /// Limits of what is taken for a parameter file.
+    constexpr std::uintmax_t max_file_size     = 16u << 20; // bytes
+    constexpr unsigned int   max_include_depth = 32;
 
-    std::string
-    one_line(const std::string &text)
+    bool
+    ends_with(const std::string &s, const std::string &end)
     {
-      std::string out;
-      bool        space = false;
-      for (const char ch : text)
-        if (ch == '\n' || ch == '\t' || ch == ' ')
-          space = !out.empty();
-        else
-          {
-            if (space)
-              out += ' ';
-            out += ch;
-            space = false;
-          }
-      return out;
+      return s.size() >= end.size() &&
+             s.compare(s.size() - end.size(), end.size(), end) == 0;
     }
 
+    /// All of in, but refusing more than max_file_size bytes (standard
+    /// input may be endless: /dev/zero).
     std::string
-    message_of(const ExceptionBase &e)
+    read_all(std::istream &in, const std::string &what)
     {
-      std::ostringstream s;
-      e.print_info(s);
-      return one_line(s.str());
+      std::string text;
+      char        buffer[1 << 16];
+      while (in.read(buffer, sizeof(buffer)) || in.gcount() > 0)
+        {
+          text.append(buffer, in.gcount());
+          AssertThrow(text.size() <= max_file_size,
+                      ExcMessage(what + " is larger than 16 MiB."));
+        }
+      AssertThrow(!in.bad(), ExcMessage(what + " cannot be read."));
+      return text;
+    }
+
+    /// The text of a parameter file as given, refusing what is not a
+    /// regular, readable file of a sensible size.  what names the file
+    /// (and the line that includes it).
+    std::string
+    read_regular_file(const fs::path &filename, const std::string &what)
+    {
+      std::error_code error;
+      const auto      status = fs::status(filename, error);
+      AssertThrow(fs::exists(status), ExcMessage(what + " does not exist."));
+      AssertThrow(!fs::is_directory(status),
+                  ExcMessage(what + " is a directory, not a parameter file."));
+      AssertThrow(fs::is_regular_file(status),
+                  ExcMessage(what + " is not a regular file (a device, FIFO "
+                                    "or socket)."));
+      AssertThrow(fs::file_size(filename, error) <= max_file_size && !error,
+                  ExcMessage(what + " is larger than 16 MiB."));
+      std::ifstream in(filename, std::ios::binary);
+      AssertThrow(in, ExcMessage(what + " cannot be opened for reading."));
+      return read_all(in, what);
+    }
+
+    /// Without a UTF-8 byte-order mark, Windows (CRLF) and old Mac (CR)
+    /// line ends made LF: the line numbers stay those of the file.
+    std::string
+    clean_text(const std::string &text)
+    {
+      const std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+      std::string       clean;
+      clean.reserve(text.size());
+      for (std::size_t i = start; i < text.size(); ++i)
+        if (text[i] != '\r')
+          clean += text[i];
+        else if (i + 1 == text.size() || text[i + 1] != '\n')
+          clean += '\n';
+      return clean;
     }
 
     std::string
@@ -218,31 +255,28 @@ namespace fgimpact
 
 
   InputFile::InputFile(const std::string &filename)
-    : name(filename)
+    : name(filename == "-" ? std::string("standard input") : filename)
+    , xml_or_json(ends_with(filename, ".xml") || ends_with(filename, ".json"))
   {
-    std::string text;
-    if (filename == "-")
-      text.assign(std::istreambuf_iterator<char>(std::cin),
-                  std::istreambuf_iterator<char>());
+    const std::string what = filename == "-" ?
+                               std::string("standard input") :
+                               "parameter file '" + filename + "'";
+    original_text          = filename == "-" ? read_all(std::cin, what) :
+                                               read_regular_file(filename, what);
+    if (xml_or_json)
+      expanded_text = clean_text(original_text);
     else
       {
-        std::ifstream in(filename);
-        AssertThrow(in,
-                    ExcMessage("cannot open the parameter file '" + filename +
-                               "'"));
-        text.assign(std::istreambuf_iterator<char>(in),
-                    std::istreambuf_iterator<char>());
+        std::vector<std::string> chain;
+        expand(name, clean_text(original_text), chain);
       }
-    original_text = text;
-    expand(filename == "-" ? std::string("standard input") : filename, text, 0);
-    if (filename == "-")
-      name = "standard input";
   }
 
 
 
   InputFile::InputFile(const std::string &name, const std::string &text)
-    : name(name)
+    : name(name == "-" ? std::string("standard input") : name)
+    , xml_or_json(ends_with(name, ".xml") || ends_with(name, ".json"))
     , original_text(text)
     , expanded_text(text)
   {}
@@ -266,14 +300,17 @@ namespace fgimpact
 
 
   void
-  InputFile::expand(const std::string &filename,
-                    const std::string &text,
-                    const unsigned int depth)
+  InputFile::expand(const std::string        &filename,
+                    const std::string        &text,
+                    std::vector<std::string> &chain)
   {
     // Includes of standard input are relative to the working directory.
-    const fs::path     directory = (filename == "standard input") ?
-                                     fs::path() :
-                                     fs::path(filename).parent_path();
+    const bool     is_stdin = (filename == "standard input");
+    const fs::path directory =
+      is_stdin ? fs::path() : fs::path(filename).parent_path();
+    std::error_code error;
+    chain.push_back(is_stdin ? filename :
+                               fs::weakly_canonical(filename, error).string());
     std::istringstream in(text);
     unsigned int       line_number = 0;
     for (std::string line; std::getline(in, line);)
@@ -288,25 +325,31 @@ namespace fgimpact
           }
         const std::string where =
           filename + " line " + std::to_string(line_number) + ": ";
-        AssertThrow(depth < max_include_depth,
-                    ExcMessage(where + "includes nested more than " +
-                               std::to_string(max_include_depth) +
-                               " deep (a file including itself?)"));
         const fs::path included(Utilities::trim(content.substr(7)));
         fs::path       resolved = included;
-        if (included.is_relative() && fs::exists(directory / included))
+        if (included.is_relative() && fs::exists(directory / included, error))
           resolved = directory / included;
-        std::ifstream file(resolved);
-        AssertThrow(file && fs::is_regular_file(resolved),
-                    ExcMessage(where + "cannot open the included file '" +
-                               included.string() + "' (looked in '" +
+        AssertThrow(fs::exists(resolved, error),
+                    ExcMessage(where + "the included file '" +
+                               included.string() +
+                               "' does not exist (looked in '" +
                                (directory.empty() ? std::string(".") :
                                                     directory.string()) +
-                               "' and the working directory)"));
-        const std::string included_text(std::istreambuf_iterator<char>(file),
-                                        {});
-        expand(resolved.string(), included_text, depth + 1);
+                               "' and the working directory)."));
+        const std::string canonical =
+          fs::weakly_canonical(resolved, error).string();
+        for (const std::string &open : chain)
+          AssertThrow(open != canonical,
+                      ExcMessage(where + "'" + resolved.string() +
+                                 "' includes itself (recursive include)."));
+        AssertThrow(chain.size() < max_include_depth,
+                    ExcMessage(where + "includes nested deeper than " +
+                               std::to_string(max_include_depth) + " files."));
+        const std::string included_text = read_regular_file(
+          resolved, where + "the included file '" + included.string() + "'");
+        expand(resolved.string(), clean_text(included_text), chain);
       }
+    chain.pop_back();
   }
 
 
@@ -315,15 +358,20 @@ namespace fgimpact
   InputFile::parse_into(ParameterHandler               &prm,
                         const std::vector<std::string> &overrides) const
   {
-    const DeclaredNames names = declared_names(prm);
     try
       {
         std::istringstream in(expanded_text);
-        prm.parse_input(in, name);
+        if (ends_with(name, ".xml"))
+          prm.parse_input_from_xml(in);
+        else if (ends_with(name, ".json"))
+          prm.parse_input_from_json(in);
+        else
+          prm.parse_input(in, name);
       }
     catch (const ExceptionBase &e)
       {
-        const std::string undeclared = find_undeclared_name(prm);
+        const std::string undeclared =
+          xml_or_json ? std::string() : find_undeclared_name(prm);
         if (!undeclared.empty())
           throw ExcMessage(undeclared);
         // deal.II counts lines of the expanded text: name the true origin.

@@ -8,11 +8,9 @@
 #include <fgimpact/command_line.h>
 #include <fgimpact/input_file.h>
 #include <fgimpact/logger.h>
+#include <fgimpact/run_control.h>
 #include <fgimpact/simulator.h>
 
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -20,54 +18,6 @@
 
 namespace
 {
-  /// Collapse a deal.II exception text or any message into one line.
-  std::string
-  one_line(const std::string &text)
-  {
-    std::string out;
-    bool        space = false;
-    for (const char ch : text)
-      {
-        if (ch == '\n' || ch == '\t' || ch == ' ')
-          space = !out.empty();
-        else
-          {
-            if (space)
-              out += ' ';
-            out += ch;
-            space = false;
-          }
-      }
-    return out;
-  }
-
-  std::string
-  message_of(const dealii::ExceptionBase &e)
-  {
-    std::ostringstream s;
-    e.print_info(s);
-    return one_line(s.str());
-  }
-
-  /// Make the output directory and check that files can be written there.
-  void
-  prepare_output_directory(const std::string &directory)
-  {
-    namespace fs = std::filesystem;
-    std::error_code error;
-    fs::create_directories(directory, error);
-    AssertThrow(!error && fs::is_directory(directory),
-                dealii::ExcMessage("Output/Directory '" + directory +
-                                   "' cannot be created: " + error.message()));
-    const std::string probe = directory + "/.fgimpact_write_test";
-    {
-      std::ofstream test(probe);
-      AssertThrow(test.good(),
-                  dealii::ExcMessage("Output/Directory '" + directory +
-                                     "' is not writable."));
-    }
-    fs::remove(probe, error);
-  }
   /**
    * Options that finish the program (help, version, printing the defaults,
    * a bad command line): the exit code; -1 to go on.
@@ -107,48 +57,51 @@ namespace
   }
 
   /// Rank 0 reads the input (a file or standard input, includes
-  /// expanded), every rank gets its text; throws ExcMessage.
+  /// expanded), every rank gets its text; throws ExcMessage on every rank.
   std::unique_ptr<fgimpact::InputFile>
   read_input(const std::string &prm_file, const MPI_Comm comm)
   {
     using namespace dealii;
     std::unique_ptr<fgimpact::InputFile> input;
-    std::string                          error;
-    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
-    if (root)
-      try
-        {
-          input = std::make_unique<fgimpact::InputFile>(prm_file);
-        }
-      catch (const ExceptionBase &e)
-        {
-          error = message_of(e);
-        }
-    error = Utilities::MPI::broadcast(comm, error, 0);
-    AssertThrow(error.empty(), ExcMessage(error));
-    const std::string text =
-      Utilities::MPI::broadcast(comm, root ? input->expanded() : "", 0);
-    if (!root)
-      input = std::make_unique<fgimpact::InputFile>(prm_file, text);
+    fgimpact::run_on_root(comm, [&]() {
+      input = std::make_unique<fgimpact::InputFile>(prm_file);
+    });
+    if (Utilities::MPI::n_mpi_processes(comm) > 1)
+      {
+        const std::string text =
+          Utilities::MPI::broadcast(comm, input ? input->expanded() : "", 0);
+        if (!input)
+          input = std::make_unique<fgimpact::InputFile>(prm_file, text);
+      }
     return input;
   }
-  /// Rank 0, before the run: log.txt (provenance first), the provenance
-  /// for summary.txt, parameters.prm (expanded) and input.prm (as given).
+
+  /**
+   * Rank 0, before the run: clean the output directory (Output/Overwrite;
+   * before log.txt is opened, so that the earlier run's log goes and this
+   * run's stays), then log.txt (provenance first), the provenance for
+   * summary.txt, parameters.prm (expanded) and input.prm (as given), both
+   * written atomically.
+   */
   void
-  start_run_files(const std::string              &directory,
-                  const int                       argc,
-                  const char *const              *argv,
-                  fgimpact::Logger               &logger,
-                  const dealii::ParameterHandler &prm,
-                  const fgimpact::InputFile      &input)
+  start_run_files(const fgimpact::OutputParameters &output,
+                  const int                         argc,
+                  const char *const                *argv,
+                  fgimpact::Logger                 &logger,
+                  const dealii::ParameterHandler   &prm,
+                  const fgimpact::InputFile        &input)
   {
+    fgimpact::prepare_output_directory(output);
     const std::string provenance = fgimpact::CommandLine::provenance(
       argc, argv, dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
-    logger.open(directory + "/log.txt", provenance);
+    logger.open(output.directory + "/log.txt", provenance);
     fgimpact::SummaryWriter::set_preamble(provenance);
-    std::ofstream out(directory + "/parameters.prm");
-    prm.print_parameters(out, dealii::ParameterHandler::PRM);
-    std::ofstream(directory + "/input.prm") << input.original();
+    std::ostringstream parameters;
+    prm.print_parameters(parameters, dealii::ParameterHandler::PRM);
+    fgimpact::write_file_atomically(output.directory + "/parameters.prm",
+                                    parameters.str());
+    fgimpact::write_file_atomically(output.directory + "/input.prm",
+                                    input.original());
   }
 } // namespace
 
@@ -174,7 +127,9 @@ main(int argc, char *argv[])
   ParameterHandler           prm;
   fgimpact::Parameters       parameters;
   std::unique_ptr<InputFile> input;
-  // Input errors: everything is checked before any file is written.
+  // Input errors: everything is checked before any file is written; the
+  // -s overrides are applied before validate().  Failures are reported in
+  // one line with their exit code by report_failure() (run_control.cc).
   try
     {
       Parameters::declare_parameters(prm);
@@ -182,28 +137,27 @@ main(int argc, char *argv[])
       input->parse_into(prm, options.overrides);
       parameters.parse_parameters(prm);
       parameters.validate();
+      for (const auto &warning : parameters.warnings())
+        if (root)
+          std::cerr << "fgimpact: warning: " << warning << std::endl;
     }
-  catch (const ExceptionBase &e)
+  catch (...)
     {
-      if (root)
-        std::cerr << "fgimpact: error in "
-                  << (prm_file == "-" ? "standard input" : prm_file) << ": "
-                  << message_of(e) << '\n';
-      return 1;
-    }
-  catch (const std::exception &e)
-    {
-      if (root)
-        std::cerr << "fgimpact: error in " << prm_file << ": "
-                  << one_line(e.what()) << '\n';
-      return 1;
+      return report_failure(std::current_exception(),
+                            root,
+                            1,
+                            "error in " + (prm_file == "-" ?
+                                             std::string("standard input") :
+                                             prm_file));
     }
 
   try
     {
       Simulator simulator(parameters, MPI_COMM_WORLD);
       // Everything that can fail on bad input is checked before any file
-      // is written: setup() writes nothing.
+      // is written: setup() writes nothing.  Rank 0 prepares the directory
+      // and writes the start files; every rank learns the outcome, so that
+      // all stop together.
       try
         {
           simulator.setup();
@@ -215,45 +169,22 @@ main(int argc, char *argv[])
                              "nothing written)\n";
               return 0;
             }
-          // Rank 0 makes and checks the directory; every rank learns the
-          // outcome, so that all stop together.
-          std::string error;
-          if (root)
-            try
-              {
-                prepare_output_directory(parameters.output.directory);
-              }
-            catch (const ExceptionBase &e)
-              {
-                error = message_of(e);
-              }
-          error = Utilities::MPI::broadcast(MPI_COMM_WORLD, error, 0);
-          AssertThrow(error.empty(), ExcMessage(error));
+          run_on_root(MPI_COMM_WORLD, [&]() {
+            start_run_files(parameters.output, argc, argv, logger, prm, *input);
+          });
         }
-      catch (const ExceptionBase &e)
+      catch (...)
         {
-          if (root)
-            std::cerr << "fgimpact: error: " << message_of(e) << '\n';
-          return 1;
+          return report_failure(std::current_exception(), root, 1);
         }
-      const std::string &directory = parameters.output.directory;
-      if (root)
-        start_run_files(directory, argc, argv, logger, prm, *input);
       simulator.run();
       if (root)
-        std::cout << "fgimpact: results in " << directory << '\n';
+        std::cout << "fgimpact: results in " << parameters.output.directory
+                  << '\n';
     }
-  catch (const ExceptionBase &e)
+  catch (...)
     {
-      if (root)
-        std::cerr << "fgimpact: error: " << message_of(e) << '\n';
-      return 2;
-    }
-  catch (const std::exception &e)
-    {
-      if (root)
-        std::cerr << "fgimpact: error: " << one_line(e.what()) << '\n';
-      return 2;
+      return report_failure(std::current_exception(), root, 2);
     }
   return 0;
 }

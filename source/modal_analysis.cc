@@ -2,6 +2,7 @@
 
 #include <fgimpact/modal_analysis.h>
 #include <fgimpact/postprocessing.h>
+#include <fgimpact/run_control.h>
 
 #include <cmath>
 #include <cstdio>
@@ -221,10 +222,10 @@ namespace fgimpact
   {
     if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
       {
-        std::ofstream csv(directory + "/frequencies.csv");
-        csv << "mode, frequency_Hz, w_energy_fraction\n";
+        std::string   csv = "mode, frequency_Hz, w_energy_fraction\n";
         SummaryWriter summary;
-        char          line[200];
+        summary.add_text("status", "completed");
+        char line[200];
         for (unsigned int j = 0; j < modes.size(); ++j)
           {
             std::snprintf(line,
@@ -233,13 +234,14 @@ namespace fgimpact
                           j + 1,
                           modes[j].frequency,
                           modes[j].w_fraction);
-            csv << line;
+            csv += line;
             summary.add("frequency_" + std::to_string(j + 1) + "_Hz",
                         modes[j].frequency,
                         4);
           }
         summary.add("n_dofs", plate.n_dofs(), 0);
         summary.add("subspace_iterations", iterations, 0);
+        write_file_atomically(directory + "/frequencies.csv", csv);
         summary.write(directory + "/summary.txt");
       }
     // Mode shapes scaled to a unit maximum displacement, as VTU "time"

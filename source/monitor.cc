@@ -1,10 +1,12 @@
 #include <deal.II/base/exceptions.h>
 
 #include <fgimpact/monitor.h>
+#include <fgimpact/run_control.h>
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <sstream>
 
 namespace fgimpact
 {
@@ -51,6 +53,16 @@ namespace fgimpact
                         "default), default (zlib's compromise) or best "
                         "(smallest files, several times slower).  The values "
                         "in the files are the same at every level.");
+      prm.declare_entry("Overwrite",
+                        "true",
+                        Patterns::Bool(),
+                        "true: before writing, remove exactly the files this "
+                        "program writes from Directory (history.csv, "
+                        "summary.txt, parameters.prm, input.prm, log.txt, "
+                        "frequencies.csv, solution.pvd, solution_*.vtu/"
+                        ".pvtu), so that no file of an earlier run is mixed "
+                        "with the new ones. false: refuse a Directory that "
+                        "is not empty.");
     }
     prm.leave_subsection();
   }
@@ -73,6 +85,7 @@ namespace fgimpact
       level == "default" ? DataOutBase::VtkFlags::default_compression :
       level == "best"    ? DataOutBase::VtkFlags::best_compression :
                            DataOutBase::VtkFlags::best_speed;
+    overwrite = prm.get_bool("Overwrite");
     prm.leave_subsection();
   }
 
@@ -230,6 +243,7 @@ namespace fgimpact
       sample.E_impactor + sample.E_kinetic + sample.E_strain + sample.E_contact;
 
     update_extremes(t, sample);
+    watch_energy(step, t, std::abs(sample.E_total - E0) / E0);
     impact_results.linear_iterations += stepper.linear_iterations();
     impact_results.max_linear_iterations =
       std::max(impact_results.max_linear_iterations,
@@ -301,6 +315,49 @@ namespace fgimpact
 
 
   void
+  ImpactMonitor::watch_energy(const unsigned int step,
+                              const double       t,
+                              const double       drift)
+  {
+    // Implicit Newmark conserves the discrete energy up to the contact's
+    // quadrature error (1e-4..1e-3 on the paper's cases); 0.5 is far
+    // beyond any accurate run, and NaN fails the test too.
+    const double warning_level = 1e-2, stop_level = 0.5;
+    char         where[100];
+    std::snprintf(
+      where, sizeof(where), "time step %u (t = %.3f us)", step, t * 1e6);
+    if (!(drift <= stop_level))
+      {
+        char text[100];
+        std::snprintf(text, sizeof(text), "%.3e", drift);
+        AssertThrow(false,
+                    ExcNumericalFailure(
+                      std::string("the run is blowing up: the relative "
+                                  "energy drift reached ") +
+                      text + " (limit 0.5) at " + where +
+                      "; reduce Time integration/Time step, use Time "
+                      "integration/Scheme = implicit with Newmark beta = "
+                      "0.25, gamma = 0.5, or lower Time integration/Stable "
+                      "step safety factor."));
+      }
+    if (drift > warning_level && !drift_warned)
+      {
+        drift_warned = true;
+        char text[300];
+        std::snprintf(text,
+                      sizeof(text),
+                      "  WARNING: the relative energy drift reached %.3e at "
+                      "%s; above 1e-2 the results may be inaccurate: reduce "
+                      "Time integration/Time step.\n",
+                      drift,
+                      where);
+        pcout << text;
+      }
+  }
+
+
+
+  void
   ImpactMonitor::write_outputs(const unsigned int   step,
                                const double         t,
                                const TimeStepper   &stepper,
@@ -310,17 +367,30 @@ namespace fgimpact
     row.reserve(history_columns().size());
     for (const auto &column : history_columns())
       row.push_back(column.value(sample));
-    if (history)
-      history->write_row(row);
+    // A failed write stops the writing on this rank; the driver stops
+    // every rank at the end of this step (no rank waits for another).
+    try
+      {
+        if (history)
+          history->write_row(row);
+        if (vtu && step % parameters.vtu_interval == 0)
+          {
+            output_timer.start();
+            vtu->write(step, t, stepper.displacement(), stepper.velocity());
+            output_timer.stop();
+          }
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream message;
+        e.print_info(message);
+        output_failure_message = one_line(message.str());
+        history.reset();
+        vtu.reset();
+      }
     for (const auto &observer : observers)
       observer(row);
 
-    if (vtu && step % parameters.vtu_interval == 0)
-      {
-        output_timer.start();
-        vtu->write(step, t, stepper.displacement(), stepper.velocity());
-        output_timer.stop();
-      }
     if (parameters.log_interval > 0 &&
         (step % parameters.log_interval == 0 || step == n_steps))
       {
@@ -345,23 +415,34 @@ namespace fgimpact
   void
   ImpactMonitor::close_output()
   {
-    if (vtu)
+    output_timer.start();
+    try
       {
-        output_timer.start();
-        vtu->finish();
-        output_timer.stop();
+        if (vtu)
+          vtu->finish();
+        if (history)
+          history->flush();
       }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream message;
+        e.print_info(message);
+        output_failure_message = one_line(message.str());
+      }
+    output_timer.stop();
   }
 
 
 
   void
   ImpactMonitor::finish(const ImpactorState &ball,
+                        const unsigned int   steps_done,
+                        const std::string   &status,
                         const double         loop_time,
                         const double         wall_time)
   {
     ImpactResults &r = impact_results;
-    r.n_time_steps   = n_steps;
+    r.n_time_steps   = steps_done;
     r.departure_velocity =
       in_contact ? std::numeric_limits<double>::quiet_NaN() : -ball.v;
     // int F dt = m (V0 + V_departure), with the ball's current velocity.
@@ -369,9 +450,10 @@ namespace fgimpact
       std::abs(r.impulse - m_i * (V0 - ball.v)) / (m_i * V0);
 
     if (in_contact || !separated_once)
-      pcout << "  WARNING: the impactor is still in contact at the end time; "
-               "contact_duration and departure_velocity are not defined "
-               "(raise Time integration/End time).\n";
+      pcout << "  WARNING: the impactor is still in contact at the last time "
+               "step; contact_duration and departure_velocity do not exist "
+               "and are written as 'none' (raise Time integration/End "
+               "time).\n";
     if (r.n_impacts > 1)
       pcout << "  note: the impactor struck the plate " << r.n_impacts
             << " times.\n";
@@ -380,7 +462,7 @@ namespace fgimpact
     r.time_loop_time = loop_time - r.output_time;
     r.wall_time      = wall_time;
 
-    write_summary();
+    write_summary(status, steps_done * dt);
     print_results();
   }
 
@@ -390,18 +472,25 @@ namespace fgimpact
   ImpactMonitor::print_results() const
   {
     const ImpactResults &r = impact_results;
-    char                 line[400];
+    // A quantity that does not exist is printed as "none".
+    const auto optional = [](const double value, const char *format) {
+      char text[40] = "none";
+      if (std::isfinite(value))
+        std::snprintf(text, sizeof(text), format, value);
+      return std::string(text);
+    };
+    char line[400];
     std::snprintf(line,
                   sizeof(line),
-                  "  peak force %.3f N at %.3f us; contact %.3f us; departure "
-                  "velocity %.6f m/s\n"
+                  "  peak force %.3f N at %.3f us; contact %s us; departure "
+                  "velocity %s m/s\n"
                   "  max indentation %.4f um, mid-plane deflection %.4f um, "
                   "top deflection %.4f um\n"
                   "  energy drift %.3e\n",
                   r.peak_contact_force,
                   r.time_of_peak_force * 1e6,
-                  r.contact_duration * 1e6,
-                  r.departure_velocity,
+                  optional(r.contact_duration * 1e6, "%.3f").c_str(),
+                  optional(r.departure_velocity, "%.6f").c_str(),
                   r.max_indentation * 1e6,
                   r.max_midplane_deflection * 1e6,
                   r.max_top_deflection * 1e6,
@@ -415,19 +504,25 @@ namespace fgimpact
       pcout << "  wall time " << r.wall_time << " s (setup " << r.setup_time
             << " s, factorization " << r.factorization_time << " s, time loop "
             << r.time_loop_time
-            << " s = " << 1e3 * r.time_loop_time / std::max(n_steps, 1u)
+            << " s = " << 1e3 * r.time_loop_time / std::max(r.n_time_steps, 1u)
             << " ms per step, output " << r.output_time << " s)\n";
   }
 
 
 
   void
-  ImpactMonitor::write_summary() const
+  ImpactMonitor::write_summary(const std::string &status,
+                               const double       t_end) const
   {
     if (!root)
       return;
     const ImpactResults &r = impact_results;
     SummaryWriter        out;
+    // completed, interrupted (SIGINT/SIGTERM) or failed, and the time
+    // the results cover.  contact_duration_us and departure_velocity_m_s
+    // are `none` while the ball has not left the plate.
+    out.add_text("status", status);
+    out.add("time_reached_us", t_end * 1e6, 4);
     out.add("peak_contact_force_N", r.peak_contact_force, 4);
     out.add("max_sampled_contact_force_N", r.max_sampled_force, 4);
     out.add("time_of_peak_force_us", r.time_of_peak_force * 1e6, 4);
@@ -454,7 +549,9 @@ namespace fgimpact
     out.add("setup_s", r.setup_time, 3);
     out.add("factorization_s", r.factorization_time, 3);
     out.add("time_loop_s", r.time_loop_time, 3);
-    out.add("time_per_step_ms", 1e3 * r.time_loop_time / r.n_time_steps, 4);
+    out.add("time_per_step_ms",
+            1e3 * r.time_loop_time / std::max(r.n_time_steps, 1u),
+            4);
     out.add("output_s", r.output_time, 3);
     if (parameters.instrumentation)
       {

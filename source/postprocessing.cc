@@ -6,9 +6,11 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <fgimpact/postprocessing.h>
+#include <fgimpact/run_control.h>
 
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 namespace fgimpact
 {
@@ -115,6 +117,14 @@ namespace fgimpact
   {
     if (pending.valid())
       pending.get();
+    if (!record_pending)
+      return;
+    record_pending = false;
+    // Only rank 0 keeps the PVD, and it lists complete snapshots only.
+    times_and_names.push_back(pending_record);
+    std::ostringstream pvd;
+    DataOutBase::write_pvd_record(pvd, times_and_names);
+    write_file_atomically(directory + "/solution.pvd", pvd.str());
   }
 
 
@@ -164,17 +174,34 @@ namespace fgimpact
       flags.compression_level = compression;
       data_out.set_flags(flags);
 
-      std::ofstream piece(directory + "/" + base + "." +
-                          Utilities::int_to_string(rank) + ".vtu");
-      data_out.write_vtu(piece);
-      AssertThrow(piece, ExcMessage("cannot write " + base + ".vtu"));
+      // deal.II's own I/O error is several paragraphs: one line instead.
+      const auto write_checked = [](const std::string &filename,
+                                    const auto        &writer) {
+        std::ofstream out(filename);
+        try
+          {
+            writer(out);
+          }
+        catch (const ExceptionBase &)
+          {
+            out.setstate(std::ios::badbit);
+          }
+        out.close();
+        AssertThrow(!out.fail(),
+                    ExcOutputFailure("cannot write " + filename +
+                                     " (disk full or I/O error)."));
+      };
+      write_checked(directory + "/" + base + "." +
+                      Utilities::int_to_string(rank) + ".vtu",
+                    [&](std::ostream &out) { data_out.write_vtu(out); });
       if (rank == 0)
         {
           std::vector<std::string> pieces;
           for (unsigned int r = 0; r < n_ranks; ++r)
             pieces.push_back(base + "." + Utilities::int_to_string(r) + ".vtu");
-          std::ofstream pvtu(directory + "/" + record);
-          data_out.write_pvtu_record(pvtu, pieces);
+          write_checked(directory + "/" + record, [&](std::ostream &out) {
+            data_out.write_pvtu_record(out, pieces);
+          });
         }
     };
     if (n_ranks == 1)
@@ -182,27 +209,40 @@ namespace fgimpact
     else
       write_files();
 
-    if (rank == 0)
-      {
-        times_and_names.emplace_back(t, record);
-        std::ofstream pvd(directory + "/solution.pvd");
-        DataOutBase::write_pvd_record(pvd, times_and_names);
-      }
+    // Listed in the PVD by finish(), once the files are complete.
+    pending_record = {t, record};
+    record_pending = (rank == 0);
+    if (n_ranks > 1)
+      finish();
   }
 
 
 
   CsvWriter::CsvWriter(const std::string                              &filename,
                        const std::vector<std::pair<std::string, int>> &columns)
-    : out(filename)
+    : filename(filename)
+    , out(filename, std::ios::binary)
   {
-    AssertThrow(out, ExcMessage("Cannot write the file " + filename));
+    AssertThrow(out, ExcOutputFailure("cannot write " + filename + "."));
     for (unsigned int i = 0; i < columns.size(); ++i)
       {
-        out << (i ? ", " : "") << columns[i].first;
+        buffer += (i ? ", " : "") + columns[i].first;
         decimals.push_back(columns[i].second);
       }
-    out << '\n';
+    buffer += '\n';
+    flush();
+  }
+
+
+
+  CsvWriter::~CsvWriter()
+  {
+    try
+      {
+        flush();
+      }
+    catch (...)
+      {}
   }
 
 
@@ -212,16 +252,42 @@ namespace fgimpact
   {
     Assert(values.size() == decimals.size(),
            ExcDimensionMismatch(values.size(), decimals.size()));
-    char buffer[64];
+    char buffer_row[64];
     for (unsigned int i = 0; i < values.size(); ++i)
       {
         // Print -0.000 as 0.000: a sign flip of round-off is not a change.
         const double scale = std::pow(10., decimals[i]);
         const double v = (std::abs(values[i]) * scale < 0.5) ? 0. : values[i];
-        std::snprintf(buffer, sizeof(buffer), "%.*f", decimals[i], v);
-        out << (i ? ", " : "") << buffer;
+        std::snprintf(buffer_row, sizeof(buffer_row), "%.*f", decimals[i], v);
+        if (i > 0)
+          buffer += ", ";
+        buffer += buffer_row;
       }
-    out << '\n';
+    buffer += '\n';
+    if (buffer.size() > (1u << 20) ||
+        std::chrono::steady_clock::now() - last_flush > std::chrono::seconds(2))
+      flush();
+  }
+
+
+
+  void
+  CsvWriter::flush()
+  {
+    last_flush = std::chrono::steady_clock::now();
+    if (buffer.empty() || !out.good())
+      {
+        AssertThrow(out.good(),
+                    ExcOutputFailure("cannot write " + filename +
+                                     " (disk full or I/O error)."));
+        return;
+      }
+    out.write(buffer.data(), buffer.size());
+    out.flush();
+    buffer.clear();
+    AssertThrow(out.good(),
+                ExcOutputFailure("cannot write " + filename +
+                                 " (disk full or I/O error)."));
   }
 
 
@@ -232,8 +298,11 @@ namespace fgimpact
                      const int          decimals)
   {
     char buffer[200];
-    std::snprintf(
-      buffer, sizeof(buffer), "%s = %.*f\n", name.c_str(), decimals, value);
+    if (std::isfinite(value))
+      std::snprintf(
+        buffer, sizeof(buffer), "%s = %.*f\n", name.c_str(), decimals, value);
+    else
+      std::snprintf(buffer, sizeof(buffer), "%s = none\n", name.c_str());
     text += buffer;
   }
 
@@ -242,6 +311,8 @@ namespace fgimpact
   void
   SummaryWriter::add_scientific(const std::string &name, const double value)
   {
+    if (!std::isfinite(value))
+      return add(name, value, 0);
     char buffer[200];
     std::snprintf(buffer, sizeof(buffer), "%s = %.6e\n", name.c_str(), value);
     text += buffer;
@@ -250,12 +321,17 @@ namespace fgimpact
 
 
   void
+  SummaryWriter::add_text(const std::string &name, const std::string &value)
+  {
+    text += name + " = " + value + '\n';
+  }
+
+
+
+  void
   SummaryWriter::write(const std::string &filename) const
   {
-    std::ofstream out(filename);
-    out << preamble() << text;
-    out.close();
-    AssertThrow(out, ExcMessage("cannot write " + filename));
+    write_file_atomically(filename, preamble() + text);
   }
 
 

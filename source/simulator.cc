@@ -1,4 +1,7 @@
+#include <deal.II/lac/solver_control.h>
+
 #include <fgimpact/modal_analysis.h>
+#include <fgimpact/run_control.h>
 #include <fgimpact/simulator.h>
 #include <fgimpact/static_analysis.h>
 
@@ -25,6 +28,30 @@ namespace fgimpact
       {}
 
     protected:
+      /// Run solve(), turning a linear solver failure into one line that
+      /// names the phase and the parameter.
+      template <typename Solve>
+      void
+      solve_in_phase(const std::string &phase, const Solve &solve) const
+      {
+        try
+          {
+            solve();
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        ExcNumericalFailure(
+                          "the linear solver did not converge in the " + phase +
+                          " after " + std::to_string(e.last_step) +
+                          " iterations; raise Linear solver/Max iterations "
+                          "(now " +
+                          std::to_string(
+                            parameters.linear_solver.max_iterations) +
+                          ") or use Linear solver/Type = auto."));
+          }
+      }
+
       const Parameters  &parameters;
       const PlateModel  &plate;
       ConditionalOStream pcout;
@@ -47,7 +74,7 @@ namespace fgimpact
                                 parameters.linear_solver,
                                 plate,
                                 impactor.impact_point(g.length(), g.width()));
-        analysis.solve();
+        solve_in_phase("static solve", [&]() { analysis.solve(); });
         analysis.write_output(parameters.output.directory,
                               parameters.output.vtu_compression);
         const auto &r = analysis.get_results();
@@ -82,7 +109,7 @@ namespace fgimpact
         ModalAnalysis analysis(parameters.modal,
                                parameters.linear_solver,
                                plate);
-        analysis.solve();
+        solve_in_phase("modal subspace iteration", [&]() { analysis.solve(); });
         analysis.write_output(parameters.output.directory,
                               parameters.output.vtu_compression);
         pcout << "  " << analysis.get_modes().size() << " modes after "

@@ -160,6 +160,7 @@ namespace fgimpact
       {
         SummaryWriter     out;
         const std::string where[3] = {"bottom", "mid", "top"};
+        out.add_text("status", "completed");
         for (unsigned int k = 0; k < 3; ++k)
           out.add("static_deflection_" + where[k] + "_um",
                   results.deflection[k] * 1e6,

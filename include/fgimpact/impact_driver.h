@@ -72,6 +72,11 @@ namespace fgimpact
     void
     do_timestep();
 
+    /// After a failure in the time loop: summary.txt with status = failed
+    /// (best effort: errors here are swallowed, the first one counts).
+    void
+    finish_failed_run(const unsigned int steps_done, const double loop_time);
+
     const Parameters  &parameters;
     const PlateModel  &plate;
     const Timer       &total_timer;

@@ -11,30 +11,41 @@ namespace fgimpact
   using namespace dealii;
 
   /**
-   * A .prm input as the executable reads it: from a file or standard input
-   * ("-"), with every `include` line replaced by the included file's text,
-   * the included path resolved relative to the directory of the file that
-   * contains the line (deal.II itself resolves it against the working
+   * The executable's one reader of its input: a .prm from a file or standard
+   * input ("-"), with every `include` line replaced by the included file's
+   * text, the included path resolved relative to the directory of the file
+   * that contains the line (deal.II itself resolves it against the working
    * directory; a path found only there is still accepted, for files written
-   * that way).  Parsing it into a ParameterHandler, command-line overrides
-   * ("Section/Entry=value") on top, and one-line errors that name the
-   * entry and suggest the closest declared name ("did you mean").
+   * that way).  Every file is read robustly: what is not a regular readable
+   * file (a directory, /dev/zero, a FIFO) or is larger than 16 MiB is
+   * refused, as is an include chain that is recursive or deeper than 32
+   * files; a UTF-8 byte-order mark and Windows (CRLF) or old Mac (CR) line
+   * ends are removed, so line numbers stay those of the file.  A file named
+   * *.xml or *.json is read the same way (no include expansion) and given to
+   * deal.II's XML or JSON reader.  Parsing it into a ParameterHandler,
+   * command-line overrides ("Section/Entry=value") on top, and one-line
+   * errors that name the entry and suggest the closest declared name ("did
+   * you mean").
    */
   class InputFile
   {
   public:
     /// Read `filename` ("-": standard input) and expand its includes;
-    /// throws ExcMessage (one line) on a missing file or include loop.
+    /// throws ExcMessage (one line, naming the file and line) on a missing,
+    /// unreadable or non-regular file, an include loop or a chain deeper
+    /// than 32 files.
     explicit InputFile(const std::string &filename);
 
     /// An input given as text (e.g. broadcast from rank 0); no origins.
     InputFile(const std::string &name, const std::string &expanded_text);
 
-    /// The text as given (the top-level file, includes not expanded).
+    /// The text as given (the top-level file, byte for byte: includes not
+    /// expanded, a byte-order mark or CRLF line ends kept).
     const std::string &
     original() const;
 
-    /// The text with the includes expanded (what deal.II parses).
+    /// The text with the includes expanded and line ends cleaned (what
+    /// deal.II parses).
     const std::string &
     expanded() const;
 
@@ -56,10 +67,13 @@ namespace fgimpact
       unsigned int line;
     };
 
+    /// Append text (of file `filename`, "standard input" for stdin) to
+    /// the expanded text, expanding its includes; chain holds the files
+    /// being read (canonical paths), to find recursion.
     void
-    expand(const std::string &filename,
-           const std::string &text,
-           const unsigned int depth);
+    expand(const std::string        &filename,
+           const std::string        &text,
+           std::vector<std::string> &chain);
 
     /// The first undeclared subsection or entry of the expanded text, as a
     /// message with a suggestion; empty if every name is declared.
@@ -67,6 +81,7 @@ namespace fgimpact
     find_undeclared_name(const ParameterHandler &prm) const;
 
     std::string         name;
+    bool                xml_or_json = false; // given to deal.II as is
     std::string         original_text;
     std::string         expanded_text;
     std::vector<Origin> origins;

@@ -31,6 +31,7 @@ namespace fgimpact
     unsigned int log_interval    = 50;
     bool         print_timing    = true;
     bool         instrumentation = false;
+    bool         overwrite       = true;
 
     /// Entry "VTU compression" (zlib level of the VTU data).
     DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression =
@@ -81,6 +82,12 @@ namespace fgimpact
    * summary.txt.  The results go into the driver's ImpactResults, whose
    * set-up entries (masses, DoFs, contact constants, timings) the driver
    * fills.  Only rank 0 writes files; every rank computes.
+   *
+   * It also watches the energy balance: one warning past a relative drift
+   * of 1e-2, and ExcNumericalFailure (naming the time step and what to
+   * change) past 0.5, a run that is blowing up.  A failed output write
+   * does not throw on the failing rank alone: it is kept in
+   * output_failure(), which the driver combines over the ranks.
    */
   class ImpactMonitor
   {
@@ -109,14 +116,27 @@ namespace fgimpact
            const ImpactorState &ball,
            const ContactState  &contact);
 
-    /// Wait for the last VTU snapshot (timed as output).
+    /// Wait for the last VTU snapshot and flush history.csv (timed as
+    /// output).
     void
     close_output();
 
-    /// Derive the final results, print them and write summary.txt;
-    /// loop_time and wall_time (s) are the driver's clocks.
+    /// The message of a failed output write on this rank ("" if none).
+    const std::string &
+    output_failure() const
+    {
+      return output_failure_message;
+    }
+
+    /**
+     * Derive the final results after steps_done time steps, print them
+     * and write summary.txt with `status` (completed, interrupted or
+     * failed); loop_time and wall_time (s) are the driver's clocks.
+     */
     void
     finish(const ImpactorState &ball,
+           const unsigned int   steps_done,
+           const std::string   &status,
            const double         loop_time,
            const double         wall_time);
 
@@ -126,6 +146,8 @@ namespace fgimpact
     void
     update_extremes(const double t, const HistorySample &sample);
     void
+    watch_energy(const unsigned int step, const double t, const double drift);
+    void
     write_outputs(const unsigned int   step,
                   const double         t,
                   const TimeStepper   &stepper,
@@ -133,7 +155,7 @@ namespace fgimpact
     void
     print_results() const;
     void
-    write_summary() const;
+    write_summary(const std::string &status, const double t_end) const;
 
     const OutputParameters parameters;
     const ContactModel    &contact_model;
@@ -157,6 +179,9 @@ namespace fgimpact
     // Peak detection: the sample left of the largest one.
     double peak_left    = 0;
     bool   peak_pending = false;
+    // The energy watchdog has warned; an output write failed on this rank.
+    bool        drift_warned = false;
+    std::string output_failure_message;
   };
 } // namespace fgimpact
 

@@ -15,6 +15,9 @@
 #include <fgimpact/static_analysis.h>
 #include <fgimpact/time_stepper.h>
 
+#include <string>
+#include <vector>
+
 namespace fgimpact
 {
   using namespace dealii;
@@ -57,9 +60,17 @@ namespace fgimpact
     parse_parameters(ParameterHandler &prm);
 
     /// Check consistency between entries (one-line messages naming the
-    /// parameter); throws ExcMessage.
+    /// parameter); throws ExcMessage.  Refuses a static load or a modal
+    /// Shift = 0 on a plate whose supports leave a rigid-body mode free
+    /// (a singular stiffness matrix), an impactor wider than the plate and
+    /// Newmark parameters outside 2 beta >= gamma >= 1/2.
     void
     validate() const;
+
+    /// Inputs that run but are likely not what was meant (one line each,
+    /// naming the parameter): no node under the impact point.
+    std::vector<std::string>
+    warnings() const;
   };
 } // namespace fgimpact
 

@@ -9,6 +9,7 @@
 
 #include <fgimpact/plate_model.h>
 
+#include <chrono>
 #include <fstream>
 #include <future>
 #include <string>
@@ -53,8 +54,10 @@ namespace fgimpact
   /**
    * Writes VTU files (one piece per MPI rank plus a .pvtu record) of the
    * displacement, velocity, stresses and material fields, and keeps the PVD
-   * time series file up to date after every write so that a run stopped
-   * early still opens in ParaView.
+   * time series file up to date so that a run stopped early still opens in
+   * ParaView: the PVD (written to a temporary name and renamed) lists a
+   * snapshot only once its files are complete.  A failed write throws
+   * ExcOutputFailure naming the file.
    */
   class VtuWriter
   {
@@ -79,7 +82,8 @@ namespace fgimpact
           const TrilinosWrappers::MPI::Vector &u,
           const TrilinosWrappers::MPI::Vector &v);
 
-    /// Wait for the pending snapshot, rethrowing its errors.
+    /// Wait for the pending snapshot, rethrowing its errors, and list it
+    /// in the PVD.
     void
     finish();
 
@@ -89,6 +93,8 @@ namespace fgimpact
     StressPostprocessor                         postprocessor;
     TrilinosWrappers::MPI::Vector               u_ghosted, v_ghosted;
     std::vector<std::pair<double, std::string>> times_and_names;
+    std::pair<double, std::string>              pending_record;
+    bool                                        record_pending = false;
     std::future<void>                           pending;
 
     const DataOutBase::VtkFlags::ZlibCompressionLevel compression;
@@ -97,8 +103,11 @@ namespace fgimpact
 
 
   /**
-   * A CSV file streamed row by row (nothing kept in memory), with fixed
-   * decimals per column so that reference outputs compare cleanly.
+   * A CSV file streamed row by row, with fixed decimals per column so that
+   * reference outputs compare cleanly.  Rows are collected and handed to
+   * the disk whole, at least every 2 s of wall time, at 1 MiB, and by
+   * flush() and the destructor: the file on disk never ends in a torn row.
+   * Every write is checked (ExcOutputFailure naming the file).
    */
   class CsvWriter
   {
@@ -107,19 +116,32 @@ namespace fgimpact
     CsvWriter(const std::string                              &filename,
               const std::vector<std::pair<std::string, int>> &columns);
 
+    /// Flushes what is left (errors are then ignored: call flush()).
+    ~CsvWriter();
+
     void
     write_row(const std::vector<double> &values);
 
+    /// Hand the collected rows to the disk and check the stream.
+    void
+    flush();
+
   private:
-    std::ofstream    out;
-    std::vector<int> decimals;
+    const std::string                     filename;
+    std::ofstream                         out;
+    std::vector<int>                      decimals;
+    std::string                           buffer;
+    std::chrono::steady_clock::time_point last_flush;
   };
 
 
   /**
    * summary.txt of every problem type: one `name = value` line per result,
    * the unit in the name, fixed decimals (or %.6e) per entry, written at
-   * once by write() so that a failed run leaves no partial summary.
+   * once by write() (to a temporary name, then renamed) so that a failed
+   * run leaves no partial summary.  A quantity that does not exist (NaN or
+   * Inf, e.g. the contact duration of a ball still in contact at the end
+   * time) is written as `none`, never as a number.
    */
   class SummaryWriter
   {
@@ -132,7 +154,11 @@ namespace fgimpact
     void
     add_scientific(const std::string &name, const double value);
 
-    /// Write all lines to filename; throws ExcMessage if it cannot.
+    /// A word (status = completed).
+    void
+    add_text(const std::string &name, const std::string &value);
+
+    /// Write all lines to filename; throws ExcOutputFailure if it cannot.
     void
     write(const std::string &filename) const;
 

@@ -1,0 +1,145 @@
+#ifndef fgimpact_run_control_h
+#define fgimpact_run_control_h
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <exception>
+#include <functional>
+#include <string>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  struct OutputParameters;
+
+  /**
+   * @name What a run does when it cannot go on
+   *
+   * Exit codes of the executable: 0 completed, 1 bad input (nothing
+   * written), 2 numerical or I/O failure during the run, 128 + signal
+   * number when SIGINT or SIGTERM stopped the time loop.
+   */
+  /** @{ */
+
+  /// A numerical failure (solver not converging, blow-up): exit code 2 even
+  /// when it happens during set-up.  The text is one line naming the phase
+  /// or the time step and the parameter to change.
+  DeclException1(ExcNumericalFailure, std::string, << arg1);
+
+  /// A file that could not be written completely (disk full, I/O error):
+  /// one line naming the file.
+  DeclException1(ExcOutputFailure, std::string, << arg1);
+
+  /// Thrown by the time loop after SIGINT or SIGTERM, once history.csv,
+  /// summary.txt (status = interrupted) and the PVD are complete.
+  struct RunInterrupted : public std::exception
+  {
+    RunInterrupted(const int signal, const std::string &message)
+      : signal(signal)
+      , message(message)
+    {}
+
+    const char *
+    what() const noexcept override
+    {
+      return message.c_str();
+    }
+
+    int         signal;
+    std::string message;
+  };
+
+  /**
+   * The one-line report of the exception on its way out of main() (on
+   * rank 0 only if root is false nothing is printed) and the exit code:
+   * RunInterrupted -> 128 + signal, ExcNumericalFailure, ExcOutputFailure
+   * and SolverControl::NoConvergence -> 2, anything else -> default_code.
+   * context goes before the message ("error", "error in file.prm").
+   */
+  int
+  report_failure(const std::exception_ptr &failure,
+                 const bool                root,
+                 const int                 default_code,
+                 const std::string        &context = "error");
+
+  /// Collapse a multi-line text (deal.II's exception texts) into one line.
+  std::string
+  one_line(const std::string &text);
+
+  /// The text of a deal.II exception (without the source location and
+  /// stack trace of print_info's caller), in one line.
+  std::string
+  message_of(const ExceptionBase &e);
+
+  /// Run f on rank 0 of comm only and rethrow its failure on every rank (an
+  /// ExcOutputFailure as such, anything else as ExcMessage), so that all
+  /// ranks stop together.
+  void
+  run_on_root(const MPI_Comm comm, const std::function<void()> &f);
+  /** @} */
+
+
+
+  /**
+   * @name Signals
+   *
+   * While a SignalGuard lives, SIGINT and SIGTERM only set a flag (the
+   * handler does nothing else, so it is async-signal-safe); the time loop
+   * asks agreed_signal() once per step and stops cleanly.  The previous
+   * handlers come back when the guard is destroyed.
+   */
+  /** @{ */
+  class SignalGuard
+  {
+  public:
+    SignalGuard();
+    ~SignalGuard();
+    SignalGuard(const SignalGuard &) = delete;
+    SignalGuard &
+    operator=(const SignalGuard &) = delete;
+  };
+
+  /**
+   * Whether the time loop must stop, agreed over the ranks of comm (one
+   * all-reduce of an int, none on one rank), so that all ranks stop at the
+   * same step: -1 if local_failure is true on any rank (a failed output
+   * write), else the signal received on any rank since the SignalGuard was
+   * made, 0 if none.
+   */
+  int
+  agreed_stop(const MPI_Comm comm, const bool local_failure);
+
+  /// For the tests: act as if `signal` had been received.
+  void
+  raise_stop_flag(const int signal);
+  /** @} */
+
+
+
+  /**
+   * @name Files never half-written
+   */
+  /** @{ */
+
+  /// Write text to filename through filename.tmp and a rename, checking
+  /// every step; throws ExcOutputFailure naming the file.
+  void
+  write_file_atomically(const std::string &filename, const std::string &text);
+
+  /**
+   * Create the output directory, check that a byte can be written there,
+   * and clean it: with Output/Overwrite remove exactly the files this
+   * program writes (history.csv, summary.txt, parameters.prm, input.prm,
+   * log.txt, frequencies.csv, solution.pvd, solution_*.vtu/.pvtu and
+   * leftover *.tmp), otherwise refuse a non-empty directory.  Call on one
+   * rank, before the run opens its log.txt there; throws ExcMessage naming
+   * Output/Directory or Output/Overwrite.
+   */
+  void
+  prepare_output_directory(const OutputParameters &output);
+  /** @} */
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,110 @@
+// A write that fails on one MPI rank only (its VTU piece of step 10 is a
+// link to /dev/full, a full disk) stops both ranks at the same step, never
+// a hang: exit code 2, one line from rank 0 naming the failing rank's file,
+// summary.txt with status = failed, and history.csv complete up to that
+// step.  Runs `mpiexec -n 2 fgimpact` as the mpirun=2 tests do.
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+  std::string
+  read(const std::string &filename)
+  {
+    std::ifstream     in(filename, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+  }
+} // namespace
+
+
+
+int
+main()
+{
+  const std::string dir = "failure_out";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::create_symlink("/dev/full", dir + "/solution_00010.1.vtu");
+  {
+    std::ofstream prm("failure.prm");
+    prm << "subsection Geometry\n set Subdivisions x = 4\n set Subdivisions "
+           "y = 2\n set Subdivisions z = 1\nend\n"
+           "subsection Output\n set Directory = "
+        << dir
+        << "\n set VTU interval = 5\n set Log interval = 0\n"
+           " set Print timing = false\nend\n";
+  }
+  // A hang would be ended by timeout (exit code 124).
+  const std::string command = std::string("timeout 300 mpiexec -n 2 ") +
+                              FGIMPACT_EXECUTABLE +
+                              " failure.prm > failure.stdout 2> failure.stderr";
+  const int  status    = std::system(command.c_str());
+  const int  exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const bool no_hang   = exit_code != 124;
+  const bool exit_two  = exit_code == 2;
+
+  // One line from fgimpact (mpiexec adds its own notice).
+  std::istringstream err(read("failure.stderr"));
+  std::string        line, ours;
+  unsigned int       n_ours = 0;
+  while (std::getline(err, line))
+    if (line.rfind("fgimpact: ", 0) == 0)
+      {
+        ++n_ours;
+        ours = line;
+      }
+  const bool one_line = n_ours == 1;
+  const bool named    = ours.find("solution_00010.1.vtu") != std::string::npos;
+
+  const std::string summary = read(dir + "/summary.txt");
+  const bool failed = summary.find("status = failed") != std::string::npos &&
+                      summary.find("n_time_steps = 10\n") != std::string::npos;
+  // history.csv: the header and the rows of steps 0..10, all complete.
+  const std::string  history = read(dir + "/history.csv");
+  std::istringstream rows(history);
+  std::getline(rows, line);
+  const auto   fields   = std::count(line.begin(), line.end(), ',');
+  unsigned int n_rows   = 0;
+  bool         complete = !history.empty() && history.back() == '\n';
+  while (std::getline(rows, line))
+    {
+      ++n_rows;
+      complete =
+        complete && std::count(line.begin(), line.end(), ',') == fields;
+    }
+  complete                = complete && n_rows == 11;
+  const bool no_temporary = !fs::exists(dir + "/solution.pvd.tmp") &&
+                            !fs::exists(dir + "/summary.txt.tmp");
+
+  std::printf("disk full on rank 1 only: no hang %s, exit code 2 %s, one line "
+              "%s, names rank 1's file %s\n",
+              no_hang ? "yes" : "NO",
+              exit_two ? "yes" : "NO",
+              one_line ? "yes" : "NO",
+              named ? "yes" : "NO");
+  std::printf("summary.txt status = failed after step 10 %s, history.csv "
+              "rows 0..10 complete %s, no temporary file %s\n",
+              failed ? "yes" : "NO",
+              complete ? "yes" : "NO",
+              no_temporary ? "yes" : "NO");
+  const bool ok = no_hang && exit_two && one_line && named && failed &&
+                  complete && no_temporary;
+  if (!ok)
+    std::printf("  exit code %d, stderr: %s\n  summary:\n%s\n",
+                exit_code,
+                read("failure.stderr").c_str(),
+                summary.c_str());
+  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+  return ok ? 0 : 1;
+}

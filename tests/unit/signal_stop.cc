@@ -1,0 +1,207 @@
+// SIGTERM and SIGINT stop a running impact cleanly: the executable
+// finishes the time step, completes history.csv, writes summary.txt with
+// status = interrupted and the time reached, closes the PVD, prints one
+// line and exits with 128 + the signal number.  Runs the executable as a
+// process and signals it once its time loop runs (history.csv exists);
+// the third run is on two MPI ranks (mpiexec, as the mpirun=2 tests) and
+// signals one rank only: both must stop at the same step.
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+  std::string
+  read(const std::string &filename)
+  {
+    std::ifstream     in(filename, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+  }
+
+  /// The value of key in summary.txt text ("" if absent).
+  std::string
+  value_of(const std::string &summary, const std::string &key)
+  {
+    const auto at = summary.find(key + " = ");
+    if (at == std::string::npos)
+      return "";
+    const auto begin = at + key.size() + 3;
+    return summary.substr(begin, summary.find('\n', begin) - begin);
+  }
+
+  /// A child process of parent (an MPI rank started by mpiexec), or 0.
+  pid_t
+  child_of(const pid_t parent)
+  {
+    pid_t child = 0;
+    for (const auto &entry : fs::directory_iterator("/proc"))
+      {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos)
+          continue;
+        // /proc/N/stat: "N (command) state ppid ..."
+        const std::string stat  = read(entry.path().string() + "/stat");
+        const auto        paren = stat.rfind(')');
+        if (paren == std::string::npos)
+          continue;
+        std::istringstream rest(stat.substr(paren + 1));
+        std::string        state;
+        pid_t              ppid = 0;
+        rest >> state >> ppid;
+        if (ppid == parent)
+          child = std::stoi(name);
+      }
+    return child;
+  }
+
+
+
+  bool
+  run_and_stop(const int signal, const char *signal_name, const bool mpi)
+  {
+    const std::string dir =
+      std::string("signal_out_") + signal_name + (mpi ? "_mpi" : "");
+    fs::remove_all(dir);
+    {
+      // 20 x 10 x 2 elements and 0.2 s (200,000 steps): minutes, were it
+      // not stopped.
+      std::ofstream prm("signal.prm");
+      prm << "subsection Geometry\n set Subdivisions x = 20\n set "
+             "Subdivisions y = 10\n set Subdivisions z = 2\nend\n"
+             "subsection Time integration\n set End time = 0.2\nend\n"
+             "subsection Output\n set Directory = "
+          << dir
+          << "\n set VTU interval = 50\n set Log interval = 0\n"
+             " set Print timing = false\nend\n";
+    }
+    std::fflush(stdout); // not twice: the child inherits the buffer
+    const pid_t pid = fork();
+    if (pid == 0)
+      {
+        std::freopen("signal.stdout", "w", stdout);
+        std::freopen("signal.stderr", "w", stderr);
+        if (mpi)
+          execlp("mpiexec",
+                 "mpiexec",
+                 "-n",
+                 "2",
+                 FGIMPACT_EXECUTABLE,
+                 "signal.prm",
+                 static_cast<char *>(nullptr));
+        else
+          execl(FGIMPACT_EXECUTABLE,
+                FGIMPACT_EXECUTABLE,
+                "signal.prm",
+                static_cast<char *>(nullptr));
+        _exit(127);
+      }
+    // The time loop runs once history.csv exists; let it run a little.
+    for (unsigned int i = 0; i < 600 && !fs::exists(dir + "/history.csv"); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    // On two ranks: one rank only is signalled.
+    const pid_t target = mpi ? child_of(pid) : pid;
+    if (target > 0)
+      kill(target, signal);
+    int status = 0;
+    waitpid(pid, &status, 0);
+
+    const bool exit_code =
+      WIFEXITED(status) && WEXITSTATUS(status) == 128 + signal;
+    const std::string err = read("signal.stderr");
+    // One line from fgimpact (on two ranks, from rank 0 only; mpiexec
+    // adds its own notice of the non-zero exit code).
+    std::istringstream err_lines(err);
+    std::string        err_line;
+    unsigned int       ours = 0, interrupted_lines = 0;
+    while (std::getline(err_lines, err_line))
+      if (err_line.rfind("fgimpact: ", 0) == 0)
+        {
+          ++ours;
+          if (err_line.find("interrupted by") != std::string::npos)
+            ++interrupted_lines;
+        }
+    const bool one_line =
+      ours == 1 && interrupted_lines == 1 &&
+      (mpi || std::count(err.begin(), err.end(), '\n') == 1);
+    const std::string summary = read(dir + "/summary.txt");
+    const bool        interrupted =
+      value_of(summary, "status") == "interrupted" &&
+      value_of(summary, "n_mpi_ranks") == (mpi ? "2" : "1");
+    const std::string steps = value_of(summary, "n_time_steps");
+    const std::string t_end = value_of(summary, "time_reached_us");
+    // history.csv: the header and one complete row per step done.
+    const std::string  history = read(dir + "/history.csv");
+    std::istringstream lines(history);
+    std::string        line;
+    std::getline(lines, line);
+    const auto   fields   = std::count(line.begin(), line.end(), ',');
+    unsigned int rows     = 0;
+    bool         complete = !history.empty() && history.back() == '\n';
+    std::string  last;
+    while (std::getline(lines, line))
+      {
+        ++rows;
+        complete =
+          complete && std::count(line.begin(), line.end(), ',') == fields;
+        last = line;
+      }
+    const bool all_rows = !steps.empty() && rows == std::stoul(steps) + 1 &&
+                          std::stoul(steps) > 0 && std::stoul(steps) < 200000;
+    // The last row's time is the time reached.
+    const bool same_time =
+      !t_end.empty() && std::abs(std::stod(last.substr(0, last.find(','))) -
+                                 std::stod(t_end)) < 1e-3;
+    const std::string pvd = read(dir + "/solution.pvd");
+    const bool pvd_closed = pvd.find("</VTKFile>") != std::string::npos &&
+                            !fs::exists(dir + "/solution.pvd.tmp");
+
+    std::printf("%s%s: exit code %d %s, one line on stderr %s, status = "
+                "interrupted %s, history rows complete %s, one row per step "
+                "done %s, time reached = last row %s, PVD closed %s\n",
+                signal_name,
+                mpi ? " to one of 2 MPI ranks" : "",
+                128 + signal,
+                exit_code ? "yes" : "NO",
+                one_line ? "yes" : "NO",
+                interrupted ? "yes" : "NO",
+                complete ? "yes" : "NO",
+                all_rows ? "yes" : "NO",
+                same_time ? "yes" : "NO",
+                pvd_closed ? "yes" : "NO");
+    const bool ok = exit_code && one_line && interrupted && complete &&
+                    all_rows && same_time && pvd_closed;
+    if (!ok)
+      std::printf("  status %d, stderr: %s  summary:\n%s\n",
+                  status,
+                  err.c_str(),
+                  summary.c_str());
+    return ok;
+  }
+} // namespace
+
+
+
+int
+main()
+{
+  const bool term = run_and_stop(SIGTERM, "SIGTERM", false);
+  const bool intr = run_and_stop(SIGINT, "SIGINT", false);
+  const bool mpi  = run_and_stop(SIGTERM, "SIGTERM", true);
+  const bool ok   = term && intr && mpi;
+  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+  return ok ? 0 : 1;
+}
