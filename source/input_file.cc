@@ -284,6 +284,14 @@ namespace fgimpact
 
 
   const std::string &
+  InputFile::input_name() const
+  {
+    return name;
+  }
+
+
+
+  const std::string &
   InputFile::original() const
   {
     return original_text;
@@ -340,8 +348,9 @@ namespace fgimpact
           fs::weakly_canonical(resolved, error).string();
         for (const std::string &open : chain)
           AssertThrow(open != canonical,
-                      ExcMessage(where + "'" + resolved.string() +
-                                 "' includes itself (recursive include)."));
+                      ExcMessage(where + "'" + included.string() +
+                                 "' is already being read: the file includes "
+                                 "itself (recursive include)."));
         AssertThrow(chain.size() < max_include_depth,
                     ExcMessage(where + "includes nested deeper than " +
                                std::to_string(max_include_depth) + " files."));

@@ -164,7 +164,7 @@ main(int argc, char *argv[])
           if (options.action == CommandLine::Action::validate)
             {
               if (root)
-                std::cout << "fgimpact: " << prm_file
+                std::cout << "fgimpact: " << input->input_name()
                           << " is valid (checked and set up; nothing run, "
                              "nothing written)\n";
               return 0;

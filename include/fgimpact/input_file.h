@@ -39,6 +39,10 @@ namespace fgimpact
     /// An input given as text (e.g. broadcast from rank 0); no origins.
     InputFile(const std::string &name, const std::string &expanded_text);
 
+    /// The input's name: the file's, or "standard input".
+    const std::string &
+    input_name() const;
+
     /// The text as given (the top-level file, byte for byte: includes not
     /// expanded, a byte-order mark or CRLF line ends kept).
     const std::string &
