@@ -100,6 +100,8 @@ main()
   SAME(output.log_interval);
   SAME(output.print_timing);
   SAME(output.instrumentation);
+  SAME(output.vtu_compression);
+  SAME(output.overwrite);
 
   std::printf("%u members compared, %u different\n", n_checked, n_different);
   return n_different == 0 ? 0 : 1;
