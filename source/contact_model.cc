@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <fgimpact/contact_model.h>
+#include <fgimpact/resolved_contact.h>
 #include <fgimpact/results.h>
 
 #include <cmath>
@@ -161,5 +162,87 @@ namespace fgimpact
     results.contact_stiffness   = law.force(1.); // beta K_h
     results.contact_node_offset = node_offset;
     results.contact_node_owner  = node_owner;
+  }
+
+
+
+  void
+  ContactModelParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    {
+      prm.declare_entry(
+        "Model",
+        "hertz node",
+        Patterns::Selection("hertz node|resolved sphere"),
+        "hertz node: the paper's Eq. 3.14, the modified Hertz law as a point "
+        "force at the top node nearest to the impact point (its force "
+        "depends on the element size there: it does not converge under "
+        "refinement). resolved sphere: a rigid sphere in frictionless "
+        "unilateral contact with every top node near the impact point (no "
+        "contact law; converges with Geometry/Contact refinement levels; "
+        "implicit scheme only).");
+      prm.declare_entry(
+        "Gap shape",
+        "sphere",
+        Patterns::Selection("sphere|paraboloid"),
+        "resolved sphere: the height of the ball's surface above its lowest "
+        "point at distance r, R - sqrt(R^2 - r^2) (sphere) or the Hertz "
+        "approximation r^2/(2R) (paraboloid).");
+      prm.declare_entry(
+        "Candidate radius",
+        "0",
+        Patterns::Double(0., 10.),
+        "resolved sphere: top nodes within this distance of the impact "
+        "point are contact candidates (one solve each at set-up); 0 = "
+        "automatic, 1.5 times the largest contact radius of the ball on a "
+        "half-space of the top face's modulus plus two of the smallest "
+        "elements. Unit: m.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ContactModelParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Contact");
+    model = (prm.get("Model") == "resolved sphere" ? Model::resolved_sphere :
+                                                     Model::hertz_node);
+    paraboloid_gap   = (prm.get("Gap shape") == "paraboloid");
+    candidate_radius = prm.get_double("Candidate radius");
+    prm.leave_subsection();
+  }
+
+
+
+  std::unique_ptr<ContactModel>
+  create_contact_model(const ContactModelParameters &parameters,
+                       const HertzContactLaw        &law,
+                       const PlateModel             &plate,
+                       const double                  sphere_radius,
+                       const Point<2>               &impact_point,
+                       const double                  expected_radius,
+                       const double                  reference_modulus)
+  {
+    switch (parameters.model)
+      {
+        case ContactModelParameters::Model::resolved_sphere:
+          return std::make_unique<ResolvedSphereContact>(
+            plate,
+            sphere_radius,
+            impact_point,
+            parameters.candidate_radius > 0. ?
+              parameters.candidate_radius :
+              1.5 * expected_radius + 2. * plate.smallest_cell_size(),
+            parameters.paraboloid_gap ?
+              ResolvedSphereContact::GapShape::paraboloid :
+              ResolvedSphereContact::GapShape::sphere,
+            reference_modulus);
+        case ContactModelParameters::Model::hertz_node:
+          break;
+      }
+    return std::make_unique<HertzNodeContact>(law, plate, impact_point);
   }
 } // namespace fgimpact

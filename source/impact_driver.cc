@@ -1,4 +1,5 @@
 #include <fgimpact/impact_driver.h>
+#include <fgimpact/simulator.h>
 
 namespace fgimpact
 {
@@ -20,10 +21,15 @@ namespace fgimpact
   ImpactDriver::setup()
   {
     const PlateGeometry &geometry = plate.get_geometry();
-    contact                       = std::make_unique<HertzNodeContact>(
+    const double         h        = geometry.thickness();
+    contact                       = create_contact_model(
+      parameters.contact_model,
       contact_law,
       plate,
-      impactor.impact_point(geometry.length(), geometry.width()));
+      impactor.radius(),
+      impactor.impact_point(geometry.length(), geometry.width()),
+      expected_contact_radius(parameters, plate.get_material(), h),
+      top_face_modulus(plate.get_material(), h));
     pcout << "  impactor mass " << impactor.mass()
           << " kg, V0 = " << impactor.initial_velocity() << " m/s; "
           << contact->description() << '\n';

@@ -120,6 +120,24 @@ namespace fgimpact
 
 
 
+  const std::vector<HistoryColumn> &
+  contact_area_columns()
+  {
+    static const std::vector<HistoryColumn> columns = {
+      {"contact_radius_mm",
+       5,
+       [](const HistorySample &s) { return s.contact->contact_radius * 1e3; }},
+      {"max_contact_pressure_MPa",
+       4,
+       [](const HistorySample &s) { return s.contact->max_pressure * 1e-6; }},
+      {"n_contact_nodes", 0, [](const HistorySample &s) {
+         return static_cast<double>(s.contact->n_active);
+       }}};
+    return columns;
+  }
+
+
+
   ImpactMonitor::ImpactMonitor(const OutputParameters &parameters,
                                const PlateModel       &plate,
                                const ContactModel     &contact,
@@ -150,6 +168,8 @@ namespace fgimpact
     impact_results.peak_contact_force = impact_results.max_sampled_force = 0;
     impact_results.time_of_peak_force = impact_results.impulse = 0;
     impact_results.max_indentation = impact_results.max_energy_drift = 0;
+    impact_results.max_contact_radius = impact_results.max_contact_pressure = 0;
+    impact_results.max_contact_nodes  = 0;
     impact_results.max_midplane_deflection                           = 0;
     impact_results.max_top_deflection                                = 0;
     impact_results.max_newton_iterations                             = 0;
@@ -157,10 +177,15 @@ namespace fgimpact
     impact_results.max_linear_iterations                             = 0;
     impact_results.contact_duration = std::numeric_limits<double>::quiet_NaN();
     impact_results.n_impacts        = 1;
+    columns                         = history_columns();
+    if (contact.reports_contact_area())
+      columns.insert(columns.end(),
+                     contact_area_columns().begin(),
+                     contact_area_columns().end());
     if (root)
       {
         std::vector<std::pair<std::string, int>> header;
-        for (const auto &column : history_columns())
+        for (const auto &column : columns)
           header.emplace_back(column.name, column.decimals);
         history =
           std::make_unique<CsvWriter>(parameters.directory + "/history.csv",
@@ -272,6 +297,12 @@ namespace fgimpact
         peak_pending = false;
       }
     r.max_indentation = std::max(r.max_indentation, sample.contact->alpha);
+    r.max_contact_radius =
+      std::max(r.max_contact_radius, sample.contact->contact_radius);
+    r.max_contact_pressure =
+      std::max(r.max_contact_pressure, sample.contact->max_pressure);
+    r.max_contact_nodes =
+      std::max(r.max_contact_nodes, sample.contact->n_active);
     r.max_midplane_deflection =
       std::max(r.max_midplane_deflection, sample.W_mid);
     r.max_top_deflection = std::max(r.max_top_deflection, sample.W_top);
@@ -288,8 +319,8 @@ namespace fgimpact
                                const HistorySample &sample)
   {
     std::vector<double> row;
-    row.reserve(history_columns().size());
-    for (const auto &column : history_columns())
+    row.reserve(columns.size());
+    for (const auto &column : columns)
       row.push_back(column.value(sample));
     if (history)
       history->write_row(row);
@@ -422,6 +453,13 @@ namespace fgimpact
     out.add("plate_mass_kg", r.plate_mass, 8);
     out.add("impulse_N_s", r.impulse, 9);
     out.add("contact_node_offset_mm", r.contact_node_offset * 1e3, 6);
+    if (contact_model.reports_contact_area())
+      {
+        out.add("max_contact_radius_mm", r.max_contact_radius * 1e3, 5);
+        out.add("max_contact_pressure_MPa", r.max_contact_pressure * 1e-6, 4);
+        out.add("max_contact_nodes", r.max_contact_nodes, 0);
+        out.add("n_contact_candidates", r.n_contact_candidates, 0);
+      }
     out.add("n_impacts", r.n_impacts, 0);
     out.add("n_dofs", r.n_dofs, 0);
     out.add("n_mpi_ranks", r.n_mpi_ranks, 0);

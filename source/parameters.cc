@@ -22,6 +22,7 @@ namespace fgimpact
     ModalAnalysis::Parameters::declare_parameters(prm);
     FunctionallyGradedMaterial::Parameters::declare_parameters(prm);
     HertzContactLaw::Parameters::declare_parameters(prm);
+    ContactModelParameters::declare_parameters(prm);
     Impactor::Parameters::declare_parameters(prm);
     PlateModel::Parameters::declare_parameters(prm);
     EffectiveMatrixSolver::Parameters::declare_parameters(prm);
@@ -46,6 +47,7 @@ namespace fgimpact
     material.parse_parameters(prm);
     finite_element.parse_parameters(prm);
     contact.parse_parameters(prm);
+    contact_model.parse_parameters(prm);
     impactor.parse_parameters(prm);
     time_integration.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
@@ -87,6 +89,12 @@ namespace fgimpact
                 ExcMessage("Time integration/Newmark beta must be at least "
                            "gamma/4 for the unconditionally stable implicit "
                            "scheme (beta = 1/4, gamma = 1/2 is the default)."));
+    AssertThrow(!(explicit_scheme &&
+                  contact_model.model ==
+                    ContactModelParameters::Model::resolved_sphere),
+                ExcMessage("Contact/Model = resolved sphere needs Time "
+                           "integration/Scheme = implicit: its contact is "
+                           "rigid, which no explicit step is stable for."));
     AssertThrow(output.directory.find_first_not_of(" \t") != std::string::npos,
                 ExcMessage("Output/Directory is empty."));
   }

@@ -68,10 +68,23 @@ namespace fgimpact
 
 
 
+  double
+  PlateModel::smallest_cell_size() const
+  {
+    double h = std::numeric_limits<double>::max();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        h = std::min(h, cell->extent_in_direction(0));
+    return Utilities::MPI::min(h, mpi_communicator);
+  }
+
+
+
   void
-  PlateModel::setup()
+  PlateModel::setup(const LocalRefinement &refinement)
   {
     geometry.create_triangulation(triangulation);
+    PlateGeometry::refine_locally(triangulation, refinement);
     dof_handler.distribute_dofs(fe);
     locally_owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
@@ -103,13 +116,17 @@ namespace fgimpact
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
 
     const auto &supports = geometry.get_parameters().supports;
-    for (unsigned int face = 0; face < 4; ++face)
+    for (unsigned int face = 0; face < 5; ++face)
       {
         // On x = const faces (ids 0, 1) the tangential in-plane component is
-        // v (index 1); on y = const faces (ids 2, 3) it is u (index 0).
-        const bool    x_face = (face < 2);
+        // v (index 1); on y = const faces (ids 2, 3) it is u (index 0); on
+        // the bottom (id 4) simply supported constrains w alone.
+        const bool        x_face = (face < 2);
+        const SideSupport support =
+          (face < 4 ? supports[face] :
+                      geometry.get_parameters().bottom_support);
         ComponentMask mask(3, false);
-        switch (supports[face])
+        switch (support)
           {
             case SideSupport::free:
               continue;
@@ -118,7 +135,8 @@ namespace fgimpact
               break;
             case SideSupport::simply_supported:
               mask.set(2, true);
-              mask.set(x_face ? 1 : 0, true);
+              if (face < 4)
+                mask.set(x_face ? 1 : 0, true);
               break;
           }
         VectorTools::interpolate_boundary_values(mapping,

@@ -4,6 +4,7 @@
 
 #include <deal.II/lac/solver_control.h>
 
+#include <fgimpact/compliance.h>
 #include <fgimpact/time_stepper.h>
 
 #include <cmath>
@@ -209,7 +210,8 @@ namespace fgimpact
         double work = 0; // sum_j lambda_j u_j(t_{n+1}) = u^T (sum lambda g)
         for (unsigned int j = 0; j < dofs.size(); ++j)
           {
-            u_new.add(-contact.forces[j], c[j]);
+            if (contact.forces[j] != 0.) // most candidates are inactive
+              u_new.add(-contact.forces[j], c[j]);
             double u_j = u_free[j];
             for (unsigned int k = 0; k < dofs.size(); ++k)
               u_j -= compliance(j, k) * contact.forces[k];
@@ -250,28 +252,11 @@ namespace fgimpact
       }
 
     private:
-      /// c_j = K_eff^{-1} g_j for the unit loads g_j at the contact DoFs
-      /// (m solves, once) and the dense compliance C_ij = g_i^T c_j (m/N).
+      /// c_j = K_eff^{-1} g_j and the dense compliance C (m/N).
       void
       compute_compliance()
       {
-        const unsigned int m = dofs.size();
-        c.resize(m);
-        compliance.reinit(m, m);
-        TrilinosWrappers::MPI::Vector g;
-        for (unsigned int j = 0; j < m; ++j)
-          {
-            plate.initialize_vector(g);
-            plate.initialize_vector(c[j]);
-            // Only the owner of the contact DoF writes.
-            if (g.locally_owned_elements().is_element(dofs[j]))
-              g(dofs[j]) = 1.;
-            g.compress(VectorOperation::insert);
-            solver.solve(c[j], g);
-            const Vector<double> column = plate.dof_values(c[j], dofs);
-            for (unsigned int i = 0; i < m; ++i)
-              compliance(i, j) = column[i];
-          }
+        fgimpact::compute_compliance(solver, plate, dofs, compliance, &c);
       }
 
       /// The contact-free response u_new = u* (K_eff u* = M r_n) and M r_n
@@ -290,7 +275,8 @@ namespace fgimpact
             u_new           = u;
             u_new.add(dt, v, 0.5 * dt * dt, a);
             for (unsigned int j = 0; j < contact.forces.size(); ++j)
-              u_new.add(contact.forces[j], c[j]);
+              if (contact.forces[j] != 0.)
+                u_new.add(contact.forces[j], c[j]);
           }
         try
           {

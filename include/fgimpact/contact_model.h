@@ -1,6 +1,7 @@
 #ifndef fgimpact_contact_model_h
 #define fgimpact_contact_model_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -35,6 +36,12 @@ namespace fgimpact
     unsigned int newton_iterations = 0;
     /// Force at each contact DoF (N, acting on the plate in -z).
     std::vector<double> forces;
+    /// Resolved contact only: nodes with a positive force, the largest
+    /// distance of such a node from the impact point (m) and the largest
+    /// nodal pressure lambda_j / A_j (Pa).
+    unsigned int n_active       = 0;
+    double       contact_radius = 0;
+    double       max_pressure   = 0;
   };
 
   /// The stopping rule of a contact model's Newton iteration.
@@ -114,7 +121,63 @@ namespace fgimpact
     /// The model's constants for summary.txt.
     virtual void
     fill_results(ImpactResults &results) const = 0;
+
+    /// Whether the state's n_active, contact_radius and max_pressure are
+    /// meaningful (history columns are added for them).
+    virtual bool
+    reports_contact_area() const
+    {
+      return false;
+    }
   };
+
+
+
+  /**
+   * Subsection "Contact", the model part (the Hertz law's constants are
+   * HertzContactLaw::Parameters, in the same subsection): which contact
+   * model couples the ball and the plate.
+   */
+  struct ContactModelParameters
+  {
+    enum class Model
+    {
+      /// The paper's Eq. 3.14: Hertz law, point force at one node.
+      hertz_node,
+      /// Rigid sphere, unilateral contact at every top node near the
+      /// impact point (ResolvedSphereContact).
+      resolved_sphere
+    };
+    Model model = Model::hertz_node;
+    /// resolved sphere: the sphere's exact profile or the paraboloid.
+    bool paraboloid_gap = false;
+    /// resolved sphere: candidate nodes within this distance (m) of the
+    /// impact point; 0: automatic, 1.5 times the half-space estimate of
+    /// the largest contact radius plus two of the smallest cells.
+    double candidate_radius = 0;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+
+
+  /**
+   * The factory: the model named in the parameters.  expected_radius (m)
+   * is the half-space estimate of the largest contact radius
+   * (hertz_impact_contact_radius()), reference_modulus (Pa) the top
+   * face's E/(1 - nu^2).  Collective.
+   */
+  std::unique_ptr<ContactModel>
+  create_contact_model(const ContactModelParameters &parameters,
+                       const HertzContactLaw        &law,
+                       const PlateModel             &plate,
+                       const double                  sphere_radius,
+                       const Point<2>               &impact_point,
+                       const double                  expected_radius,
+                       const double                  reference_modulus);
 
 
 

@@ -65,6 +65,11 @@ namespace fgimpact
   const std::vector<HistoryColumn> &
   history_columns();
 
+  /// The columns a resolved contact adds after history_columns():
+  /// contact_radius_mm, max_contact_pressure_MPa, n_contact_nodes.
+  const std::vector<HistoryColumn> &
+  contact_area_columns();
+
 
 
   /**
@@ -142,6 +147,9 @@ namespace fgimpact
     std::unique_ptr<CsvWriter> history;
     std::unique_ptr<VtuWriter> vtu;
     std::vector<RowObserver>   observers;
+    /// history_columns(), plus contact_area_columns() for a resolved
+    /// contact.
+    std::vector<HistoryColumn> columns;
     Timer                      output_timer;
 
     // Contact episodes: alpha(0) = 0 with alpha' > 0 counts as contact.

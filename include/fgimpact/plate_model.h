@@ -52,9 +52,14 @@ namespace fgimpact
                const FunctionallyGradedMaterial &material,
                const MPI_Comm                    mpi_communicator);
 
-    /// Make the mesh, distribute DoFs, build constraints and assemble K, M.
+    /// Make the mesh (refined near the impact point as asked),
+    /// distribute DoFs, build constraints and assemble K, M.
     void
-    setup();
+    setup(const LocalRefinement &refinement = LocalRefinement());
+
+    /// The smallest cell edge along x (m), over all ranks.
+    double
+    smallest_cell_size() const;
 
     types::global_dof_index
     n_dofs() const
