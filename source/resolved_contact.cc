@@ -175,18 +175,25 @@ namespace fgimpact
         if (lambda[j] > 0.)
           {
             ++state.n_active;
-            state.contact_radius = std::max(state.contact_radius, radii[j]);
             state.max_pressure =
               std::max(state.max_pressure, lambda[j] / areas[j]);
           }
       }
+    // The farthest node in contact (the discrete edge lies between it and
+    // the next node out; the circle of the active nodes' area would
+    // overestimate it by about half an element).
+    double farthest = 0;
+    for (unsigned int j = 0; j < m; ++j)
+      if (lambda[j] > 0.)
+        farthest = std::max(farthest, radii[j]);
+    state.contact_radius = farthest;
     // The candidate set must contain the contact circle with a ring of
     // inactive nodes to spare; otherwise the solution is that of a smaller
     // sphere cap.
     AssertThrow(state.n_active == 0 ||
-                  state.contact_radius < reach() - 0.5 * smallest_spacing,
+                  farthest < reach() - 0.5 * smallest_spacing,
                 ExcMessage("the contact circle (" +
-                           std::to_string(state.contact_radius * 1e3) +
+                           std::to_string(farthest * 1e3) +
                            " mm) reached the edge of the candidate set (" +
                            std::to_string(reach() * 1e3) +
                            " mm); raise Contact/Candidate radius."));

@@ -37,8 +37,9 @@ namespace fgimpact
     /// Force at each contact DoF (N, acting on the plate in -z).
     std::vector<double> forces;
     /// Resolved contact only: nodes with a positive force, the largest
-    /// distance of such a node from the impact point (m) and the largest
-    /// nodal pressure lambda_j / A_j (Pa).
+    /// distance of such a node from the impact point (m; the discrete edge
+    /// lies before the next node out) and the largest nodal pressure
+    /// lambda_j / A_j (Pa).
     unsigned int n_active       = 0;
     double       contact_radius = 0;
     double       max_pressure   = 0;

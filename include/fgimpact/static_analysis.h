@@ -62,7 +62,7 @@ namespace fgimpact
       double       sigma_xx[3], sigma_yy[3], sigma_zz[3];
       unsigned int n_dofs;
       /// Load = sphere: total force (N), contact radius (m, the farthest
-      /// node with a positive force), largest nodal pressure (Pa), and
+      /// node in contact), largest nodal pressure (Pa), and
       /// per candidate node its distance from the centre (m) and nodal
       /// pressure lambda_j / A_j (Pa).
       double              contact_force    = 0;
