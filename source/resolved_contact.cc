@@ -25,10 +25,12 @@ namespace fgimpact
                                                const Point<2> &impact_point,
                                                const double candidate_radius,
                                                const GapShape gap_shape,
-                                               const double reference_modulus)
+                                               const double reference_modulus,
+                                               const bool massless_candidates)
     : R(sphere_radius)
     , gap_shape(gap_shape)
     , reference_modulus(reference_modulus)
+    , massless_candidates(massless_candidates)
   {
     collect_candidates(plate, impact_point, std::min(candidate_radius, R));
     compute_areas(plate);

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace fgimpact
@@ -158,7 +159,8 @@ namespace fgimpact
       {
         Timer timer;
         effective.copy_from(plate.stiffness_matrix());
-        effective.add(newmark.mass_factor(), plate.mass_matrix());
+        setup_mass_matrix();
+        effective.add(newmark.mass_factor(), *mass);
         solver.initialize(effective, &plate.get_dof_handler());
         iterative = (solver.type() == "cg");
 
@@ -217,7 +219,7 @@ namespace fgimpact
               u_j -= compliance(j, k) * contact.forces[k];
             work += contact.forces[j] * u_j;
           }
-        plate.mass_matrix().vmult(Mu_new, u_new);
+        mass->vmult(Mu_new, u_new);
         // u^T K u from K_eff u = M r_n - sum lambda_j g_j - a0 M u.
         strain = 0.5 * (u_new * rhs - work - a0 * (u_new * Mu_new));
 
@@ -230,8 +232,8 @@ namespace fgimpact
         // Refresh the carried products now and then against round-off.
         if (step % 64 == 0)
           {
-            plate.mass_matrix().vmult(Mv, v);
-            plate.mass_matrix().vmult(Ma, a);
+            mass->vmult(Mv, v);
+            mass->vmult(Ma, a);
           }
         kinetic = 0.5 * (v * Mv);
 
@@ -248,10 +250,46 @@ namespace fgimpact
         s << "implicit Newmark (beta = " << newmark.beta()
           << ", gamma = " << newmark.gamma() << "), linear solver "
           << solver.type();
+        if (mass != &plate.mass_matrix())
+          s << "; modified mass: the contact candidates' z DoFs massless ("
+            << removed_mass << " kg removed)";
         return s.str();
       }
 
     private:
+      /**
+       * The plate's consistent mass matrix, or for a contact model with
+       * massless DoFs (the modified mass method of Khenous, Laborde and
+       * Renard 2008) a copy with their rows and columns zeroed: contact
+       * nodes without inertia cannot chatter, and the removed mass, on the
+       * contact candidates alone, vanishes with the element size (logged).
+       */
+      void
+      setup_mass_matrix()
+      {
+        const auto &massless = contact_model.massless_dofs();
+        mass                 = &plate.mass_matrix();
+        if (massless.empty())
+          return;
+        modified_mass.copy_from(plate.mass_matrix());
+        const std::set<types::global_dof_index> zero(massless.begin(),
+                                                     massless.end());
+        double removed = 0; // kg: sum of the zeroed rows' entries
+        for (const auto i : plate.locally_owned_dofs())
+          for (auto entry = modified_mass.begin(i);
+               entry != modified_mass.end(i);
+               ++entry)
+            if (zero.count(i) > 0 || zero.count(entry->column()) > 0)
+              {
+                if (zero.count(i) > 0)
+                  removed += entry->value();
+                entry->value() = 0.;
+              }
+        removed_mass =
+          Utilities::MPI::sum(removed, plate.get_mpi_communicator());
+        mass = &modified_mass;
+      }
+
       /// c_j = K_eff^{-1} g_j and the dense compliance C (m/N).
       void
       compute_compliance()
@@ -319,6 +357,9 @@ namespace fgimpact
 
       const Parameters        parameters;
       const NewmarkIntegrator newmark;
+      TrilinosWrappers::SparseMatrix        modified_mass;
+      const TrilinosWrappers::SparseMatrix *mass         = nullptr;
+      double                                removed_mass = 0; // kg
       // Declared before the solver, which refers to it: members are
       // destroyed in reverse order (Amesos_Mumps crashed otherwise).
       TrilinosWrappers::SparseMatrix             effective;

@@ -123,6 +123,14 @@ namespace fgimpact
     virtual void
     fill_results(ImpactResults &results) const = 0;
 
+    /// DoFs to be given no mass (the modified mass method; empty: the
+    /// consistent mass matrix unchanged).
+    virtual std::vector<types::global_dof_index>
+    massless_dofs() const
+    {
+      return {};
+    }
+
     /// Whether the state's n_active, contact_radius and max_pressure are
     /// meaningful (history columns are added for them).
     virtual bool
@@ -152,6 +160,8 @@ namespace fgimpact
     Model model = Model::hertz_node;
     /// resolved sphere: the sphere's exact profile or the paraboloid.
     bool paraboloid_gap = false;
+    /// resolved sphere: the candidates' z DoFs massless (modified mass).
+    bool modified_mass = true;
     /// resolved sphere: candidate nodes within this distance (m) of the
     /// impact point; 0: automatic, 1.5 times the half-space estimate of
     /// the largest contact radius plus two of the smallest cells.

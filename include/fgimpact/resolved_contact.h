@@ -57,7 +57,8 @@ namespace fgimpact
                           const Point<2>   &impact_point,
                           const double      candidate_radius,
                           const GapShape    gap_shape,
-                          const double      reference_modulus);
+                          const double      reference_modulus,
+                          const bool        massless_candidates = false);
 
     const std::vector<types::global_dof_index> &
     contact_dofs() const override
@@ -98,6 +99,13 @@ namespace fgimpact
     void
     fill_results(ImpactResults &results) const override;
 
+    std::vector<types::global_dof_index>
+    massless_dofs() const override
+    {
+      return massless_candidates ? dofs :
+                                   std::vector<types::global_dof_index>();
+    }
+
     bool
     reports_contact_area() const override
     {
@@ -137,6 +145,7 @@ namespace fgimpact
     const double                         R;
     const GapShape                       gap_shape;
     const double                         reference_modulus; // Pa
+    const bool                           massless_candidates;
     std::vector<types::global_dof_index> dofs;
     std::vector<double>                  radii, areas, profile;
     double                               smallest_spacing = 0; // m
