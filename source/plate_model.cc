@@ -233,14 +233,35 @@ namespace fgimpact
   PlateModel::nearest_top_vertex_dof(const Point<2>    &xy,
                                      const unsigned int component) const
   {
-    const Point<3> target(xy[0], xy[1], geometry.thickness());
+    return nearest_vertex(Point<3>(xy[0], xy[1], geometry.thickness()),
+                          component,
+                          /*boundary_cells_only=*/true);
+  }
+
+
+
+  std::pair<types::global_dof_index, Point<3>>
+  PlateModel::nearest_vertex_dof(const Point<3>    &target,
+                                 const unsigned int component) const
+  {
+    return nearest_vertex(target, component, false);
+  }
+
+
+
+  std::pair<types::global_dof_index, Point<3>>
+  PlateModel::nearest_vertex(const Point<3>    &target,
+                             const unsigned int component,
+                             const bool         boundary_cells_only) const
+  {
     // The best candidate of this rank: (distance, x, y, z, dof), compared
     // lexicographically so that every partition picks the same vertex.
     using Candidate = std::array<double, 5>;
     Candidate best  = {{std::numeric_limits<double>::max(), 0, 0, 0, -1.}};
 
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->at_boundary())
+      if (cell->is_locally_owned() &&
+          (cell->at_boundary() || !boundary_cells_only))
         for (const unsigned int v : cell->vertex_indices())
           {
             const Point<3> &p = cell->vertex(v);

@@ -153,6 +153,8 @@ namespace fgimpact
     {
       /// The paper's Eq. 3.14: Hertz law, point force at one node.
       hertz_node,
+      /// The same law, alpha measured from the mid-plane under the ball.
+      hertz_midplane,
       /// Rigid sphere, unilateral contact at every top node near the
       /// impact point (ResolvedSphereContact).
       resolved_sphere
@@ -250,6 +252,67 @@ namespace fgimpact
     double                               node_offset = 0; // m
     unsigned int                         node_owner  = 0; // MPI rank
     bool                                 node_offset_note_needed = true;
+  };
+
+
+  /**
+   * The modified Hertz law with the indentation of the plate theories of
+   * the impact literature: alpha = w_ball - W_mid, W_mid the deflection of
+   * the mid-plane vertex under the impact point, so alpha no longer holds
+   * the loaded node's crater.  The force acts as a point force at the top
+   * node (as in the paper), whose mid-plane response converges under
+   * refinement.  Contact DoFs: {top node z, mid-plane node z}, the force
+   * on the first; the implicit step is the Hertz node's scalar Newton with
+   * s = c_b + C_mid,top and alpha~ = w_free + u_free,mid.
+   */
+  class HertzMidplaneContact : public ContactModel
+  {
+  public:
+    /// Throws naming Geometry/Subdivisions z if no vertex lies on the
+    /// mid-plane under the impact point.  Collective.
+    HertzMidplaneContact(const HertzContactLaw &law,
+                         const PlateModel      &plate,
+                         const Point<2>        &impact_point);
+
+    const std::vector<types::global_dof_index> &
+    contact_dofs() const override
+    {
+      return dofs;
+    }
+
+    void
+    solve_implicit(const Vector<double>     &u_free,
+                   const FullMatrix<double> &C,
+                   const double              w_free,
+                   const double              c_b,
+                   const NewtonControl      &newton,
+                   ContactState             &state) const override;
+
+    void
+    evaluate_explicit(const Vector<double> &u_c,
+                      const double          w,
+                      ContactState         &state) const override;
+
+    double
+    potential(const ContactState &state) const override;
+
+    double
+    stiffness_bound(const double mass, const double V0) const override;
+
+    std::string
+    description() const override;
+
+    std::string
+    warning() const override;
+
+    void
+    fill_results(ImpactResults &results) const override;
+
+  private:
+    const HertzContactLaw               &law;
+    const HertzNodeContact               node_contact; // the top node
+    std::vector<types::global_dof_index> dofs;
+    Point<3>                             mid_node;
   };
 } // namespace fgimpact
 

@@ -95,6 +95,12 @@ namespace fgimpact
     nearest_top_vertex_dof(const Point<2>    &xy,
                            const unsigned int component) const;
 
+    /// The vertex nearest to a point anywhere in the plate and its DoF of
+    /// the given component, the same on every MPI rank.
+    std::pair<types::global_dof_index, Point<3>>
+    nearest_vertex_dof(const Point<3>    &target,
+                       const unsigned int component) const;
+
     /**
      * The value of a (non-ghosted) distributed vector at one DoF, on every
      * rank: the owner contributes it to a sum over the ranks (one scalar
@@ -165,6 +171,12 @@ namespace fgimpact
     }
 
   private:
+    /// Both searches above: ties broken by the coordinates.
+    std::pair<types::global_dof_index, Point<3>>
+    nearest_vertex(const Point<3>    &target,
+                   const unsigned int component,
+                   const bool         boundary_cells_only) const;
+
     void
     setup_constraints();
     void
