@@ -7,10 +7,11 @@
 #include <fgimpact/compliance.h>
 #include <fgimpact/time_stepper.h>
 
+#include <Epetra_CrsMatrix.h>
+
 #include <cmath>
 #include <limits>
 #include <map>
-#include <set>
 #include <sstream>
 
 namespace fgimpact
@@ -272,19 +273,29 @@ namespace fgimpact
         if (massless.empty())
           return;
         modified_mass.copy_from(plate.mass_matrix());
-        const std::set<types::global_dof_index> zero(massless.begin(),
-                                                     massless.end());
+        std::vector<bool> zero(plate.n_dofs(), false);
+        for (const auto dof : massless)
+          zero[dof] = true;
+        // In place on the Epetra rows (deal.II's entry-wise set() on an
+        // assembled Trilinos matrix costs a search per call).
+        auto &matrix = const_cast<Epetra_CrsMatrix &>(
+          modified_mass.trilinos_matrix());
         double removed = 0; // kg: sum of the zeroed rows' entries
-        for (const auto i : plate.locally_owned_dofs())
-          for (auto entry = modified_mass.begin(i);
-               entry != modified_mass.end(i);
-               ++entry)
-            if (zero.count(i) > 0 || zero.count(entry->column()) > 0)
-              {
-                if (zero.count(i) > 0)
-                  removed += entry->value();
-                entry->value() = 0.;
-              }
+        for (int row = 0; row < matrix.NumMyRows(); ++row)
+          {
+            int     n       = 0;
+            double *values  = nullptr;
+            int    *columns = nullptr;
+            matrix.ExtractMyRowView(row, n, values, columns);
+            const bool zero_row = zero[matrix.RowMap().GID(row)];
+            for (int k = 0; k < n; ++k)
+              if (zero_row || zero[matrix.ColMap().GID(columns[k])])
+                {
+                  if (zero_row)
+                    removed += values[k];
+                  values[k] = 0.;
+                }
+          }
         removed_mass =
           Utilities::MPI::sum(removed, plate.get_mpi_communicator());
         mass = &modified_mass;
