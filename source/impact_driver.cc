@@ -88,6 +88,10 @@ namespace fgimpact
                                               results);
     for (const auto &observer : observers)
       monitor->add_row_observer(observer);
+    const PlateGeometry &g = plate.get_geometry();
+    const Point<2>       p = impactor.impact_point(g.length(), g.width());
+    monitor->add_contact_output(Point<3>(p[0], p[1], g.thickness()),
+                                impactor.radius());
 
     // Eq. 2.16: plate at rest, alpha(0) = 0, alpha'(0) = V0; a(0) = 0 as
     // F(0) = 0.  The impactor moves in the impact direction (-z).

@@ -193,6 +193,20 @@ namespace fgimpact
       }
     if (parameters.vtu_interval > 0)
       vtu = std::make_unique<VtuWriter>(plate, parameters.directory);
+
+  }
+
+
+
+  void
+  ImpactMonitor::add_contact_output(const Point<3> &impact_point,
+                                    const double    sphere_radius)
+  {
+    if (parameters.vtu_interval > 0 && root)
+      contact_vtu = std::make_unique<ContactVtuWriter>(parameters.directory,
+                                                       impact_point,
+                                                       sphere_radius,
+                                                       contact_model);
   }
 
 
@@ -331,6 +345,8 @@ namespace fgimpact
       {
         output_timer.start();
         vtu->write(step, t, stepper.displacement(), stepper.velocity());
+        if (contact_vtu)
+          contact_vtu->write(step, t, sample.ball->w, *sample.contact);
         output_timer.stop();
       }
     if (parameters.log_interval > 0 &&
@@ -356,6 +372,8 @@ namespace fgimpact
   void
   ImpactMonitor::close_output()
   {
+    if (contact_vtu)
+      contact_vtu->finish();
     if (vtu)
       {
         output_timer.start();

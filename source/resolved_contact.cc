@@ -95,6 +95,7 @@ namespace fgimpact
       {
         dofs.push_back(static_cast<types::global_dof_index>(c[3]));
         radii.push_back(c[0]);
+        points.emplace_back(c[1], c[2], h);
       }
     smallest_spacing = (all.size() > 1 ? all[1][0] : 0.);
   }

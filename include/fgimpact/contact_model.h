@@ -123,6 +123,20 @@ namespace fgimpact
     virtual void
     fill_results(ImpactResults &results) const = 0;
 
+    /// For the VTU output of a contact with several nodes: their
+    /// undeformed positions (m) and tributary areas (m^2); empty for a
+    /// point contact.
+    virtual std::vector<Point<3>>
+    contact_points() const
+    {
+      return {};
+    }
+    virtual std::vector<double>
+    contact_areas() const
+    {
+      return {};
+    }
+
     /// DoFs to be given no mass (the modified mass method; empty: the
     /// consistent mass matrix unchanged).
     virtual std::vector<types::global_dof_index>

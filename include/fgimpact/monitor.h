@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 
 #include <fgimpact/contact_model.h>
+#include <fgimpact/contact_output.h>
 #include <fgimpact/plate_model.h>
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/probes.h>
@@ -101,6 +102,13 @@ namespace fgimpact
     void
     add_row_observer(const RowObserver &observer);
 
+    /// With VTU output: also the ball (a sphere of the given radius, m,
+    /// first touching the top face at impact_point) and the contact nodes
+    /// (ContactVtuWriter).
+    void
+    add_contact_output(const Point<3> &impact_point,
+                       const double    sphere_radius);
+
     /// Record the state at step (time t, s) after the stepper advanced.
     void
     record(const unsigned int   step,
@@ -146,6 +154,7 @@ namespace fgimpact
     PointProbe                 mid_probe, top_probe;
     std::unique_ptr<CsvWriter> history;
     std::unique_ptr<VtuWriter> vtu;
+    std::unique_ptr<ContactVtuWriter> contact_vtu;
     std::vector<RowObserver>   observers;
     /// history_columns(), plus contact_area_columns() for a resolved
     /// contact.

@@ -99,6 +99,18 @@ namespace fgimpact
     void
     fill_results(ImpactResults &results) const override;
 
+    std::vector<Point<3>>
+    contact_points() const override
+    {
+      return points;
+    }
+
+    std::vector<double>
+    contact_areas() const override
+    {
+      return areas;
+    }
+
     std::vector<types::global_dof_index>
     massless_dofs() const override
     {
@@ -148,6 +160,7 @@ namespace fgimpact
     const bool                           massless_candidates;
     std::vector<types::global_dof_index> dofs;
     std::vector<double>                  radii, areas, profile;
+    std::vector<Point<3>>                points; // undeformed, m
     double                               smallest_spacing = 0; // m
     /// The active set of the last solve (warm start).
     mutable std::vector<bool> active;
