@@ -53,8 +53,7 @@ namespace fgimpact
     : directory(directory)
     , impact_point(impact_point)
     , R(radius)
-    , nodes(contact.contact_points())
-    , areas(contact.contact_areas())
+    , contact(contact)
   {}
 
 
@@ -69,7 +68,7 @@ namespace fgimpact
     std::snprintf(name, sizeof(name), "sphere_%05u.vtu", step);
     write_sphere(directory + "/" + name, w, state.force);
     spheres.emplace_back(t, name);
-    if (!nodes.empty())
+    if (!contact.contact_points().empty())
       {
         std::snprintf(name, sizeof(name), "contact_%05u.vtu", step);
         write_nodes(directory + "/" + name, state);
@@ -153,6 +152,9 @@ namespace fgimpact
   ContactVtuWriter::write_nodes(const std::string  &file,
                                 const ContactState &state) const
   {
+    // Read each time: the candidate set may have grown.
+    const std::vector<Point<3>> nodes = contact.contact_points();
+    const std::vector<double>   areas = contact.contact_areas();
     std::ofstream out(file);
     out.precision(10);
     begin_grid(out, nodes, nodes.size());

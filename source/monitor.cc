@@ -391,6 +391,8 @@ namespace fgimpact
   {
     ImpactResults &r = impact_results;
     r.n_time_steps   = n_steps;
+    // The candidate set may have grown during the run.
+    r.n_contact_candidates = contact_model.contact_dofs().size();
     r.departure_velocity =
       in_contact ? std::numeric_limits<double>::quiet_NaN() : -ball.v;
     // int F dt = m (V0 + V_departure), with the ball's current velocity.

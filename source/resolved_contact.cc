@@ -27,12 +27,38 @@ namespace fgimpact
                                                const GapShape gap_shape,
                                                const double reference_modulus,
                                                const bool massless_candidates)
-    : R(sphere_radius)
+    : plate(plate)
+    , impact_point(impact_point)
+    , R(sphere_radius)
     , gap_shape(gap_shape)
     , reference_modulus(reference_modulus)
     , massless_candidates(massless_candidates)
+    , candidate_radius(std::min(candidate_radius, sphere_radius))
   {
-    collect_candidates(plate, impact_point, std::min(candidate_radius, R));
+    build_candidates();
+  }
+
+
+
+  bool
+  ResolvedSphereContact::grow_candidates()
+  {
+    if (candidate_radius >= R)
+      return false; // the whole cap is a candidate already
+    candidate_radius = std::min(1.5 * candidate_radius, R);
+    build_candidates();
+    return true;
+  }
+
+
+
+  void
+  ResolvedSphereContact::build_candidates()
+  {
+    dofs.clear();
+    radii.clear();
+    points.clear();
+    collect_candidates(plate, impact_point, candidate_radius);
     compute_areas(plate);
     profile.resize(radii.size());
     for (unsigned int j = 0; j < radii.size(); ++j)
@@ -193,13 +219,8 @@ namespace fgimpact
     // The candidate set must contain the contact circle with a ring of
     // inactive nodes to spare; otherwise the solution is that of a smaller
     // sphere cap.
-    AssertThrow(state.n_active == 0 ||
-                  farthest < reach() - 0.5 * smallest_spacing,
-                ExcMessage("the contact circle (" +
-                           std::to_string(farthest * 1e3) +
-                           " mm) reached the edge of the candidate set (" +
-                           std::to_string(reach() * 1e3) +
-                           " mm); raise Contact/Candidate radius."));
+    state.candidates_exhausted =
+      (state.n_active > 0 && farthest >= reach() - 0.5 * smallest_spacing);
     state.node_displacement = u_free[0];
     for (unsigned int k = 0; k < m; ++k)
       state.node_displacement -= C(0, k) * lambda[k];

@@ -146,7 +146,7 @@ namespace fgimpact
   {
     const double R     = indenter.radius;
     const double delta = parameters.indentation;
-    const ResolvedSphereContact contact(
+    ResolvedSphereContact contact(
       plate,
       R,
       load_point,
@@ -156,14 +156,26 @@ namespace fgimpact
                                 ResolvedSphereContact::GapShape::sphere,
       top_face_modulus(plate.get_material(),
                        plate.get_geometry().thickness()));
-    const auto        &dofs = contact.contact_dofs();
-    FullMatrix<double> C;
-    compute_compliance(solver, plate, dofs, C, nullptr);
-
     // The sphere is displacement-driven: w = delta, no ball compliance.
-    ContactState state;
-    contact.solve_implicit(
-      Vector<double>(dofs.size()), C, delta, 0., NewtonControl(), state);
+    // A contact that reaches the candidate set's edge grows the set.
+    FullMatrix<double> C;
+    ContactState       state;
+    for (;;)
+      {
+        compute_compliance(solver, plate, contact.contact_dofs(), C, nullptr);
+        contact.solve_implicit(Vector<double>(contact.contact_dofs().size()),
+                               C,
+                               delta,
+                               0.,
+                               NewtonControl(),
+                               state);
+        if (!state.candidates_exhausted)
+          break;
+        AssertThrow(contact.grow_candidates(),
+                    ExcMessage("Static/Indentation: the contact reaches the "
+                               "sphere's radius; reduce the indentation."));
+      }
+    const auto &dofs = contact.contact_dofs();
     results.contact_force   = state.force;
     results.contact_radius  = state.contact_radius;
     results.max_pressure    = state.max_pressure;

@@ -144,7 +144,7 @@ namespace fgimpact
       ImplicitNewmarkStepper(const Parameters &parameters,
                              const EffectiveMatrixSolver::Parameters &solver,
                              const PlateModel                        &plate,
-                             const ContactModel                      &contact,
+                             ContactModel                            &contact,
                              const double impactor_mass)
         : parameters(parameters)
         , newmark(parameters.newmark, parameters.time_step)
@@ -200,6 +200,15 @@ namespace fgimpact
                                      1. / (m_i * a0),
                                      parameters.newton,
                                      contact);
+        if (contact.candidates_exhausted)
+          {
+            // Nothing of the state has changed yet: grow, rebuild and
+            // repeat the step.
+            grow_contact(step, t);
+            contact = ContactState();
+            advance(step, t, impactor, contact);
+            return;
+          }
         AssertThrow(contact.newton_iterations != numbers::invalid_unsigned_int,
                     ExcMessage(
                       "Newton for the contact did not converge at " +
@@ -301,6 +310,38 @@ namespace fgimpact
         mass = &modified_mass;
       }
 
+      /// The contact reached the candidate set's edge: a larger set, its
+      /// massless DoFs (a new K_eff, factorized again, and the carried
+      /// products M u, M v, M a) and its compliance.
+      void
+      grow_contact(const unsigned int step, const double t)
+      {
+        AssertThrow(contact_model.grow_candidates(),
+                    ExcMessage("the contact reached the edge of the "
+                               "candidate set at " +
+                               at_step(step, t) +
+                               ", which cannot grow beyond the sphere's "
+                               "radius."));
+        dofs = contact_model.contact_dofs();
+        if (mass != &plate.mass_matrix())
+          {
+            setup_mass_matrix();
+            effective.copy_from(plate.stiffness_matrix());
+            effective.add(newmark.mass_factor(), *mass);
+            solver.initialize(effective, &plate.get_dof_handler());
+            mass->vmult(Mu, u);
+            mass->vmult(Mv, v);
+            mass->vmult(Ma, a);
+          }
+        compute_compliance();
+        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) ==
+            0)
+          std::cout << "  " << at_step(step, t)
+                    << ": the contact reached the edge of the candidate "
+                       "set; grown to "
+                    << dofs.size() << " candidates" << std::endl;
+      }
+
       /// c_j = K_eff^{-1} g_j and the dense compliance C (m/N).
       void
       compute_compliance()
@@ -376,9 +417,9 @@ namespace fgimpact
       TrilinosWrappers::SparseMatrix             effective;
       EffectiveMatrixSolver                      solver;
       const PlateModel                          &plate;
-      const ContactModel                        &contact_model;
-      const std::vector<types::global_dof_index> dofs;
-      const double                               m_i;
+      ContactModel                        &contact_model;
+      std::vector<types::global_dof_index> dofs;
+      const double                         m_i;
       TrilinosWrappers::MPI::Vector a, Mu, Mv, Ma, u_new, Mu_new, rhs;
       std::vector<TrilinosWrappers::MPI::Vector> c;
       FullMatrix<double>                         compliance;
@@ -616,7 +657,7 @@ namespace fgimpact
   create_time_stepper(const TimeStepper::Parameters           &parameters,
                       const EffectiveMatrixSolver::Parameters &solver,
                       const PlateModel                        &plate,
-                      const ContactModel                      &contact,
+                      ContactModel                            &contact,
                       const double                             impactor_mass,
                       const double                             impact_velocity)
   {

@@ -43,6 +43,9 @@ namespace fgimpact
     unsigned int n_active       = 0;
     double       contact_radius = 0;
     double       max_pressure   = 0;
+    /// Resolved contact: a node of the candidate set's outermost ring is
+    /// in contact, so the solution may be cut off: grow and repeat.
+    bool candidates_exhausted = false;
   };
 
   /// The stopping rule of a contact model's Newton iteration.
@@ -122,6 +125,14 @@ namespace fgimpact
     /// The model's constants for summary.txt.
     virtual void
     fill_results(ImpactResults &results) const = 0;
+
+    /// Enlarge the set of contact DoFs (after candidates_exhausted);
+    /// false if it cannot grow.  Collective.
+    virtual bool
+    grow_candidates()
+    {
+      return false;
+    }
 
     /// For the VTU output of a contact with several nodes: their
     /// undeformed positions (m) and tributary areas (m^2); empty for a

@@ -53,8 +53,7 @@ namespace fgimpact
     const std::string                         directory;
     const Point<3>                            impact_point;
     const double                              R;
-    const std::vector<Point<3>>               nodes;
-    const std::vector<double>                 areas;
+    const ContactModel                       &contact;
     std::vector<std::pair<double, std::string>> spheres, contacts;
   };
 } // namespace fgimpact

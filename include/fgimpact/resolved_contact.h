@@ -40,6 +40,9 @@ namespace fgimpact
    * solved by solve_lcp() warm-started from the last step's active set.
    * The complementarity holds at the end of every step (exact
    * enforcement; the energy behaviour is measured in doc/contact.md).
+   * A node of the outermost ring in contact sets
+   * ContactState::candidates_exhausted: the caller grows the set
+   * (grow_candidates()) and repeats the step.
    */
   class ResolvedSphereContact : public ContactModel
   {
@@ -124,6 +127,18 @@ namespace fgimpact
       return true;
     }
 
+    /// Enlarge the candidate radius 1.5 times (at most to R) and collect
+    /// the candidates anew.  Collective.
+    bool
+    grow_candidates() override;
+
+    /// The candidate radius in use (m).
+    double
+    current_candidate_radius() const
+    {
+      return candidate_radius;
+    }
+
     /// Distance r_j (m) of each candidate from the impact point.
     const std::vector<double> &
     candidate_radii() const
@@ -147,6 +162,11 @@ namespace fgimpact
     }
 
   private:
+    /// Candidates, areas, profile and an empty active set for the
+    /// current candidate radius.
+    void
+    build_candidates();
+
     void
     collect_candidates(const PlateModel &plate,
                        const Point<2>   &impact_point,
@@ -154,10 +174,13 @@ namespace fgimpact
     void
     compute_areas(const PlateModel &plate);
 
+    const PlateModel                    &plate;
+    const Point<2>                       impact_point;
     const double                         R;
     const GapShape                       gap_shape;
     const double                         reference_modulus; // Pa
     const bool                           massless_candidates;
+    double                               candidate_radius; // m
     std::vector<types::global_dof_index> dofs;
     std::vector<double>                  radii, areas, profile;
     std::vector<Point<3>>                points; // undeformed, m
