@@ -168,4 +168,25 @@ namespace fgimpact
                           std::sqrt(alpha) :
                         0.;
   }
+
+
+  double
+  hertz_impact_contact_radius(const double Q,
+                              const double R,
+                              const double m,
+                              const double V0)
+  {
+    const double K         = 4. / 3. * Q * std::sqrt(R);
+    const double alpha_max = std::pow(1.25 * m * V0 * V0 / K, 0.4);
+    return std::sqrt(R * alpha_max);
+  }
+
+
+  double
+  top_face_modulus(const FunctionallyGradedMaterial &material,
+                   const double                      thickness)
+  {
+    const double nu = material.poissons_ratio();
+    return material.youngs_modulus(thickness) / (1. - nu * nu);
+  }
 } // namespace fgimpact

@@ -2,6 +2,9 @@
 
 #include <fgimpact/geometry.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace fgimpact
 {
   const std::array<std::string, 4> PlateGeometry::side_names = {
@@ -41,6 +44,22 @@ namespace fgimpact
                         "4",
                         Patterns::Integer(1, 100000),
                         "Number of elements through the thickness.");
+      prm.declare_entry(
+        "Contact refinement levels",
+        "0",
+        Patterns::Integer(0, 12),
+        "Times the cells near the impact point are split in two in each "
+        "direction (graded, with hanging-node constraints): the element "
+        "size under the ball is the base size / 2^levels. 0 = uniform "
+        "mesh.");
+      prm.declare_entry(
+        "Contact refinement radius",
+        "0",
+        Patterns::Double(0., 10.),
+        "Radius of the core around the impact point that gets the finest "
+        "cells; each coarser level reaches two of its cells further. 0 = "
+        "automatic: 1.5 times the largest contact radius of the ball on a "
+        "half-space of the top face's modulus. Unit: m.");
     }
     prm.leave_subsection();
 
@@ -57,6 +76,14 @@ namespace fgimpact
           "(v on x = const, u on y = const); the normal in-plane "
           "displacement is free. clamped: u = v = w = 0. free: traction "
           "free.");
+      prm.declare_entry(
+        "Face z min",
+        "free",
+        Patterns::Selection("simply supported|clamped|free"),
+        "Support of the bottom face z = 0: free (a plate), clamped "
+        "(u = v = w = 0: bonded to a rigid base) or simply supported "
+        "(w = 0 only: resting on a frictionless rigid base, which can pull "
+        "as well as push).");
     }
     prm.leave_subsection();
   }
@@ -74,19 +101,21 @@ namespace fgimpact
       subdivisions_x = prm.get_integer("Subdivisions x");
       subdivisions_y = prm.get_integer("Subdivisions y");
       subdivisions_z = prm.get_integer("Subdivisions z");
+      contact_refinement_levels = prm.get_integer("Contact refinement levels");
+      contact_refinement_radius = prm.get_double("Contact refinement radius");
     }
     prm.leave_subsection();
 
     prm.enter_subsection("Boundary conditions");
     {
+      const auto to_support = [](const std::string &s) {
+        return (s == "simply supported" ? SideSupport::simply_supported :
+                s == "clamped"          ? SideSupport::clamped :
+                                          SideSupport::free);
+      };
       for (unsigned int f = 0; f < 4; ++f)
-        {
-          const std::string s = prm.get(side_names[f]);
-          supports[f] =
-            (s == "simply supported" ? SideSupport::simply_supported :
-             s == "clamped"          ? SideSupport::clamped :
-                                       SideSupport::free);
-        }
+        supports[f] = to_support(prm.get(side_names[f]));
+      bottom_support = to_support(prm.get("Face z min"));
     }
     prm.leave_subsection();
   }
@@ -121,6 +150,38 @@ namespace fgimpact
                                                        parameters.thickness),
                                               /*colorize=*/true);
     triangulation.refine_global(k);
+  }
+
+
+
+  void
+  PlateGeometry::refine_locally(Triangulation<3>      &triangulation,
+                                const LocalRefinement &refinement)
+  {
+    for (unsigned int pass = 0; pass < refinement.levels; ++pass)
+      {
+        const unsigned int finest = triangulation.n_global_levels() - 1;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              static_cast<unsigned int>(cell->level()) == finest)
+            {
+              // Distance from the centre to the brick (axis-aligned).
+              const BoundingBox<3> box = cell->bounding_box();
+              double               d2  = 0;
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  const double c  = refinement.centre[d];
+                  const double dd = std::max({box.lower_bound(d) - c,
+                                              0.,
+                                              c - box.upper_bound(d)});
+                  d2 += dd * dd;
+                }
+              const double h = cell->extent_in_direction(0);
+              if (std::sqrt(d2) < refinement.radius + 2. * h)
+                cell->set_refine_flag();
+            }
+        triangulation.execute_coarsening_and_refinement();
+      }
   }
 
 

@@ -2,6 +2,7 @@
 
 #include <fgimpact/impact_driver.h>
 #include <fgimpact/run_control.h>
+#include <fgimpact/simulator.h>
 
 #include <cmath>
 #include <csignal>
@@ -27,10 +28,15 @@ namespace fgimpact
   ImpactDriver::setup()
   {
     const PlateGeometry &geometry = plate.get_geometry();
-    contact                       = std::make_unique<HertzNodeContact>(
+    const double         h        = geometry.thickness();
+    contact                       = create_contact_model(
+      parameters.contact_model,
       contact_law,
       plate,
-      impactor.impact_point(geometry.length(), geometry.width()));
+      impactor.radius(),
+      impactor.impact_point(geometry.length(), geometry.width()),
+      expected_contact_radius(parameters, plate.get_material(), h),
+      top_face_modulus(plate.get_material(), h));
     pcout << "  impactor mass " << impactor.mass()
           << " kg, V0 = " << impactor.initial_velocity() << " m/s; "
           << contact->description() << '\n';
@@ -130,6 +136,10 @@ namespace fgimpact
                                               results);
     for (const auto &observer : observers)
       monitor->add_row_observer(observer);
+    const PlateGeometry &g = plate.get_geometry();
+    const Point<2>       p = impactor.impact_point(g.length(), g.width());
+    monitor->add_contact_output(Point<3>(p[0], p[1], g.thickness()),
+                                impactor.radius());
 
     // Eq. 2.16: plate at rest, alpha(0) = 0, alpha'(0) = V0; a(0) = 0 as
     // F(0) = 0.  The impactor moves in the impact direction (-z).

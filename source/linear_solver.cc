@@ -66,14 +66,14 @@ namespace fgimpact
                              "matrix (not positive definite?)."));
     }
 
-    /// x = A^{-1} b for arrays of length n.
+    /// x = A^{-1} b for arrays of n x k (k columns, one after another).
     void
-    solve(const size_t n, const double *b, double *x)
+    solve(const size_t n, const double *b, double *x, const size_t k = 1)
     {
       cholmod_dense B;
       B.nrow  = n;
-      B.ncol  = 1;
-      B.nzmax = n;
+      B.ncol  = k;
+      B.nzmax = n * k;
       B.d     = n;
       B.x     = const_cast<double *>(b);
       B.z     = nullptr;
@@ -82,7 +82,7 @@ namespace fgimpact
       cholmod_solve2(
         CHOLMOD_A, factor, &B, nullptr, &X, nullptr, &Y, &E, &common);
       const double *result = static_cast<const double *>(X->x);
-      std::copy(result, result + n, x);
+      std::copy(result, result + n * k, x);
     }
 
     cholmod_common  common;
@@ -265,6 +265,19 @@ namespace fgimpact
             preconditioner = std::move(p);
           }
       }
+  }
+
+
+
+  void
+  EffectiveMatrixSolver::solve_many(const std::size_t  n,
+                                    const unsigned int k,
+                                    const double      *B,
+                                    double            *X)
+  {
+    Assert(cholmod, ExcMessage("solve_many() needs the cholmod solver"));
+    iterations = 0;
+    cholmod->solve(n, B, X, k);
   }
 
 

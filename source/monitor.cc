@@ -149,6 +149,24 @@ namespace fgimpact
 
 
 
+  const std::vector<HistoryColumn> &
+  contact_area_columns()
+  {
+    static const std::vector<HistoryColumn> columns = {
+      {"contact_radius_mm",
+       5,
+       [](const HistorySample &s) { return s.contact->contact_radius * 1e3; }},
+      {"max_contact_pressure_MPa",
+       4,
+       [](const HistorySample &s) { return s.contact->max_pressure * 1e-6; }},
+      {"n_contact_nodes", 0, [](const HistorySample &s) {
+         return static_cast<double>(s.contact->n_active);
+       }}};
+    return columns;
+  }
+
+
+
   ImpactMonitor::ImpactMonitor(const OutputParameters &parameters,
                                const PlateModel       &plate,
                                const ContactModel     &contact,
@@ -180,6 +198,8 @@ namespace fgimpact
     impact_results.peak_contact_force = impact_results.max_sampled_force = 0;
     impact_results.time_of_peak_force = impact_results.impulse = 0;
     impact_results.max_indentation = impact_results.max_energy_drift = 0;
+    impact_results.max_contact_radius = impact_results.max_contact_pressure = 0;
+    impact_results.max_contact_nodes  = 0;
     impact_results.max_midplane_deflection                           = 0;
     impact_results.max_top_deflection                                = 0;
     impact_results.max_newton_iterations                             = 0;
@@ -187,10 +207,15 @@ namespace fgimpact
     impact_results.max_linear_iterations                             = 0;
     impact_results.contact_duration = std::numeric_limits<double>::quiet_NaN();
     impact_results.n_impacts        = 1;
+    columns                         = history_columns();
+    if (contact.reports_contact_area())
+      columns.insert(columns.end(),
+                     contact_area_columns().begin(),
+                     contact_area_columns().end());
     if (root)
       {
         std::vector<std::pair<std::string, int>> header;
-        for (const auto &column : history_columns())
+        for (const auto &column : columns)
           header.emplace_back(column.name, column.decimals);
         history =
           std::make_unique<CsvWriter>(parameters.directory + "/history.csv",
@@ -200,6 +225,19 @@ namespace fgimpact
       vtu = std::make_unique<VtuWriter>(plate,
                                         parameters.directory,
                                         parameters.vtu_compression);
+  }
+
+
+
+  void
+  ImpactMonitor::add_contact_output(const Point<3> &impact_point,
+                                    const double    sphere_radius)
+  {
+    if (parameters.vtu_interval > 0 && root)
+      contact_vtu = std::make_unique<ContactVtuWriter>(parameters.directory,
+                                                       impact_point,
+                                                       sphere_radius,
+                                                       contact_model);
   }
 
 
@@ -305,6 +343,12 @@ namespace fgimpact
         peak_pending = false;
       }
     r.max_indentation = std::max(r.max_indentation, sample.contact->alpha);
+    r.max_contact_radius =
+      std::max(r.max_contact_radius, sample.contact->contact_radius);
+    r.max_contact_pressure =
+      std::max(r.max_contact_pressure, sample.contact->max_pressure);
+    r.max_contact_nodes =
+      std::max(r.max_contact_nodes, sample.contact->n_active);
     r.max_midplane_deflection =
       std::max(r.max_midplane_deflection, sample.W_mid);
     r.max_top_deflection = std::max(r.max_top_deflection, sample.W_top);
@@ -364,8 +408,8 @@ namespace fgimpact
                                const HistorySample &sample)
   {
     std::vector<double> row;
-    row.reserve(history_columns().size());
-    for (const auto &column : history_columns())
+    row.reserve(columns.size());
+    for (const auto &column : columns)
       row.push_back(column.value(sample));
     // A failed write stops the writing on this rank; the driver stops
     // every rank at the end of this step (no rank waits for another).
@@ -377,6 +421,8 @@ namespace fgimpact
           {
             output_timer.start();
             vtu->write(step, t, stepper.displacement(), stepper.velocity());
+            if (contact_vtu)
+              contact_vtu->write(step, t, sample.ball->w, *sample.contact);
             output_timer.stop();
           }
       }
@@ -387,6 +433,7 @@ namespace fgimpact
         output_failure_message = one_line(message.str());
         history.reset();
         vtu.reset();
+        contact_vtu.reset();
       }
     for (const auto &observer : observers)
       observer(row);
@@ -418,6 +465,8 @@ namespace fgimpact
     output_timer.start();
     try
       {
+        if (contact_vtu)
+          contact_vtu->finish();
         if (vtu)
           vtu->finish();
         if (history)
@@ -443,6 +492,8 @@ namespace fgimpact
   {
     ImpactResults &r = impact_results;
     r.n_time_steps   = steps_done;
+    // The candidate set may have grown during the run.
+    r.n_contact_candidates = contact_model.contact_dofs().size();
     r.departure_velocity =
       in_contact ? std::numeric_limits<double>::quiet_NaN() : -ball.v;
     // int F dt = m (V0 + V_departure), with the ball's current velocity.
@@ -537,6 +588,13 @@ namespace fgimpact
     out.add("plate_mass_kg", r.plate_mass, 8);
     out.add("impulse_N_s", r.impulse, 9);
     out.add("contact_node_offset_mm", r.contact_node_offset * 1e3, 6);
+    if (contact_model.reports_contact_area())
+      {
+        out.add("max_contact_radius_mm", r.max_contact_radius * 1e3, 5);
+        out.add("max_contact_pressure_MPa", r.max_contact_pressure * 1e-6, 4);
+        out.add("max_contact_nodes", r.max_contact_nodes, 0);
+        out.add("n_contact_candidates", r.n_contact_candidates, 0);
+      }
     out.add("n_impacts", r.n_impacts, 0);
     out.add("n_dofs", r.n_dofs, 0);
     out.add("n_mpi_ranks", r.n_mpi_ranks, 0);

@@ -164,6 +164,7 @@ namespace fgimpact
     ModalAnalysis::Parameters::declare_parameters(prm);
     FunctionallyGradedMaterial::Parameters::declare_parameters(prm);
     HertzContactLaw::Parameters::declare_parameters(prm);
+    ContactModelParameters::declare_parameters(prm);
     Impactor::Parameters::declare_parameters(prm);
     PlateModel::Parameters::declare_parameters(prm);
     EffectiveMatrixSolver::Parameters::declare_parameters(prm);
@@ -186,6 +187,7 @@ namespace fgimpact
     material.parse_parameters(prm);
     finite_element.parse_parameters(prm);
     contact.parse_parameters(prm);
+    contact_model.parse_parameters(prm);
     impactor.parse_parameters(prm);
     time_integration.parse_parameters(prm);
     linear_solver.parse_parameters(prm);
@@ -230,6 +232,12 @@ namespace fgimpact
         " is not unconditionally stable: that needs 2 "
         "beta >= gamma >= 1/2 (beta = 1/4, gamma = 1/2 is "
         "the default)."));
+    AssertThrow(!(explicit_scheme &&
+                  contact_model.model ==
+                    ContactModelParameters::Model::resolved_sphere),
+                ExcMessage("Contact/Model = resolved sphere needs Time "
+                           "integration/Scheme = implicit: its contact is "
+                           "rigid, which no explicit step is stable for."));
     AssertThrow(output.directory.find_first_not_of(" \t") != std::string::npos,
                 ExcMessage("Output/Directory is empty."));
     AssertThrow(2. * impactor.radius <= std::min(a, b),

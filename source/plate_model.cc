@@ -68,10 +68,23 @@ namespace fgimpact
 
 
 
+  double
+  PlateModel::smallest_cell_size() const
+  {
+    double h = std::numeric_limits<double>::max();
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        h = std::min(h, cell->extent_in_direction(0));
+    return Utilities::MPI::min(h, mpi_communicator);
+  }
+
+
+
   void
-  PlateModel::setup()
+  PlateModel::setup(const LocalRefinement &refinement)
   {
     geometry.create_triangulation(triangulation);
+    PlateGeometry::refine_locally(triangulation, refinement);
     dof_handler.distribute_dofs(fe);
     locally_owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
@@ -103,13 +116,17 @@ namespace fgimpact
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
 
     const auto &supports = geometry.get_parameters().supports;
-    for (unsigned int face = 0; face < 4; ++face)
+    for (unsigned int face = 0; face < 5; ++face)
       {
         // On x = const faces (ids 0, 1) the tangential in-plane component is
-        // v (index 1); on y = const faces (ids 2, 3) it is u (index 0).
-        const bool    x_face = (face < 2);
+        // v (index 1); on y = const faces (ids 2, 3) it is u (index 0); on
+        // the bottom (id 4) simply supported constrains w alone.
+        const bool        x_face = (face < 2);
+        const SideSupport support =
+          (face < 4 ? supports[face] :
+                      geometry.get_parameters().bottom_support);
         ComponentMask mask(3, false);
-        switch (supports[face])
+        switch (support)
           {
             case SideSupport::free:
               continue;
@@ -118,7 +135,8 @@ namespace fgimpact
               break;
             case SideSupport::simply_supported:
               mask.set(2, true);
-              mask.set(x_face ? 1 : 0, true);
+              if (face < 4)
+                mask.set(x_face ? 1 : 0, true);
               break;
           }
         VectorTools::interpolate_boundary_values(mapping,
@@ -215,14 +233,35 @@ namespace fgimpact
   PlateModel::nearest_top_vertex_dof(const Point<2>    &xy,
                                      const unsigned int component) const
   {
-    const Point<3> target(xy[0], xy[1], geometry.thickness());
+    return nearest_vertex(Point<3>(xy[0], xy[1], geometry.thickness()),
+                          component,
+                          /*boundary_cells_only=*/true);
+  }
+
+
+
+  std::pair<types::global_dof_index, Point<3>>
+  PlateModel::nearest_vertex_dof(const Point<3>    &target,
+                                 const unsigned int component) const
+  {
+    return nearest_vertex(target, component, false);
+  }
+
+
+
+  std::pair<types::global_dof_index, Point<3>>
+  PlateModel::nearest_vertex(const Point<3>    &target,
+                             const unsigned int component,
+                             const bool         boundary_cells_only) const
+  {
     // The best candidate of this rank: (distance, x, y, z, dof), compared
     // lexicographically so that every partition picks the same vertex.
     using Candidate = std::array<double, 5>;
     Candidate best  = {{std::numeric_limits<double>::max(), 0, 0, 0, -1.}};
 
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->at_boundary())
+      if (cell->is_locally_owned() &&
+          (cell->at_boundary() || !boundary_cells_only))
         for (const unsigned int v : cell->vertex_indices())
           {
             const Point<3> &p = cell->vertex(v);

@@ -50,10 +50,15 @@ namespace fgimpact
       // log.txt too: the cleaning happens before this run opens its own.
       if (name == "history.csv" || name == "summary.txt" ||
           name == "parameters.prm" || name == "frequencies.csv" ||
-          name == "solution.pvd" || name == "log.txt" || name == "input.prm")
+          name == "solution.pvd" || name == "log.txt" || name == "input.prm" ||
+          name == "sphere.pvd" || name == "contact.pvd" ||
+          name == "contact_pressure.csv")
         return true;
-      return name.rfind("solution_", 0) == 0 &&
-             (ends_with(name, ".vtu") || ends_with(name, ".pvtu"));
+      for (const std::string series : {"solution_", "sphere_", "contact_"})
+        if (name.rfind(series, 0) == 0 &&
+            (ends_with(name, ".vtu") || ends_with(name, ".pvtu")))
+          return true;
+      return false;
     }
   } // namespace
 

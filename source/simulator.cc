@@ -5,6 +5,7 @@
 #include <fgimpact/simulator.h>
 #include <fgimpact/static_analysis.h>
 
+#include <cmath>
 #include <cstdio>
 
 namespace fgimpact
@@ -70,10 +71,15 @@ namespace fgimpact
       {
         const Impactor       impactor(parameters.impactor);
         const PlateGeometry &g = plate.get_geometry();
-        StaticAnalysis       analysis(parameters.static_analysis,
+        SphereIndenter indenter;
+        indenter.radius           = impactor.radius();
+        indenter.candidate_radius = parameters.contact_model.candidate_radius;
+        indenter.paraboloid_gap   = parameters.contact_model.paraboloid_gap;
+        StaticAnalysis analysis(parameters.static_analysis,
                                 parameters.linear_solver,
                                 plate,
-                                impactor.impact_point(g.length(), g.width()));
+                                impactor.impact_point(g.length(), g.width()),
+                                indenter);
         solve_in_phase("static solve", [&]() { analysis.solve(); });
         analysis.write_output(parameters.output.directory,
                               parameters.output.vtu_compression);
@@ -92,6 +98,20 @@ namespace fgimpact
                       r.sigma_xx[1] * 1e-6,
                       r.sigma_xx[2] * 1e-6);
         pcout << line;
+        if (parameters.static_analysis.load == StaticAnalysis::Load::sphere)
+          {
+            std::snprintf(line,
+                          sizeof(line),
+                          "  sphere indentation %.4f um: force %.4f N, "
+                          "contact radius %.4f mm (%u nodes), max pressure "
+                          "%.3f MPa\n",
+                          parameters.static_analysis.indentation * 1e6,
+                          r.contact_force,
+                          r.contact_radius * 1e3,
+                          r.n_contact_nodes,
+                          r.max_pressure * 1e-6);
+            pcout << line;
+          }
       }
     };
 
@@ -152,7 +172,7 @@ namespace fgimpact
                                          *geometry,
                                          *material,
                                          mpi_communicator);
-    plate->setup();
+    plate->setup(contact_refinement());
 
     const PropertyMode mode = parameters.material.property_mode;
     pcout << "fgimpact: FGM plate " << geometry->length() << " x "
@@ -175,6 +195,12 @@ namespace fgimpact
           << static_cast<types::global_dof_index>(owned.max) << '\n';
     if (!parameters.accuracy.log_message.empty())
       pcout << "  " << parameters.accuracy.log_message << '\n';
+    if (parameters.geometry.contact_refinement_levels > 0)
+      pcout << "  contact refinement: "
+            << parameters.geometry.contact_refinement_levels
+            << " levels within " << contact_refinement().radius * 1e3
+            << " mm of the impact point, smallest element "
+            << plate->smallest_cell_size() * 1e6 << " um\n";
 
     switch (parameters.problem_type)
       {
@@ -195,6 +221,42 @@ namespace fgimpact
           break;
       }
     driver->setup();
+  }
+
+
+
+  LocalRefinement
+  Simulator::contact_refinement() const
+  {
+    const Impactor       impactor(parameters.impactor);
+    const PlateGeometry &g = *geometry;
+    const Point<2>       p = impactor.impact_point(g.length(), g.width());
+    LocalRefinement      refinement;
+    refinement.centre = Point<3>(p[0], p[1], g.thickness());
+    refinement.levels = parameters.geometry.contact_refinement_levels;
+    refinement.radius =
+      (parameters.geometry.contact_refinement_radius > 0. ?
+         parameters.geometry.contact_refinement_radius :
+         1.5 * expected_contact_radius(parameters, *material, g.thickness()));
+    return refinement;
+  }
+
+
+
+  double
+  expected_contact_radius(const Parameters                 &parameters,
+                          const FunctionallyGradedMaterial &material,
+                          const double                      thickness)
+  {
+    const Impactor impactor(parameters.impactor);
+    const double   R = impactor.radius();
+    if (parameters.problem_type == ProblemType::static_load &&
+        parameters.static_analysis.load == StaticAnalysis::Load::sphere)
+      return std::sqrt(R * parameters.static_analysis.indentation);
+    return hertz_impact_contact_radius(top_face_modulus(material, thickness),
+                                       R,
+                                       impactor.mass(),
+                                       impactor.initial_velocity());
   }
 
 

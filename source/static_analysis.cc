@@ -3,7 +3,10 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <fgimpact/postprocessing.h>
+#include <fgimpact/compliance.h>
+#include <fgimpact/contact_law.h>
 #include <fgimpact/probes.h>
+#include <fgimpact/resolved_contact.h>
 #include <fgimpact/static_analysis.h>
 
 #include <cmath>
@@ -19,12 +22,21 @@ namespace fgimpact
     {
       prm.declare_entry("Load",
                         "sinusoidal",
-                        Patterns::Selection("sinusoidal|uniform|point"),
+                        Patterns::Selection("sinusoidal|uniform|point|sphere"),
                         "Load on the top face, downward: sinusoidal = "
                         "q0 sin(pi x/a) sin(pi y/b) (exact 3D solution exists "
                         "for simply supported plates), uniform = q0, point = "
                         "a force P at the top node nearest to the impact "
-                        "point.");
+                        "point, sphere = the rigid impactor (Impactor/Radius) "
+                        "pressed Indentation deep at the impact point, in "
+                        "frictionless unilateral contact (as Contact/Model = "
+                        "resolved sphere; refine with Geometry/Contact "
+                        "refinement levels).");
+      prm.declare_entry("Indentation",
+                        "1e-5",
+                        Patterns::Double(0., 1.),
+                        "Load = sphere: how far the sphere's lowest point is "
+                        "pushed below the undeformed top face. Unit: m.");
       prm.declare_entry("Pressure",
                         "1e6",
                         Patterns::Double(-1e12, 1e12),
@@ -48,7 +60,9 @@ namespace fgimpact
       const std::string l = prm.get("Load");
       load                = (l == "sinusoidal" ? Load::sinusoidal :
                              l == "uniform"    ? Load::uniform :
-                                                 Load::point);
+                             l == "point"      ? Load::point :
+                                                 Load::sphere);
+      indentation         = prm.get_double("Indentation");
       pressure            = prm.get_double("Pressure");
       point_force         = prm.get_double("Point force");
     }
@@ -61,11 +75,13 @@ namespace fgimpact
     const Parameters                        &parameters,
     const EffectiveMatrixSolver::Parameters &solver,
     const PlateModel                        &plate,
-    const Point<2>                          &load_point)
+    const Point<2>                          &load_point,
+    const SphereIndenter                    &indenter)
     : parameters(parameters)
     , solver_parameters(solver)
     , plate(plate)
     , load_point(load_point)
+    , indenter(indenter)
   {}
 
 
@@ -126,14 +142,75 @@ namespace fgimpact
 
 
   void
+  StaticAnalysis::solve_indentation(EffectiveMatrixSolver &solver)
+  {
+    const double R     = indenter.radius;
+    const double delta = parameters.indentation;
+    ResolvedSphereContact contact(
+      plate,
+      R,
+      load_point,
+      indenter.candidate_radius > 0. ? indenter.candidate_radius :
+                                       1.5 * std::sqrt(R * delta),
+      indenter.paraboloid_gap ? ResolvedSphereContact::GapShape::paraboloid :
+                                ResolvedSphereContact::GapShape::sphere,
+      top_face_modulus(plate.get_material(),
+                       plate.get_geometry().thickness()));
+    // The sphere is displacement-driven: w = delta, no ball compliance.
+    // A contact that reaches the candidate set's edge grows the set.
+    FullMatrix<double> C;
+    ContactState       state;
+    for (;;)
+      {
+        compute_compliance(solver, plate, contact.contact_dofs(), C, nullptr);
+        contact.solve_implicit(Vector<double>(contact.contact_dofs().size()),
+                               C,
+                               delta,
+                               0.,
+                               NewtonControl(),
+                               state);
+        if (!state.candidates_exhausted)
+          break;
+        AssertThrow(contact.grow_candidates(),
+                    ExcMessage("Static/Indentation: the contact reaches the "
+                               "sphere's radius; reduce the indentation."));
+      }
+    const auto &dofs = contact.contact_dofs();
+    results.contact_force   = state.force;
+    results.contact_radius  = state.contact_radius;
+    results.max_pressure    = state.max_pressure;
+    results.n_contact_nodes = state.n_active;
+    results.node_radius     = contact.candidate_radii();
+    results.node_pressure.resize(dofs.size());
+    for (unsigned int j = 0; j < dofs.size(); ++j)
+      results.node_pressure[j] = state.forces[j] / contact.candidate_areas()[j];
+
+    // u = K^{-1} (-sum_j lambda_j g_j): one more solve.
+    TrilinosWrappers::MPI::Vector f;
+    plate.initialize_vector(f);
+    for (unsigned int j = 0; j < dofs.size(); ++j)
+      if (f.locally_owned_elements().is_element(dofs[j]))
+        f(dofs[j]) = -state.forces[j];
+    f.compress(VectorOperation::insert);
+    solver.solve(u, f);
+  }
+
+
+
+  void
   StaticAnalysis::solve()
   {
-    TrilinosWrappers::MPI::Vector f;
-    assemble_load(f);
     plate.initialize_vector(u);
     EffectiveMatrixSolver solver(solver_parameters);
     solver.initialize(plate.stiffness_matrix());
-    solver.solve(u, f);
+    if (parameters.load == Load::sphere)
+      solve_indentation(solver);
+    else
+      {
+        TrilinosWrappers::MPI::Vector f;
+        assemble_load(f);
+        solver.solve(u, f);
+      }
     plate.get_constraints().distribute(u);
 
     const double h = plate.get_geometry().thickness();
@@ -147,6 +224,27 @@ namespace fgimpact
         results.sigma_zz[k]               = sigma[2][2];
       }
     results.n_dofs = plate.n_dofs();
+  }
+
+
+
+  void
+  StaticAnalysis::write_pressure_csv(const std::string &file_name) const
+  {
+    std::ofstream out(file_name);
+    out << "r_mm,pressure_MPa\n";
+    char line[64];
+    for (unsigned int j = 0; j < results.node_radius.size(); ++j)
+      {
+        std::snprintf(line,
+                      sizeof(line),
+                      "%.6f,%.6f\n",
+                      results.node_radius[j] * 1e3,
+                      results.node_pressure[j] * 1e-6);
+        out << line;
+      }
+    AssertThrow(out.good(),
+                ExcMessage("cannot write " + file_name + " (disk full?)"));
   }
 
 
@@ -176,6 +274,15 @@ namespace fgimpact
             out.add("sigma_zz_" + where[k] + "_MPa",
                     results.sigma_zz[k] * 1e-6,
                     6);
+          }
+        if (parameters.load == Load::sphere)
+          {
+            out.add("static_indentation_um", parameters.indentation * 1e6, 6);
+            out.add("static_contact_force_N", results.contact_force, 6);
+            out.add("contact_radius_mm", results.contact_radius * 1e3, 6);
+            out.add("max_contact_pressure_MPa", results.max_pressure * 1e-6, 6);
+            out.add("n_contact_nodes", results.n_contact_nodes, 0);
+            write_pressure_csv(directory + "/contact_pressure.csv");
           }
         out.add("n_dofs", results.n_dofs, 0);
         out.write(directory + "/summary.txt");

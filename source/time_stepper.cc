@@ -4,7 +4,10 @@
 
 #include <deal.II/lac/solver_control.h>
 
+#include <fgimpact/compliance.h>
 #include <fgimpact/time_stepper.h>
+
+#include <Epetra_CrsMatrix.h>
 
 #include <cmath>
 #include <limits>
@@ -141,7 +144,7 @@ namespace fgimpact
       ImplicitNewmarkStepper(const Parameters &parameters,
                              const EffectiveMatrixSolver::Parameters &solver,
                              const PlateModel                        &plate,
-                             const ContactModel                      &contact,
+                             ContactModel                            &contact,
                              const double impactor_mass)
         : parameters(parameters)
         , newmark(parameters.newmark, parameters.time_step)
@@ -157,7 +160,8 @@ namespace fgimpact
       {
         Timer timer;
         effective.copy_from(plate.stiffness_matrix());
-        effective.add(newmark.mass_factor(), plate.mass_matrix());
+        setup_mass_matrix();
+        effective.add(newmark.mass_factor(), *mass);
         solver.initialize(effective, &plate.get_dof_handler());
         iterative = (solver.type() == "cg");
 
@@ -196,6 +200,15 @@ namespace fgimpact
                                      1. / (m_i * a0),
                                      parameters.newton,
                                      contact);
+        if (contact.candidates_exhausted)
+          {
+            // Nothing of the state has changed yet: grow, rebuild and
+            // repeat the step.
+            grow_contact(step, t);
+            contact = ContactState();
+            advance(step, t, impactor, contact);
+            return;
+          }
         AssertThrow(contact.newton_iterations != numbers::invalid_unsigned_int,
                     ExcMessage(
                       "Newton for the contact did not converge at " +
@@ -209,13 +222,14 @@ namespace fgimpact
         double work = 0; // sum_j lambda_j u_j(t_{n+1}) = u^T (sum lambda g)
         for (unsigned int j = 0; j < dofs.size(); ++j)
           {
-            u_new.add(-contact.forces[j], c[j]);
+            if (contact.forces[j] != 0.) // most candidates are inactive
+              u_new.add(-contact.forces[j], c[j]);
             double u_j = u_free[j];
             for (unsigned int k = 0; k < dofs.size(); ++k)
               u_j -= compliance(j, k) * contact.forces[k];
             work += contact.forces[j] * u_j;
           }
-        plate.mass_matrix().vmult(Mu_new, u_new);
+        mass->vmult(Mu_new, u_new);
         // u^T K u from K_eff u = M r_n - sum lambda_j g_j - a0 M u.
         strain = 0.5 * (u_new * rhs - work - a0 * (u_new * Mu_new));
 
@@ -228,8 +242,8 @@ namespace fgimpact
         // Refresh the carried products now and then against round-off.
         if (step % 64 == 0)
           {
-            plate.mass_matrix().vmult(Mv, v);
-            plate.mass_matrix().vmult(Ma, a);
+            mass->vmult(Mv, v);
+            mass->vmult(Ma, a);
           }
         kinetic = 0.5 * (v * Mv);
 
@@ -246,32 +260,93 @@ namespace fgimpact
         s << "implicit Newmark (beta = " << newmark.beta()
           << ", gamma = " << newmark.gamma() << "), linear solver "
           << solver.type();
+        if (mass != &plate.mass_matrix())
+          s << "; modified mass: the contact candidates' z DoFs massless ("
+            << removed_mass << " kg removed)";
         return s.str();
       }
 
     private:
-      /// c_j = K_eff^{-1} g_j for the unit loads g_j at the contact DoFs
-      /// (m solves, once) and the dense compliance C_ij = g_i^T c_j (m/N).
+      /**
+       * The plate's consistent mass matrix, or for a contact model with
+       * massless DoFs (the modified mass method of Khenous, Laborde and
+       * Renard 2008) a copy with their rows and columns zeroed: contact
+       * nodes without inertia cannot chatter, and the removed mass, on the
+       * contact candidates alone, vanishes with the element size (logged).
+       */
+      void
+      setup_mass_matrix()
+      {
+        const auto &massless = contact_model.massless_dofs();
+        mass                 = &plate.mass_matrix();
+        if (massless.empty())
+          return;
+        modified_mass.copy_from(plate.mass_matrix());
+        std::vector<bool> zero(plate.n_dofs(), false);
+        for (const auto dof : massless)
+          zero[dof] = true;
+        // In place on the Epetra rows (deal.II's entry-wise set() on an
+        // assembled Trilinos matrix costs a search per call).
+        auto &matrix = const_cast<Epetra_CrsMatrix &>(
+          modified_mass.trilinos_matrix());
+        double removed = 0; // kg: sum of the zeroed rows' entries
+        for (int row = 0; row < matrix.NumMyRows(); ++row)
+          {
+            int     n       = 0;
+            double *values  = nullptr;
+            int    *columns = nullptr;
+            matrix.ExtractMyRowView(row, n, values, columns);
+            const bool zero_row = zero[matrix.RowMap().GID(row)];
+            for (int k = 0; k < n; ++k)
+              if (zero_row || zero[matrix.ColMap().GID(columns[k])])
+                {
+                  if (zero_row)
+                    removed += values[k];
+                  values[k] = 0.;
+                }
+          }
+        removed_mass =
+          Utilities::MPI::sum(removed, plate.get_mpi_communicator());
+        mass = &modified_mass;
+      }
+
+      /// The contact reached the candidate set's edge: a larger set, its
+      /// massless DoFs (a new K_eff, factorized again, and the carried
+      /// products M u, M v, M a) and its compliance.
+      void
+      grow_contact(const unsigned int step, const double t)
+      {
+        AssertThrow(contact_model.grow_candidates(),
+                    ExcMessage("the contact reached the edge of the "
+                               "candidate set at " +
+                               at_step(step, t) +
+                               ", which cannot grow beyond the sphere's "
+                               "radius."));
+        dofs = contact_model.contact_dofs();
+        if (mass != &plate.mass_matrix())
+          {
+            setup_mass_matrix();
+            effective.copy_from(plate.stiffness_matrix());
+            effective.add(newmark.mass_factor(), *mass);
+            solver.initialize(effective, &plate.get_dof_handler());
+            mass->vmult(Mu, u);
+            mass->vmult(Mv, v);
+            mass->vmult(Ma, a);
+          }
+        compute_compliance();
+        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) ==
+            0)
+          std::cout << "  " << at_step(step, t)
+                    << ": the contact reached the edge of the candidate "
+                       "set; grown to "
+                    << dofs.size() << " candidates" << std::endl;
+      }
+
+      /// c_j = K_eff^{-1} g_j and the dense compliance C (m/N).
       void
       compute_compliance()
       {
-        const unsigned int m = dofs.size();
-        c.resize(m);
-        compliance.reinit(m, m);
-        TrilinosWrappers::MPI::Vector g;
-        for (unsigned int j = 0; j < m; ++j)
-          {
-            plate.initialize_vector(g);
-            plate.initialize_vector(c[j]);
-            // Only the owner of the contact DoF writes.
-            if (g.locally_owned_elements().is_element(dofs[j]))
-              g(dofs[j]) = 1.;
-            g.compress(VectorOperation::insert);
-            solver.solve(c[j], g);
-            const Vector<double> column = plate.dof_values(c[j], dofs);
-            for (unsigned int i = 0; i < m; ++i)
-              compliance(i, j) = column[i];
-          }
+        fgimpact::compute_compliance(solver, plate, dofs, compliance, &c);
       }
 
       /// The contact-free response u_new = u* (K_eff u* = M r_n) and M r_n
@@ -290,7 +365,8 @@ namespace fgimpact
             u_new           = u;
             u_new.add(dt, v, 0.5 * dt * dt, a);
             for (unsigned int j = 0; j < contact.forces.size(); ++j)
-              u_new.add(contact.forces[j], c[j]);
+              if (contact.forces[j] != 0.)
+                u_new.add(contact.forces[j], c[j]);
           }
         try
           {
@@ -333,14 +409,17 @@ namespace fgimpact
 
       const Parameters        parameters;
       const NewmarkIntegrator newmark;
+      TrilinosWrappers::SparseMatrix        modified_mass;
+      const TrilinosWrappers::SparseMatrix *mass         = nullptr;
+      double                                removed_mass = 0; // kg
       // Declared before the solver, which refers to it: members are
       // destroyed in reverse order (Amesos_Mumps crashed otherwise).
       TrilinosWrappers::SparseMatrix             effective;
       EffectiveMatrixSolver                      solver;
       const PlateModel                          &plate;
-      const ContactModel                        &contact_model;
-      const std::vector<types::global_dof_index> dofs;
-      const double                               m_i;
+      ContactModel                        &contact_model;
+      std::vector<types::global_dof_index> dofs;
+      const double                         m_i;
       TrilinosWrappers::MPI::Vector a, Mu, Mv, Ma, u_new, Mu_new, rhs;
       std::vector<TrilinosWrappers::MPI::Vector> c;
       FullMatrix<double>                         compliance;
@@ -578,7 +657,7 @@ namespace fgimpact
   create_time_stepper(const TimeStepper::Parameters           &parameters,
                       const EffectiveMatrixSolver::Parameters &solver,
                       const PlateModel                        &plate,
-                      const ContactModel                      &contact,
+                      ContactModel                            &contact,
                       const double                             impactor_mass,
                       const double                             impact_velocity)
   {

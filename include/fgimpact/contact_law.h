@@ -52,6 +52,25 @@ namespace fgimpact
   double
   delafargue_ulm_indentation_modulus(const TransverselyIsotropicConstants &c);
 
+  /// The top face's indentation modulus E(h)/(1 - nu^2) (Pa): the
+  /// material that a small contact sees.
+  double
+  top_face_modulus(const FunctionallyGradedMaterial &material,
+                   const double                      thickness);
+
+  /**
+   * The largest contact radius (m) of a rigid sphere (radius R in m, mass
+   * m in kg, speed V0 in m/s) striking a half-space of indentation modulus
+   * Q (Pa): a = sqrt(R alpha_max), 1/2 m V0^2 = 2/5 K alpha_max^{5/2},
+   * K = 4/3 Q sqrt(R).  A plate yields, so its contact is smaller: an
+   * upper estimate for the candidate set and the local refinement.
+   */
+  double
+  hertz_impact_contact_radius(const double Q,
+                              const double R,
+                              const double m,
+                              const double V0);
+
   /**
    * The modified Hertz contact law, Eqs. 2.2-2.10 and 2.8:
    *

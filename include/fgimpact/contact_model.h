@@ -1,6 +1,7 @@
 #ifndef fgimpact_contact_model_h
 #define fgimpact_contact_model_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -35,6 +36,16 @@ namespace fgimpact
     unsigned int newton_iterations = 0;
     /// Force at each contact DoF (N, acting on the plate in -z).
     std::vector<double> forces;
+    /// Resolved contact only: nodes with a positive force, the largest
+    /// distance of such a node from the impact point (m; the discrete edge
+    /// lies before the next node out) and the largest nodal pressure
+    /// lambda_j / A_j (Pa).
+    unsigned int n_active       = 0;
+    double       contact_radius = 0;
+    double       max_pressure   = 0;
+    /// Resolved contact: a node of the candidate set's outermost ring is
+    /// in contact, so the solution may be cut off: grow and repeat.
+    bool candidates_exhausted = false;
   };
 
   /// The stopping rule of a contact model's Newton iteration.
@@ -114,7 +125,97 @@ namespace fgimpact
     /// The model's constants for summary.txt.
     virtual void
     fill_results(ImpactResults &results) const = 0;
+
+    /// Enlarge the set of contact DoFs (after candidates_exhausted);
+    /// false if it cannot grow.  Collective.
+    virtual bool
+    grow_candidates()
+    {
+      return false;
+    }
+
+    /// For the VTU output of a contact with several nodes: their
+    /// undeformed positions (m) and tributary areas (m^2); empty for a
+    /// point contact.
+    virtual std::vector<Point<3>>
+    contact_points() const
+    {
+      return {};
+    }
+    virtual std::vector<double>
+    contact_areas() const
+    {
+      return {};
+    }
+
+    /// DoFs to be given no mass (the modified mass method; empty: the
+    /// consistent mass matrix unchanged).
+    virtual std::vector<types::global_dof_index>
+    massless_dofs() const
+    {
+      return {};
+    }
+
+    /// Whether the state's n_active, contact_radius and max_pressure are
+    /// meaningful (history columns are added for them).
+    virtual bool
+    reports_contact_area() const
+    {
+      return false;
+    }
   };
+
+
+
+  /**
+   * Subsection "Contact", the model part (the Hertz law's constants are
+   * HertzContactLaw::Parameters, in the same subsection): which contact
+   * model couples the ball and the plate.
+   */
+  struct ContactModelParameters
+  {
+    enum class Model
+    {
+      /// The paper's Eq. 3.14: Hertz law, point force at one node.
+      hertz_node,
+      /// The same law, alpha measured from the mid-plane under the ball.
+      hertz_midplane,
+      /// Rigid sphere, unilateral contact at every top node near the
+      /// impact point (ResolvedSphereContact).
+      resolved_sphere
+    };
+    Model model = Model::hertz_node;
+    /// resolved sphere: the sphere's exact profile or the paraboloid.
+    bool paraboloid_gap = false;
+    /// resolved sphere: the candidates' z DoFs massless (modified mass).
+    bool modified_mass = true;
+    /// resolved sphere: candidate nodes within this distance (m) of the
+    /// impact point; 0: automatic, 1.5 times the half-space estimate of
+    /// the largest contact radius plus two of the smallest cells.
+    double candidate_radius = 0;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+  };
+
+
+
+  /**
+   * The factory: the model named in the parameters.  expected_radius (m)
+   * is the half-space estimate of the largest contact radius
+   * (hertz_impact_contact_radius()), reference_modulus (Pa) the top
+   * face's E/(1 - nu^2).  Collective.
+   */
+  std::unique_ptr<ContactModel>
+  create_contact_model(const ContactModelParameters &parameters,
+                       const HertzContactLaw        &law,
+                       const PlateModel             &plate,
+                       const double                  sphere_radius,
+                       const Point<2>               &impact_point,
+                       const double                  expected_radius,
+                       const double                  reference_modulus);
 
 
 
@@ -176,6 +277,67 @@ namespace fgimpact
     double                               node_offset = 0; // m
     unsigned int                         node_owner  = 0; // MPI rank
     bool                                 node_offset_note_needed = true;
+  };
+
+
+  /**
+   * The modified Hertz law with the indentation of the plate theories of
+   * the impact literature: alpha = w_ball - W_mid, W_mid the deflection of
+   * the mid-plane vertex under the impact point, so alpha no longer holds
+   * the loaded node's crater.  The force acts as a point force at the top
+   * node (as in the paper), whose mid-plane response converges under
+   * refinement.  Contact DoFs: {top node z, mid-plane node z}, the force
+   * on the first; the implicit step is the Hertz node's scalar Newton with
+   * s = c_b + C_mid,top and alpha~ = w_free + u_free,mid.
+   */
+  class HertzMidplaneContact : public ContactModel
+  {
+  public:
+    /// Throws naming Geometry/Subdivisions z if no vertex lies on the
+    /// mid-plane under the impact point.  Collective.
+    HertzMidplaneContact(const HertzContactLaw &law,
+                         const PlateModel      &plate,
+                         const Point<2>        &impact_point);
+
+    const std::vector<types::global_dof_index> &
+    contact_dofs() const override
+    {
+      return dofs;
+    }
+
+    void
+    solve_implicit(const Vector<double>     &u_free,
+                   const FullMatrix<double> &C,
+                   const double              w_free,
+                   const double              c_b,
+                   const NewtonControl      &newton,
+                   ContactState             &state) const override;
+
+    void
+    evaluate_explicit(const Vector<double> &u_c,
+                      const double          w,
+                      ContactState         &state) const override;
+
+    double
+    potential(const ContactState &state) const override;
+
+    double
+    stiffness_bound(const double mass, const double V0) const override;
+
+    std::string
+    description() const override;
+
+    std::string
+    warning() const override;
+
+    void
+    fill_results(ImpactResults &results) const override;
+
+  private:
+    const HertzContactLaw               &law;
+    const HertzNodeContact               node_contact; // the top node
+    std::vector<types::global_dof_index> dofs;
+    Point<3>                             mid_node;
   };
 } // namespace fgimpact
 

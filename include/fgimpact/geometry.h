@@ -25,6 +25,17 @@ namespace fgimpact
     free
   };
 
+  /// Where and how much to refine the mesh under the impact point.
+  struct LocalRefinement
+  {
+    /// The impact point on the top face (m).
+    Point<3> centre;
+    /// Radius (m) of the core that gets the finest cells.
+    double radius = 0;
+    /// Number of refinement levels (0: none).
+    unsigned int levels = 0;
+  };
+
   /**
    * The plate a x b x h, x and y in-plane, z through the thickness from the
    * bottom face, meshed by GridGenerator::subdivided_hyper_rectangle with
@@ -48,6 +59,12 @@ namespace fgimpact
                                               SideSupport::simply_supported,
                                               SideSupport::simply_supported,
                                               SideSupport::simply_supported}};
+      /// Support of the bottom face z = 0 (id 4): simply supported is
+      /// w = 0 only (a frictionless rigid base).
+      SideSupport bottom_support = SideSupport::free;
+      /// Contact refinement: levels and the core radius (m, 0: automatic).
+      unsigned int contact_refinement_levels = 0;
+      double       contact_refinement_radius = 0;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -67,6 +84,18 @@ namespace fgimpact
      */
     void
     create_triangulation(Triangulation<3> &triangulation) const;
+
+    /**
+     * Refine the cells near refinement.centre refinement.levels times:
+     * in pass l every cell of the finest level so far whose distance from
+     * the centre is below radius + 2 h_cell (h_cell its edge along x) is
+     * split, so the zones are nested and each level's zone extends two of
+     * its cells beyond the next; p4est keeps the mesh 2:1 balanced and the
+     * hanging nodes are constrained by the plate model.
+     */
+    static void
+    refine_locally(Triangulation<3>      &triangulation,
+                   const LocalRefinement &refinement);
 
     double
     length() const

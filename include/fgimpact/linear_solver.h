@@ -66,6 +66,24 @@ namespace fgimpact
     solve(TrilinosWrappers::MPI::Vector       &x,
           const TrilinosWrappers::MPI::Vector &b);
 
+    /// Whether solve_many() is available (cholmod: one MPI rank).
+    bool
+    can_solve_many() const
+    {
+      return cholmod != nullptr;
+    }
+
+    /**
+     * X = A^{-1} B for k right-hand sides stored column after column in
+     * arrays of n x k (n the number of DoFs): one blocked (BLAS-3)
+     * back-substitution, much faster than k single solves.  cholmod only.
+     */
+    void
+    solve_many(const std::size_t  n,
+               const unsigned int k,
+               const double      *B,
+               double            *X);
+
     /// The solver actually used ("auto" resolved).
     const std::string &
     type() const

@@ -7,6 +7,7 @@
 #include <deal.II/base/timer.h>
 
 #include <fgimpact/contact_model.h>
+#include <fgimpact/contact_output.h>
 #include <fgimpact/logger.h>
 #include <fgimpact/plate_model.h>
 #include <fgimpact/postprocessing.h>
@@ -71,6 +72,11 @@ namespace fgimpact
   const std::vector<HistoryColumn> &
   history_columns();
 
+  /// The columns a resolved contact adds after history_columns():
+  /// contact_radius_mm, max_contact_pressure_MPa, n_contact_nodes.
+  const std::vector<HistoryColumn> &
+  contact_area_columns();
+
 
 
   /**
@@ -107,6 +113,13 @@ namespace fgimpact
     /// rounding) on every rank.
     void
     add_row_observer(const RowObserver &observer);
+
+    /// With VTU output: also the ball (a sphere of the given radius, m,
+    /// first touching the top face at impact_point) and the contact nodes
+    /// (ContactVtuWriter).
+    void
+    add_contact_output(const Point<3> &impact_point,
+                       const double    sphere_radius);
 
     /// Record the state at step (time t, s) after the stepper advanced.
     void
@@ -168,7 +181,11 @@ namespace fgimpact
     PointProbe                 mid_probe, top_probe;
     std::unique_ptr<CsvWriter> history;
     std::unique_ptr<VtuWriter> vtu;
+    std::unique_ptr<ContactVtuWriter> contact_vtu;
     std::vector<RowObserver>   observers;
+    /// history_columns(), plus contact_area_columns() for a resolved
+    /// contact.
+    std::vector<HistoryColumn> columns;
     Timer                      output_timer;
     ProgressMeter              progress;
 

@@ -5,6 +5,7 @@
 
 #include <fgimpact/accuracy_preset.h>
 #include <fgimpact/contact_law.h>
+#include <fgimpact/contact_model.h>
 #include <fgimpact/geometry.h>
 #include <fgimpact/impactor.h>
 #include <fgimpact/linear_solver.h>
@@ -45,6 +46,7 @@ namespace fgimpact
     FunctionallyGradedMaterial::Parameters material;
     PlateModel::Parameters                 finite_element;
     HertzContactLaw::Parameters            contact;
+    ContactModelParameters                 contact_model;
     Impactor::Parameters                   impactor;
     TimeStepper::Parameters                time_integration;
     EffectiveMatrixSolver::Parameters      linear_solver;

@@ -52,9 +52,14 @@ namespace fgimpact
                const FunctionallyGradedMaterial &material,
                const MPI_Comm                    mpi_communicator);
 
-    /// Make the mesh, distribute DoFs, build constraints and assemble K, M.
+    /// Make the mesh (refined near the impact point as asked),
+    /// distribute DoFs, build constraints and assemble K, M.
     void
-    setup();
+    setup(const LocalRefinement &refinement = LocalRefinement());
+
+    /// The smallest cell edge along x (m), over all ranks.
+    double
+    smallest_cell_size() const;
 
     types::global_dof_index
     n_dofs() const
@@ -89,6 +94,12 @@ namespace fgimpact
     std::pair<types::global_dof_index, Point<3>>
     nearest_top_vertex_dof(const Point<2>    &xy,
                            const unsigned int component) const;
+
+    /// The vertex nearest to a point anywhere in the plate and its DoF of
+    /// the given component, the same on every MPI rank.
+    std::pair<types::global_dof_index, Point<3>>
+    nearest_vertex_dof(const Point<3>    &target,
+                       const unsigned int component) const;
 
     /**
      * The value of a (non-ghosted) distributed vector at one DoF, on every
@@ -160,6 +171,12 @@ namespace fgimpact
     }
 
   private:
+    /// Both searches above: ties broken by the coordinates.
+    std::pair<types::global_dof_index, Point<3>>
+    nearest_vertex(const Point<3>    &target,
+                   const unsigned int component,
+                   const bool         boundary_cells_only) const;
+
     void
     setup_constraints();
     void

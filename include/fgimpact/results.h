@@ -15,6 +15,9 @@ namespace fgimpact
     double       contact_duration        = 0; // s, NaN if still in contact
     double       departure_velocity      = 0; // m/s, rebound positive
     double       max_indentation         = 0; // m
+    double       max_contact_radius      = 0; // m (resolved contact)
+    double       max_contact_pressure    = 0; // Pa (resolved contact)
+    unsigned int max_contact_nodes       = 0; // (resolved contact)
     double       max_midplane_deflection = 0; // m
     double       max_top_deflection      = 0; // m
     double       contact_stiffness       = 0; // N/m^1.5 (beta K_h)
@@ -24,6 +27,7 @@ namespace fgimpact
     double       impulse                 = 0; // N s, int F dt
     double       contact_node_offset     = 0; // m, node to impact point
     unsigned int contact_node_owner      = 0; // MPI rank owning its DoF
+    unsigned int n_contact_candidates    = 1; // DoFs of the contact model
     unsigned int n_mpi_ranks             = 1;
     double       max_energy_drift        = 0; // relative
     /// |int F dt - m (V0 - v_end)| / (m V0): an identity of the impactor's

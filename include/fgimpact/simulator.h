@@ -19,6 +19,18 @@ namespace fgimpact
   using namespace dealii;
 
   /**
+   * The largest contact radius to expect (m): for an impact the rigid ball
+   * on a half-space of the top face's modulus
+   * (hertz_impact_contact_radius()), for a static sphere indentation delta
+   * sqrt(R delta).  Sizes the contact refinement and the resolved
+   * contact's candidate set.
+   */
+  double
+  expected_contact_radius(const Parameters                 &parameters,
+                          const FunctionallyGradedMaterial &material,
+                          const double                      thickness);
+
+  /**
    * The program: parameters -> plate model (geometry, material, mesh and
    * matrices, shared by all problem types) -> the driver of the problem
    * type (impact, static or modal), which writes the outputs.
@@ -52,6 +64,11 @@ namespace fgimpact
     add_history_observer(const ImpactMonitor::RowObserver &observer);
 
   private:
+    /// Geometry/Contact refinement *: centre, radius (automatic from
+    /// expected_contact_radius()) and levels.
+    LocalRefinement
+    contact_refinement() const;
+
     const Parameters   parameters;
     const MPI_Comm     mpi_communicator;
     ConditionalOStream pcout;

@@ -153,7 +153,7 @@ namespace fgimpact
   create_time_stepper(const TimeStepper::Parameters           &parameters,
                       const EffectiveMatrixSolver::Parameters &solver,
                       const PlateModel                        &plate,
-                      const ContactModel                      &contact,
+                      ContactModel                            &contact,
                       const double                             impactor_mass,
                       const double                             impact_velocity);
 } // namespace fgimpact

@@ -40,7 +40,7 @@ main(int argc, char **argv)
                    material,
                    MPI_COMM_WORLD);
   plate.setup();
-  const HertzNodeContact contact_model(law,
+  HertzNodeContact contact_model(law,
                                        plate,
                                        impactor.impact_point(0.2, 0.1));
   const auto             contact_dof = contact_model.contact_dofs()[0];
