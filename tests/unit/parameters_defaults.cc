@@ -54,6 +54,9 @@ main()
   SAME(geometry.subdivisions_y);
   SAME(geometry.subdivisions_z);
   SAME(geometry.supports);
+  SAME(geometry.bottom_support);
+  SAME(geometry.contact_refinement_levels);
+  SAME(geometry.contact_refinement_radius);
   SAME(material.metal_youngs_modulus);
   SAME(material.metal_density);
   SAME(material.ceramic_youngs_modulus);
@@ -65,6 +68,10 @@ main()
   SAME(contact.plate_modulus);
   SAME(contact.swanson_beta);
   SAME(contact.given_stiffness);
+  SAME(contact_model.model);
+  SAME(contact_model.paraboloid_gap);
+  SAME(contact_model.modified_mass);
+  SAME(contact_model.candidate_radius);
   SAME(impactor.radius);
   SAME(impactor.density);
   SAME(impactor.given_mass);
@@ -91,6 +98,7 @@ main()
   SAME(static_analysis.load);
   SAME(static_analysis.pressure);
   SAME(static_analysis.point_force);
+  SAME(static_analysis.indentation);
   SAME(modal.n_modes);
   SAME(modal.shift);
   SAME(modal.tolerance);
