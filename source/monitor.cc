@@ -51,6 +51,7 @@ namespace fgimpact
                         "default), default (zlib's compromise) or best "
                         "(smallest files, several times slower).  The values "
                         "in the files are the same at every level.");
+      VtuFields::declare_parameters(prm);
     }
     prm.leave_subsection();
   }
@@ -73,6 +74,7 @@ namespace fgimpact
       level == "default" ? DataOutBase::VtkFlags::default_compression :
       level == "best"    ? DataOutBase::VtkFlags::best_compression :
                            DataOutBase::VtkFlags::best_speed;
+    vtu_fields.parse_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -186,7 +188,8 @@ namespace fgimpact
     if (parameters.vtu_interval > 0)
       vtu = std::make_unique<VtuWriter>(plate,
                                         parameters.directory,
-                                        parameters.vtu_compression);
+                                        parameters.vtu_compression,
+                                        parameters.vtu_fields);
   }
 
 
@@ -348,7 +351,7 @@ namespace fgimpact
     if (vtu)
       {
         output_timer.start();
-        vtu->finish();
+        vtu->write_peak_fields();
         output_timer.stop();
       }
   }
