@@ -243,7 +243,8 @@ namespace fgimpact
         summary.write(directory + "/summary.txt");
       }
     // Mode shapes scaled to a unit maximum displacement, as VTU "time"
-    // steps 1..N (ParaView's time bar then steps through the modes).
+    // steps 1..N, the mode numbers (ParaView's time bar then steps through
+    // the modes), with the frequency as the field frequency_Hz.
     TrilinosWrappers::MPI::Vector zero;
     plate.initialize_vector(zero);
     VtuWriter vtu(plate, directory, vtu_compression);
@@ -251,7 +252,8 @@ namespace fgimpact
       {
         TrilinosWrappers::MPI::Vector shape = shapes[j];
         shape /= shape.linfty_norm();
-        vtu.write(j + 1, modes[j].frequency, shape, zero);
+        vtu.write(
+          j + 1, j + 1, shape, zero, {"frequency_Hz", modes[j].frequency});
       }
     vtu.finish();
   }

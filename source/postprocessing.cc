@@ -191,10 +191,11 @@ namespace fgimpact
 
 
   void
-  VtuWriter::write(const unsigned int                   step,
-                   const double                         t,
-                   const TrilinosWrappers::MPI::Vector &u,
-                   const TrilinosWrappers::MPI::Vector &v)
+  VtuWriter::write(const unsigned int                    step,
+                   const double                          t,
+                   const TrilinosWrappers::MPI::Vector  &u,
+                   const TrilinosWrappers::MPI::Vector  &v,
+                   const std::pair<std::string, double> &constant_field)
   {
     finish(); // the previous snapshot still reads u_ghosted, v_ghosted
     u_ghosted = u;
@@ -210,7 +211,14 @@ namespace fgimpact
     // DataOut on the distributed mesh makes MPI calls of its own, which
     // collided with the time loop's collectives (MPI_ERR_TRUNCATE, or a
     // hang inside MUMPS): there the snapshot is written synchronously.
-    auto write_files = [this, t, step, rank, n_ranks, base, record]() {
+    auto write_files = [this,
+                        t,
+                        step,
+                        rank,
+                        n_ranks,
+                        base,
+                        record,
+                        constant_field]() {
       const std::vector<
         DataComponentInterpretation::DataComponentInterpretation>
                  vector_field(3,
@@ -230,6 +238,16 @@ namespace fgimpact
       if (fields.cell_stress || fields.material)
         data_out.add_data_vector(u_ghosted, postprocessor);
       add_recovered_fields(data_out);
+      Vector<double> constant;
+      if (!constant_field.first.empty())
+        {
+          constant.reinit(
+            plate.get_dof_handler().get_triangulation().n_active_cells());
+          constant = constant_field.second;
+          data_out.add_data_vector(constant,
+                                   constant_field.first,
+                                   DataOut<3>::type_cell_data);
+        }
       data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
 
       DataOutBase::VtkFlags flags;

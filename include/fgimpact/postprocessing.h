@@ -116,13 +116,16 @@ namespace fgimpact
      * Write one snapshot at time t (s); u, v in m and m/s.  The vectors
      * are copied and the patches are built and written in a background
      * task, off the time loop's critical path; the next call (or the
-     * destructor) waits for it.
+     * destructor) waits for it.  A non-empty constant_field (name, value)
+     * adds a field of that value on every cell (the modal analysis's
+     * frequency_Hz).
      */
     void
-    write(const unsigned int                   step,
-          const double                         t,
-          const TrilinosWrappers::MPI::Vector &u,
-          const TrilinosWrappers::MPI::Vector &v);
+    write(const unsigned int                    step,
+          const double                          t,
+          const TrilinosWrappers::MPI::Vector  &u,
+          const TrilinosWrappers::MPI::Vector  &v,
+          const std::pair<std::string, double> &constant_field = {});
 
     /// Wait for the pending snapshot, rethrowing its errors.
     void
