@@ -217,7 +217,8 @@ namespace fgimpact
   void
   ModalAnalysis::write_output(
     const std::string                                &directory,
-    const DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression) const
+    const DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression,
+    const VtuFields                                  &fields) const
   {
     if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
       {
@@ -247,7 +248,7 @@ namespace fgimpact
     // the modes), with the frequency as the field frequency_Hz.
     TrilinosWrappers::MPI::Vector zero;
     plate.initialize_vector(zero);
-    VtuWriter vtu(plate, directory, vtu_compression);
+    VtuWriter vtu(plate, directory, vtu_compression, fields);
     for (unsigned int j = 0; j < shapes.size(); ++j)
       {
         TrilinosWrappers::MPI::Vector shape = shapes[j];

@@ -49,7 +49,8 @@ namespace fgimpact
                                 impactor.impact_point(g.length(), g.width()));
         analysis.solve();
         analysis.write_output(parameters.output.directory,
-                              parameters.output.vtu_compression);
+                              parameters.output.vtu_compression,
+                              parameters.output.vtu_fields);
         const auto &r = analysis.get_results();
         char        line[300];
         std::snprintf(line,
@@ -84,7 +85,8 @@ namespace fgimpact
                                plate);
         analysis.solve();
         analysis.write_output(parameters.output.directory,
-                              parameters.output.vtu_compression);
+                              parameters.output.vtu_compression,
+                              parameters.output.vtu_fields);
         pcout << "  " << analysis.get_modes().size() << " modes after "
               << analysis.n_iterations() << " subspace iterations:\n";
         for (unsigned int j = 0; j < analysis.get_modes().size(); ++j)
