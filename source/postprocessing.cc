@@ -198,8 +198,9 @@ namespace fgimpact
                    const std::pair<std::string, double> &constant_field)
   {
     finish(); // the previous snapshot still reads u_ghosted, v_ghosted
-    u_ghosted = u;
-    v_ghosted = v;
+    any_written = true;
+    u_ghosted   = u;
+    v_ghosted   = v;
 
     const MPI_Comm     comm    = plate.get_mpi_communicator();
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
@@ -326,7 +327,8 @@ namespace fgimpact
   VtuWriter::write_peak_fields()
   {
     finish();
-    if (!fields.peak || !recovery || times_and_names.empty())
+    // Every rank decides alike (times_and_names is kept on rank 0 only).
+    if (!fields.peak || !recovery || !any_written)
       return;
     const MPI_Comm     comm    = plate.get_mpi_communicator();
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);

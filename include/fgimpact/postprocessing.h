@@ -152,6 +152,7 @@ namespace fgimpact
     TrilinosWrappers::MPI::Vector               u_ghosted, v_ghosted;
     std::vector<std::pair<double, std::string>> times_and_names;
     std::future<void>                           pending;
+    bool                                        any_written = false;
 
     const DataOutBase::VtkFlags::ZlibCompressionLevel compression;
   };
