@@ -218,7 +218,8 @@ namespace fgimpact
   void
   ModalAnalysis::write_output(
     const std::string                                &directory,
-    const DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression) const
+    const DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression,
+    const VtuFields                                  &fields) const
   {
     if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
       {
@@ -245,15 +246,17 @@ namespace fgimpact
         summary.write(directory + "/summary.txt");
       }
     // Mode shapes scaled to a unit maximum displacement, as VTU "time"
-    // steps 1..N (ParaView's time bar then steps through the modes).
+    // steps 1..N, the mode numbers (ParaView's time bar then steps through
+    // the modes), with the frequency as the field frequency_Hz.
     TrilinosWrappers::MPI::Vector zero;
     plate.initialize_vector(zero);
-    VtuWriter vtu(plate, directory, vtu_compression);
+    VtuWriter vtu(plate, directory, vtu_compression, fields);
     for (unsigned int j = 0; j < shapes.size(); ++j)
       {
         TrilinosWrappers::MPI::Vector shape = shapes[j];
         shape /= shape.linfty_norm();
-        vtu.write(j + 1, modes[j].frequency, shape, zero);
+        vtu.write(
+          j + 1, j + 1, shape, zero, {"frequency_Hz", modes[j].frequency});
       }
     vtu.finish();
   }

@@ -60,9 +60,11 @@ namespace fgimpact
                         "program writes from Directory (history.csv, "
                         "summary.txt, parameters.prm, input.prm, log.txt, "
                         "frequencies.csv, solution.pvd, solution_*.vtu/"
-                        ".pvtu), so that no file of an earlier run is mixed "
+                        ".pvtu, sphere and contact series, peak_fields, "
+                        "contact_pressure.csv), so that no file of an earlier run is mixed "
                         "with the new ones. false: refuse a Directory that "
                         "is not empty.");
+      VtuFields::declare_parameters(prm);
     }
     prm.leave_subsection();
   }
@@ -86,6 +88,7 @@ namespace fgimpact
       level == "best"    ? DataOutBase::VtkFlags::best_compression :
                            DataOutBase::VtkFlags::best_speed;
     overwrite = prm.get_bool("Overwrite");
+    vtu_fields.parse_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -224,7 +227,8 @@ namespace fgimpact
     if (parameters.vtu_interval > 0)
       vtu = std::make_unique<VtuWriter>(plate,
                                         parameters.directory,
-                                        parameters.vtu_compression);
+                                        parameters.vtu_compression,
+                                        parameters.vtu_fields);
   }
 
 
@@ -468,7 +472,7 @@ namespace fgimpact
         if (contact_vtu)
           contact_vtu->finish();
         if (vtu)
-          vtu->finish();
+          vtu->write_peak_fields(); // finishes the series first
         if (history)
           history->flush();
       }

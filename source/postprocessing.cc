@@ -8,15 +8,20 @@
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/run_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
 
 namespace fgimpact
 {
-  StressPostprocessor::StressPostprocessor(const PlateModel &plate)
+  StressPostprocessor::StressPostprocessor(const PlateModel &plate,
+                                           const bool        with_stress,
+                                           const bool        with_material)
     : properties(plate.get_fe().base_element(0), {}, plate.get_material())
     , hooke(plate.get_material())
+    , with_stress(with_stress)
+    , with_material(with_material)
   {}
 
 
@@ -24,10 +29,17 @@ namespace fgimpact
   std::vector<std::string>
   StressPostprocessor::get_names() const
   {
-    std::vector<std::string> names(9, "stress_MPa");
-    names.emplace_back("von_mises_MPa");
-    names.emplace_back("youngs_modulus_GPa");
-    names.emplace_back("density_kg_m3");
+    std::vector<std::string> names;
+    if (with_stress)
+      {
+        names.resize(9, "stress_MPa");
+        names.emplace_back("cell_von_mises_MPa");
+      }
+    if (with_material)
+      {
+        names.emplace_back("youngs_modulus_GPa");
+        names.emplace_back("density_kg_m3");
+      }
     return names;
   }
 
@@ -37,9 +49,12 @@ namespace fgimpact
   StressPostprocessor::get_data_component_interpretation() const
   {
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
-      interpretation(9,
-                     DataComponentInterpretation::component_is_part_of_tensor);
-    interpretation.resize(12, DataComponentInterpretation::component_is_scalar);
+      interpretation;
+    if (with_stress)
+      interpretation.resize(
+        9, DataComponentInterpretation::component_is_part_of_tensor);
+    interpretation.resize(get_names().size(),
+                          DataComponentInterpretation::component_is_scalar);
     return interpretation;
   }
 
@@ -63,22 +78,74 @@ namespace fgimpact
       {
         const auto [E, rho] =
           properties.value_at(cell, inputs.evaluation_points[p]);
+        unsigned int k = 0;
+        if (with_stress)
+          {
+            SymmetricTensor<2, 3> eps;
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = a; b < 3; ++b)
+                eps[a][b] = 0.5 * (inputs.solution_gradients[p][a][b] +
+                                   inputs.solution_gradients[p][b][a]);
+            const SymmetricTensor<2, 3> sigma = hooke.stress(E, eps);
+            const SymmetricTensor<2, 3> s     = deviator(sigma);
 
-        SymmetricTensor<2, 3> eps;
-        for (unsigned int a = 0; a < 3; ++a)
-          for (unsigned int b = a; b < 3; ++b)
-            eps[a][b] = 0.5 * (inputs.solution_gradients[p][a][b] +
-                               inputs.solution_gradients[p][b][a]);
-        const SymmetricTensor<2, 3> sigma = hooke.stress(E, eps);
-        const SymmetricTensor<2, 3> s     = deviator(sigma);
-
-        for (unsigned int a = 0; a < 3; ++a)
-          for (unsigned int b = 0; b < 3; ++b)
-            computed_quantities[p][3 * a + b] = sigma[a][b] * 1e-6;
-        computed_quantities[p][9]  = std::sqrt(1.5 * (s * s)) * 1e-6;
-        computed_quantities[p][10] = E * 1e-9;
-        computed_quantities[p][11] = rho;
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = 0; b < 3; ++b)
+                computed_quantities[p][k++] = sigma[a][b] * 1e-6;
+            computed_quantities[p][k++] = std::sqrt(1.5 * (s * s)) * 1e-6;
+          }
+        if (with_material)
+          {
+            computed_quantities[p][k++] = E * 1e-9;
+            computed_quantities[p][k++] = rho;
+          }
       }
+  }
+
+
+
+  void
+  VtuFields::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Fields",
+      "displacement, velocity, stress, von_mises, principal, material, peak",
+      Patterns::MultipleSelection("displacement|velocity|stress|von_mises|"
+                                  "principal|strain|cell_stress|material|peak"),
+      "The fields of the VTU files, a comma-separated list of: "
+      "displacement (displacement_m, m), velocity (velocity_m_s, m/s), "
+      "stress (the recovered, continuous stress by nodal averaging: "
+      "sigma_xx_MPa, sigma_yy_MPa, sigma_zz_MPa, sigma_xy_MPa, sigma_xz_MPa, "
+      "sigma_yz_MPa, MPa), von_mises (recovered von_mises_MPa, MPa), "
+      "principal (recovered principal stresses sigma_1_MPa >= sigma_2_MPa "
+      ">= sigma_3_MPa, MPa), strain (recovered strain_xx ... strain_yz, "
+      "tensor components, dimensionless), cell_stress (the per-cell, "
+      "discontinuous stress tensor stress_MPa with components 0..8 = xx, "
+      "xy, xz, yx, yy, yz, zx, zy, zz and cell_von_mises_MPa, MPa), "
+      "material (youngs_modulus_GPa in GPa, density_kg_m3 in kg/m^3), peak "
+      "(impact runs: peak_fields.vtu at the end, the nodal maxima over the "
+      "VTU snapshots of the recovered von Mises stress and |sigma_zz|, "
+      "MPa).");
+  }
+
+
+
+  void
+  VtuFields::parse_parameters(ParameterHandler &prm)
+  {
+    const auto list = Utilities::split_string_list(prm.get("Fields"));
+    auto       has  = [&list](const std::string &name) {
+      return std::find(list.begin(), list.end(), name) != list.end();
+    };
+    displacement = has("displacement");
+    velocity     = has("velocity");
+    stress       = has("stress");
+    von_mises    = has("von_mises");
+    principal    = has("principal");
+    strain       = has("strain");
+    cell_stress  = has("cell_stress");
+    material     = has("material");
+    peak         = has("peak");
   }
 
 
@@ -86,10 +153,14 @@ namespace fgimpact
   VtuWriter::VtuWriter(
     const PlateModel                                 &plate,
     const std::string                                &directory,
-    const DataOutBase::VtkFlags::ZlibCompressionLevel compression)
+    const DataOutBase::VtkFlags::ZlibCompressionLevel compression,
+    const VtuFields                                  &fields)
     : plate(plate)
     , directory(directory)
-    , postprocessor(plate)
+    , fields(fields)
+    , postprocessor(plate, fields.cell_stress, fields.material)
+    , recovery(fields.recovered() ? std::make_unique<StressRecovery>(plate) :
+                                    nullptr)
     , compression(compression)
   {
     // DataOut reads ghost values: ghosted copies, allocated once.
@@ -130,14 +201,16 @@ namespace fgimpact
 
 
   void
-  VtuWriter::write(const unsigned int                   step,
-                   const double                         t,
-                   const TrilinosWrappers::MPI::Vector &u,
-                   const TrilinosWrappers::MPI::Vector &v)
+  VtuWriter::write(const unsigned int                    step,
+                   const double                          t,
+                   const TrilinosWrappers::MPI::Vector  &u,
+                   const TrilinosWrappers::MPI::Vector  &v,
+                   const std::pair<std::string, double> &constant_field)
   {
     finish(); // the previous snapshot still reads u_ghosted, v_ghosted
-    u_ghosted = u;
-    v_ghosted = v;
+    any_written = true;
+    u_ghosted   = u;
+    v_ghosted   = v;
 
     const MPI_Comm     comm    = plate.get_mpi_communicator();
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
@@ -149,22 +222,43 @@ namespace fgimpact
     // DataOut on the distributed mesh makes MPI calls of its own, which
     // collided with the time loop's collectives (MPI_ERR_TRUNCATE, or a
     // hang inside MUMPS): there the snapshot is written synchronously.
-    auto write_files = [this, t, step, rank, n_ranks, base, record]() {
+    auto write_files = [this,
+                        t,
+                        step,
+                        rank,
+                        n_ranks,
+                        base,
+                        record,
+                        constant_field]() {
       const std::vector<
         DataComponentInterpretation::DataComponentInterpretation>
                  vector_field(3,
                      DataComponentInterpretation::component_is_part_of_vector);
       DataOut<3> data_out;
       data_out.attach_dof_handler(plate.get_dof_handler());
-      data_out.add_data_vector(u_ghosted,
-                               std::vector<std::string>(3, "displacement_m"),
-                               DataOut<3>::type_dof_data,
-                               vector_field);
-      data_out.add_data_vector(v_ghosted,
-                               std::vector<std::string>(3, "velocity_m_s"),
-                               DataOut<3>::type_dof_data,
-                               vector_field);
-      data_out.add_data_vector(u_ghosted, postprocessor);
+      if (fields.displacement)
+        data_out.add_data_vector(u_ghosted,
+                                 std::vector<std::string>(3, "displacement_m"),
+                                 DataOut<3>::type_dof_data,
+                                 vector_field);
+      if (fields.velocity)
+        data_out.add_data_vector(v_ghosted,
+                                 std::vector<std::string>(3, "velocity_m_s"),
+                                 DataOut<3>::type_dof_data,
+                                 vector_field);
+      if (fields.cell_stress || fields.material)
+        data_out.add_data_vector(u_ghosted, postprocessor);
+      add_recovered_fields(data_out);
+      Vector<double> constant;
+      if (!constant_field.first.empty())
+        {
+          constant.reinit(
+            plate.get_dof_handler().get_triangulation().n_active_cells());
+          constant = constant_field.second;
+          data_out.add_data_vector(constant,
+                                   constant_field.first,
+                                   DataOut<3>::type_cell_data);
+        }
       data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
 
       DataOutBase::VtkFlags flags;
@@ -214,6 +308,81 @@ namespace fgimpact
     record_pending = (rank == 0);
     if (n_ranks > 1)
       finish();
+  }
+
+
+
+  void
+  VtuWriter::add_recovered_fields(DataOut<3> &data_out)
+  {
+    if (!recovery)
+      return;
+    recovery->recover(u_ghosted);
+    using F = StressRecovery::Field;
+    std::vector<F> selected;
+    if (fields.stress)
+      selected.insert(selected.end(),
+                      {F::stress_xx,
+                       F::stress_yy,
+                       F::stress_zz,
+                       F::stress_xy,
+                       F::stress_xz,
+                       F::stress_yz});
+    if (fields.von_mises)
+      selected.push_back(F::von_mises);
+    if (fields.principal)
+      selected.insert(selected.end(),
+                      {F::principal_1, F::principal_2, F::principal_3});
+    if (fields.strain)
+      selected.insert(selected.end(),
+                      {F::strain_xx,
+                       F::strain_yy,
+                       F::strain_zz,
+                       F::strain_xy,
+                       F::strain_xz,
+                       F::strain_yz});
+    for (const F f : selected)
+      data_out.add_data_vector(recovery->get_dof_handler(),
+                               recovery->field(f),
+                               StressRecovery::name(f));
+  }
+
+
+
+  void
+  VtuWriter::write_peak_fields()
+  {
+    finish();
+    // Every rank decides alike (times_and_names is kept on rank 0 only).
+    if (!fields.peak || !recovery || !any_written)
+      return;
+    const MPI_Comm     comm    = plate.get_mpi_communicator();
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+
+    DataOut<3> data_out;
+    data_out.attach_dof_handler(recovery->get_dof_handler());
+    for (const auto f :
+         {StressRecovery::peak_von_mises, StressRecovery::peak_abs_stress_zz})
+      data_out.add_data_vector(recovery->field(f), StressRecovery::name(f));
+    data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = compression;
+    data_out.set_flags(flags);
+
+    const std::string base = "peak_fields";
+    std::ofstream     piece(directory + "/" + base + "." +
+                        Utilities::int_to_string(rank) + ".vtu");
+    data_out.write_vtu(piece);
+    AssertThrow(piece, ExcMessage("cannot write " + base + ".vtu"));
+    if (rank == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(base + "." + Utilities::int_to_string(r) + ".vtu");
+        std::ofstream pvtu(directory + "/" + base + ".pvtu");
+        data_out.write_pvtu_record(pvtu, pieces);
+      }
   }
 
 

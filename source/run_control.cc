@@ -52,9 +52,10 @@ namespace fgimpact
           name == "parameters.prm" || name == "frequencies.csv" ||
           name == "solution.pvd" || name == "log.txt" || name == "input.prm" ||
           name == "sphere.pvd" || name == "contact.pvd" ||
-          name == "contact_pressure.csv")
+          name == "contact_pressure.csv" || name == "peak_fields.pvtu")
         return true;
-      for (const std::string series : {"solution_", "sphere_", "contact_"})
+      for (const std::string series :
+           {"solution_", "sphere_", "contact_", "peak_fields."})
         if (name.rfind(series, 0) == 0 &&
             (ends_with(name, ".vtu") || ends_with(name, ".pvtu")))
           return true;

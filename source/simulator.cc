@@ -82,7 +82,8 @@ namespace fgimpact
                                 indenter);
         solve_in_phase("static solve", [&]() { analysis.solve(); });
         analysis.write_output(parameters.output.directory,
-                              parameters.output.vtu_compression);
+                              parameters.output.vtu_compression,
+                              parameters.output.vtu_fields);
         const auto &r = analysis.get_results();
         char        line[300];
         std::snprintf(line,
@@ -131,7 +132,8 @@ namespace fgimpact
                                plate);
         solve_in_phase("modal subspace iteration", [&]() { analysis.solve(); });
         analysis.write_output(parameters.output.directory,
-                              parameters.output.vtu_compression);
+                              parameters.output.vtu_compression,
+                              parameters.output.vtu_fields);
         pcout << "  " << analysis.get_modes().size() << " modes after "
               << analysis.n_iterations() << " subspace iterations:\n";
         for (unsigned int j = 0; j < analysis.get_modes().size(); ++j)

@@ -252,7 +252,8 @@ namespace fgimpact
   void
   StaticAnalysis::write_output(
     const std::string                                &directory,
-    const DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression) const
+    const DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression,
+    const VtuFields                                  &fields) const
   {
     if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
       {
@@ -289,7 +290,7 @@ namespace fgimpact
       }
     TrilinosWrappers::MPI::Vector zero;
     plate.initialize_vector(zero);
-    VtuWriter vtu(plate, directory, vtu_compression);
+    VtuWriter vtu(plate, directory, vtu_compression, fields);
     vtu.write(0, 0., u, zero);
     vtu.finish();
   }

@@ -37,6 +37,8 @@ namespace fgimpact
     /// Entry "VTU compression" (zlib level of the VTU data).
     DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression =
       DataOutBase::VtkFlags::best_speed;
+    /// Entry "Fields" (what the VTU files hold).
+    VtuFields vtu_fields;
 
     static void
     declare_parameters(ParameterHandler &prm);

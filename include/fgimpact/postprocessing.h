@@ -2,16 +2,20 @@
 #define fgimpact_postprocessing_h
 
 #include <deal.II/base/data_out_base.h>
+#include <deal.II/base/parameter_handler.h>
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
 #include <fgimpact/plate_model.h>
+#include <fgimpact/stress_recovery.h>
 
 #include <chrono>
 #include <fstream>
 #include <future>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,11 +28,17 @@ namespace fgimpact
    * Stress tensor (MPa), von Mises stress (MPa), E (GPa) and rho (kg/m^3)
    * from the displacement, for DataOut.  E and the stress come from the
    * same PropertyInterpolator and HookeLaw as the assembly and the probes.
+   * This is the per-cell (discontinuous) stress; the continuous one is
+   * StressRecovery's.  The tensor's components 0..8 are xx, xy, xz, yx,
+   * yy, yz, zx, zy, zz (row by row).  With with_stress = false only E and
+   * rho, with with_material = false only the stress and von Mises.
    */
   class StressPostprocessor : public DataPostprocessor<3>
   {
   public:
-    explicit StressPostprocessor(const PlateModel &plate);
+    explicit StressPostprocessor(const PlateModel &plate,
+                                 const bool        with_stress   = true,
+                                 const bool        with_material = true);
 
     void
     evaluate_vector_field(
@@ -47,6 +57,40 @@ namespace fgimpact
   private:
     const PropertyInterpolator properties;
     const HookeLaw             hooke;
+    const bool                 with_stress, with_material;
+  };
+
+
+
+  /**
+   * Entry "Fields" of subsection "Output": which fields the VTU files
+   * hold (a comma-separated list).
+   */
+  struct VtuFields
+  {
+    bool displacement = true;  // displacement_m (m)
+    bool velocity     = true;  // velocity_m_s (m/s)
+    bool stress       = true;  // recovered sigma_xx_MPa ... sigma_yz_MPa
+    bool von_mises    = true;  // recovered von_mises_MPa
+    bool principal    = true;  // recovered sigma_1_MPa >= sigma_2 >= sigma_3
+    bool strain       = false; // recovered strain_xx ... strain_yz
+    bool cell_stress  = false; // per-cell stress_MPa tensor, von Mises
+    bool material     = true;  // youngs_modulus_GPa, density_kg_m3
+    bool peak         = true;  // peak_fields.vtu at the end of an impact
+
+    /// Declare "Fields" in the current subsection.
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /// Parse "Fields" of the current subsection.
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether any recovered (nodal) field is needed.
+    bool
+    recovered() const
+    {
+      return stress || von_mises || principal || strain || peak;
+    }
   };
 
 
@@ -65,7 +109,8 @@ namespace fgimpact
     VtuWriter(const PlateModel                                 &plate,
               const std::string                                &directory,
               const DataOutBase::VtkFlags::ZlibCompressionLevel compression =
-                DataOutBase::VtkFlags::best_speed);
+                DataOutBase::VtkFlags::best_speed,
+              const VtuFields &fields = VtuFields());
 
     /// Waits for the last snapshot to be written.
     ~VtuWriter();
@@ -74,28 +119,46 @@ namespace fgimpact
      * Write one snapshot at time t (s); u, v in m and m/s.  The vectors
      * are copied and the patches are built and written in a background
      * task, off the time loop's critical path; the next call (or the
-     * destructor) waits for it.
+     * destructor) waits for it.  A non-empty constant_field (name, value)
+     * adds a field of that value on every cell (the modal analysis's
+     * frequency_Hz).
      */
     void
-    write(const unsigned int                   step,
-          const double                         t,
-          const TrilinosWrappers::MPI::Vector &u,
-          const TrilinosWrappers::MPI::Vector &v);
+    write(const unsigned int                    step,
+          const double                          t,
+          const TrilinosWrappers::MPI::Vector  &u,
+          const TrilinosWrappers::MPI::Vector  &v,
+          const std::pair<std::string, double> &constant_field = {});
 
     /// Wait for the pending snapshot, rethrowing its errors, and list it
     /// in the PVD.
     void
     finish();
 
+    /**
+     * If the fields include "peak" and snapshots were written: write
+     * peak_fields.vtu (and .pvtu), the nodal maxima over the snapshots of
+     * the recovered von Mises stress and |sigma_zz| (MPa).  Waits for the
+     * pending snapshot first.
+     */
+    void
+    write_peak_fields();
+
   private:
+    void
+    add_recovered_fields(DataOut<3> &data_out);
+
     const PlateModel                           &plate;
     const std::string                           directory;
+    const VtuFields                             fields;
     StressPostprocessor                         postprocessor;
+    std::unique_ptr<StressRecovery>             recovery;
     TrilinosWrappers::MPI::Vector               u_ghosted, v_ghosted;
     std::vector<std::pair<double, std::string>> times_and_names;
     std::pair<double, std::string>              pending_record;
     bool                                        record_pending = false;
     std::future<void>                           pending;
+    bool                                        any_written = false;
 
     const DataOutBase::VtkFlags::ZlibCompressionLevel compression;
   };

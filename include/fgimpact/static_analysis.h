@@ -8,6 +8,7 @@
 
 #include <fgimpact/linear_solver.h>
 #include <fgimpact/plate_model.h>
+#include <fgimpact/postprocessing.h>
 
 #include <string>
 #include <vector>
@@ -100,7 +101,8 @@ namespace fgimpact
     void
     write_output(const std::string &directory,
                  const DataOutBase::VtkFlags::ZlibCompressionLevel
-                   vtu_compression = DataOutBase::VtkFlags::best_speed) const;
+                   vtu_compression       = DataOutBase::VtkFlags::best_speed,
+                 const VtuFields &fields = VtuFields()) const;
 
   private:
     void

@@ -1,0 +1,106 @@
+#ifndef fgimpact_stress_recovery_h
+#define fgimpact_stress_recovery_h
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/plate_model.h>
+
+#include <array>
+#include <string>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * Continuous (recovered) stress and strain by nodal averaging: at every
+   * support point of the scalar element FE_Q(p) (the mesh vertices for
+   * p = 1), the average over the cells meeting there of each cell's strain
+   * and stress evaluated at that point.  E comes from the same
+   * PropertyInterpolator and the stress from the same HookeLaw as in the
+   * assembly and PointProbe, so at a vertex the recovered stress is the
+   * probe's value (the probe also averages over the adjacent cells).
+   *
+   * The fields live on a scalar DoFHandler on the plate's mesh (ghosted,
+   * ready for DataOut).  Field order: the stress components xx, yy, zz, xy,
+   * xz, yz (MPa), von Mises (MPa), the principal stresses
+   * sigma_1 >= sigma_2 >= sigma_3 (MPa), the strain components xx, yy, zz,
+   * xy, xz, yz (tensor components, dimensionless), and the peak over the
+   * recover() calls so far of von Mises and of |sigma_zz| (MPa).
+   *
+   * recover() is collective under MPI.
+   */
+  class StressRecovery
+  {
+  public:
+    enum Field : unsigned int
+    {
+      stress_xx,
+      stress_yy,
+      stress_zz,
+      stress_xy,
+      stress_xz,
+      stress_yz,
+      von_mises,
+      principal_1,
+      principal_2,
+      principal_3,
+      strain_xx,
+      strain_yy,
+      strain_zz,
+      strain_xy,
+      strain_xz,
+      strain_yz,
+      peak_von_mises,
+      peak_abs_stress_zz,
+      n_fields
+    };
+
+    explicit StressRecovery(const PlateModel &plate);
+
+    /// Recover all fields from the ghosted displacement u (m) and update
+    /// the peak fields.
+    void
+    recover(const TrilinosWrappers::MPI::Vector &u_ghosted);
+
+    /// The scalar DoFHandler the fields live on.
+    const DoFHandler<3> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    /// A field (ghosted), in the units above.
+    const TrilinosWrappers::MPI::Vector &
+    field(const Field f) const
+    {
+      return ghosted[f];
+    }
+
+    /// The name of a field as written to VTU (unit in the name).
+    static std::string
+    name(const Field f);
+
+    /// The recovered stress tensor (Pa) at a locally relevant scalar DoF.
+    SymmetricTensor<2, 3>
+    stress(const types::global_dof_index dof) const;
+
+  private:
+    const PlateModel &plate;
+    DoFHandler<3>     dof_handler;
+    IndexSet          owned, relevant;
+    /// 1 / (number of cells sharing each owned scalar DoF).
+    TrilinosWrappers::MPI::Vector inverse_count;
+    /// Per-cell sums (writable ghosts), 6 stress + 6 strain components.
+    std::array<TrilinosWrappers::MPI::Vector, 12>       sums;
+    std::array<TrilinosWrappers::MPI::Vector, n_fields> owned_values;
+    std::array<TrilinosWrappers::MPI::Vector, n_fields> ghosted;
+    unsigned int                                        n_recovered = 0;
+  };
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,180 @@
+#include <deal.II/base/quadrature.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <fgimpact/constitutive_law.h>
+#include <fgimpact/stress_recovery.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /// (row, column) of the six independent components in field order.
+    constexpr unsigned int component[6][2] =
+      {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+  } // namespace
+
+
+
+  StressRecovery::StressRecovery(const PlateModel &plate)
+    : plate(plate)
+    , dof_handler(plate.get_dof_handler().get_triangulation())
+  {
+    dof_handler.distribute_dofs(plate.get_fe().base_element(0));
+    owned = dof_handler.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    const MPI_Comm comm = plate.get_mpi_communicator();
+
+    for (auto &v : sums)
+      v.reinit(owned, relevant, comm, /*vector_writable=*/true);
+    for (unsigned int f = 0; f < n_fields; ++f)
+      {
+        owned_values[f].reinit(owned, comm);
+        ghosted[f].reinit(owned, relevant, comm);
+      }
+
+    // How many locally owned cells, on any rank, share each scalar DoF.
+    TrilinosWrappers::MPI::Vector count;
+    count.reinit(owned, relevant, comm, /*vector_writable=*/true);
+    std::vector<types::global_dof_index> dofs(
+      dof_handler.get_fe().n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dofs);
+          for (const auto dof : dofs)
+            count(dof) += 1.;
+        }
+    count.compress(VectorOperation::add);
+    inverse_count.reinit(owned, comm);
+    for (const auto dof : owned)
+      inverse_count(dof) = 1. / count(dof);
+  }
+
+
+
+  std::string
+  StressRecovery::name(const Field f)
+  {
+    static const char *const names[n_fields] = {"sigma_xx_MPa",
+                                                "sigma_yy_MPa",
+                                                "sigma_zz_MPa",
+                                                "sigma_xy_MPa",
+                                                "sigma_xz_MPa",
+                                                "sigma_yz_MPa",
+                                                "von_mises_MPa",
+                                                "sigma_1_MPa",
+                                                "sigma_2_MPa",
+                                                "sigma_3_MPa",
+                                                "strain_xx",
+                                                "strain_yy",
+                                                "strain_zz",
+                                                "strain_xy",
+                                                "strain_xz",
+                                                "strain_yz",
+                                                "peak_von_mises_MPa",
+                                                "peak_abs_sigma_zz_MPa"};
+    return names[f];
+  }
+
+
+
+  SymmetricTensor<2, 3>
+  StressRecovery::stress(const types::global_dof_index dof) const
+  {
+    SymmetricTensor<2, 3> sigma;
+    for (unsigned int s = 0; s < 6; ++s)
+      sigma[component[s][0]][component[s][1]] = ghosted[s](dof) * 1e6;
+    return sigma;
+  }
+
+
+
+  void
+  StressRecovery::recover(const TrilinosWrappers::MPI::Vector &u_ghosted)
+  {
+    const FiniteElement<3> &scalar_fe = dof_handler.get_fe();
+    // The strain and stress of every cell at its scalar support points,
+    // with E from the PropertyInterpolator and sigma from the HookeLaw of
+    // the assembly and the probes.
+    const Quadrature<3>  points(scalar_fe.get_unit_support_points());
+    FEValues<3>          fe_values(plate.get_mapping(),
+                          plate.get_fe(),
+                          points,
+                          update_gradients);
+    PropertyInterpolator properties(scalar_fe,
+                                    points.get_points(),
+                                    plate.get_material());
+    const HookeLaw       hooke(plate.get_material());
+    const FEValuesExtractors::Vector     displacement(0);
+    std::vector<SymmetricTensor<2, 3>>   eps(points.size());
+    std::vector<double>                  E, rho;
+    std::vector<types::global_dof_index> dofs(scalar_fe.n_dofs_per_cell());
+
+    for (auto &v : sums)
+      v = 0.;
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[displacement].get_function_symmetric_gradients(u_ghosted,
+                                                                   eps);
+          properties.values(cell, E, rho);
+          const DoFHandler<3>::active_cell_iterator scalar_cell(
+            &dof_handler.get_triangulation(),
+            cell->level(),
+            cell->index(),
+            &dof_handler);
+          scalar_cell->get_dof_indices(dofs);
+          for (unsigned int q = 0; q < points.size(); ++q)
+            {
+              const SymmetricTensor<2, 3> sigma = hooke.stress(E[q], eps[q]);
+              for (unsigned int s = 0; s < 6; ++s)
+                {
+                  const unsigned int a = component[s][0], b = component[s][1];
+                  sums[s](dofs[q]) += sigma[a][b] * 1e-6;
+                  sums[6 + s](dofs[q]) += eps[q][a][b];
+                }
+            }
+        }
+
+    for (unsigned int s = 0; s < 12; ++s)
+      sums[s].compress(VectorOperation::add);
+    for (const auto dof : owned)
+      {
+        const double          w = inverse_count(dof);
+        SymmetricTensor<2, 3> sigma;
+        for (unsigned int s = 0; s < 6; ++s)
+          {
+            const double value                      = sums[s](dof) * w;
+            owned_values[stress_xx + s](dof)        = value;
+            owned_values[strain_xx + s](dof)        = sums[6 + s](dof) * w;
+            sigma[component[s][0]][component[s][1]] = value;
+          }
+        const SymmetricTensor<2, 3> s  = deviator(sigma);
+        const double                vm = std::sqrt(1.5 * (s * s));
+        const auto principal           = eigenvalues(sigma); // descending
+        owned_values[von_mises](dof)   = vm;
+        for (unsigned int k = 0; k < 3; ++k)
+          owned_values[principal_1 + k](dof) = principal[k];
+
+        const double abs_zz = std::abs(sigma[2][2]);
+        owned_values[peak_von_mises](dof) =
+          n_recovered == 0 ?
+            vm :
+            std::max<double>(owned_values[peak_von_mises](dof), vm);
+        owned_values[peak_abs_stress_zz](dof) =
+          n_recovered == 0 ?
+            abs_zz :
+            std::max<double>(owned_values[peak_abs_stress_zz](dof), abs_zz);
+      }
+    for (unsigned int f = 0; f < n_fields; ++f)
+      ghosted[f] = owned_values[f];
+    ++n_recovered;
+  }
+} // namespace fgimpact
