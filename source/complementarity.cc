@@ -18,7 +18,7 @@ namespace fgimpact
                        const std::vector<unsigned int> &set,
                        Vector<double>                  &lambda)
     {
-      lambda = 0.;
+      lambda               = 0.;
       const unsigned int k = set.size();
       if (k == 0)
         return;
@@ -56,8 +56,8 @@ namespace fgimpact
               for (unsigned int j = 0; j < m; ++j)
                 g += A(i, j) * lambda[j];
               const double updated = std::max(0., lambda[i] - g / A(i, i));
-              change = std::max(change, std::abs(updated - lambda[i]));
-              size   = std::max(size, updated);
+              change    = std::max(change, std::abs(updated - lambda[i]));
+              size      = std::max(size, updated);
               lambda[i] = updated;
             }
           if (change <= 1e-14 * size)

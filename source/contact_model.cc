@@ -172,12 +172,9 @@ namespace fgimpact
     : law(law)
     , node_contact(law, plate, impact_point)
   {
-    const double h = plate.get_geometry().thickness();
-    const auto [dof, vertex] =
-      plate.nearest_vertex_dof(Point<3>(impact_point[0],
-                                        impact_point[1],
-                                        0.5 * h),
-                               2);
+    const double h           = plate.get_geometry().thickness();
+    const auto [dof, vertex] = plate.nearest_vertex_dof(
+      Point<3>(impact_point[0], impact_point[1], 0.5 * h), 2);
     AssertThrow(std::abs(vertex[2] - 0.5 * h) <= 1e-9 * h,
                 ExcMessage("Contact/Model = hertz midplane needs a vertex on "
                            "the mid-plane: make Geometry/Subdivisions z "
@@ -321,9 +318,9 @@ namespace fgimpact
   {
     prm.enter_subsection("Contact");
     const std::string name = prm.get("Model");
-    model = (name == "resolved sphere" ? Model::resolved_sphere :
-             name == "hertz midplane"  ? Model::hertz_midplane :
-                                         Model::hertz_node);
+    model            = (name == "resolved sphere" ? Model::resolved_sphere :
+                        name == "hertz midplane"  ? Model::hertz_midplane :
+                                                    Model::hertz_node);
     paraboloid_gap   = (prm.get("Gap shape") == "paraboloid");
     modified_mass    = (prm.get("Stabilization") == "modified mass");
     candidate_radius = prm.get_double("Candidate radius");

@@ -20,17 +20,16 @@ namespace fgimpact
       out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
              "version=\"0.1\">\n<Collection>\n";
       for (const auto &[t, name] : entries)
-        out << "<DataSet timestep=\"" << t << "\" file=\"" << name
-            << "\"/>\n";
+        out << "<DataSet timestep=\"" << t << "\" file=\"" << name << "\"/>\n";
       out << "</Collection>\n</VTKFile>\n";
       AssertThrow(out.good(), ExcMessage("cannot write " + file));
     }
 
     /// The header of an ASCII unstructured grid with the given points.
     void
-    begin_grid(std::ofstream                &out,
-               const std::vector<Point<3>>  &points,
-               const unsigned int            n_cells)
+    begin_grid(std::ofstream               &out,
+               const std::vector<Point<3>> &points,
+               const unsigned int           n_cells)
     {
       out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
              "version=\"0.1\">\n<UnstructuredGrid>\n";
@@ -95,12 +94,13 @@ namespace fgimpact
         {
           const double theta = numbers::PI * i / n_rings; // from the bottom
           const double phi   = 2. * numbers::PI * j / n_around;
-          points.push_back(centre + Point<3>(R * std::sin(theta) * std::cos(phi),
-                                             R * std::sin(theta) * std::sin(phi),
-                                             -R * std::cos(theta)));
+          points.push_back(centre +
+                           Point<3>(R * std::sin(theta) * std::cos(phi),
+                                    R * std::sin(theta) * std::sin(phi),
+                                    -R * std::cos(theta)));
         }
     points.push_back(centre + Point<3>(0, 0, R));
-    const unsigned int                      top = points.size() - 1;
+    const unsigned int                       top = points.size() - 1;
     std::vector<std::array<unsigned int, 3>> triangles;
     const auto ring = [&](const unsigned int i, const unsigned int j) {
       return 1 + (i - 1) * n_around + j % n_around;
@@ -108,7 +108,8 @@ namespace fgimpact
     for (unsigned int j = 0; j < n_around; ++j)
       {
         triangles.push_back({{0, ring(1, j + 1), ring(1, j)}});
-        triangles.push_back({{top, ring(n_rings - 1, j), ring(n_rings - 1, j + 1)}});
+        triangles.push_back(
+          {{top, ring(n_rings - 1, j), ring(n_rings - 1, j + 1)}});
         for (unsigned int i = 1; i + 1 < n_rings; ++i)
           {
             triangles.push_back({{ring(i, j), ring(i, j + 1), ring(i + 1, j)}});
@@ -155,7 +156,7 @@ namespace fgimpact
     // Read each time: the candidate set may have grown.
     const std::vector<Point<3>> nodes = contact.contact_points();
     const std::vector<double>   areas = contact.contact_areas();
-    std::ofstream out(file);
+    std::ofstream               out(file);
     out.precision(10);
     begin_grid(out, nodes, nodes.size());
     out << "<Cells>\n<DataArray type=\"Int32\" Name=\"connectivity\" "

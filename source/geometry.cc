@@ -95,12 +95,12 @@ namespace fgimpact
   {
     prm.enter_subsection("Geometry");
     {
-      length         = prm.get_double("Length a");
-      width          = prm.get_double("Width b");
-      thickness      = prm.get_double("Thickness h");
-      subdivisions_x = prm.get_integer("Subdivisions x");
-      subdivisions_y = prm.get_integer("Subdivisions y");
-      subdivisions_z = prm.get_integer("Subdivisions z");
+      length                    = prm.get_double("Length a");
+      width                     = prm.get_double("Width b");
+      thickness                 = prm.get_double("Thickness h");
+      subdivisions_x            = prm.get_integer("Subdivisions x");
+      subdivisions_y            = prm.get_integer("Subdivisions y");
+      subdivisions_z            = prm.get_integer("Subdivisions z");
       contact_refinement_levels = prm.get_integer("Contact refinement levels");
       contact_refinement_radius = prm.get_double("Contact refinement radius");
     }
@@ -171,9 +171,8 @@ namespace fgimpact
               for (unsigned int d = 0; d < 3; ++d)
                 {
                   const double c  = refinement.centre[d];
-                  const double dd = std::max({box.lower_bound(d) - c,
-                                              0.,
-                                              c - box.upper_bound(d)});
+                  const double dd = std::max(
+                    {box.lower_bound(d) - c, 0., c - box.upper_bound(d)});
                   d2 += dd * dd;
                 }
               const double h = cell->extent_in_direction(0);

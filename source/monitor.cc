@@ -53,17 +53,18 @@ namespace fgimpact
                         "default), default (zlib's compromise) or best "
                         "(smallest files, several times slower).  The values "
                         "in the files are the same at every level.");
-      prm.declare_entry("Overwrite",
-                        "true",
-                        Patterns::Bool(),
-                        "true: before writing, remove exactly the files this "
-                        "program writes from Directory (history.csv, "
-                        "summary.txt, parameters.prm, input.prm, log.txt, "
-                        "frequencies.csv, solution.pvd, solution_*.vtu/"
-                        ".pvtu, sphere and contact series, peak_fields, "
-                        "contact_pressure.csv), so that no file of an earlier run is mixed "
-                        "with the new ones. false: refuse a Directory that "
-                        "is not empty.");
+      prm.declare_entry(
+        "Overwrite",
+        "true",
+        Patterns::Bool(),
+        "true: before writing, remove exactly the files this "
+        "program writes from Directory (history.csv, "
+        "summary.txt, parameters.prm, input.prm, log.txt, "
+        "frequencies.csv, solution.pvd, solution_*.vtu/"
+        ".pvtu, sphere and contact series, peak_fields, "
+        "contact_pressure.csv), so that no file of an earlier run is mixed "
+        "with the new ones. false: refuse a Directory that "
+        "is not empty.");
       VtuFields::declare_parameters(prm);
     }
     prm.leave_subsection();
@@ -202,12 +203,12 @@ namespace fgimpact
     impact_results.time_of_peak_force = impact_results.impulse = 0;
     impact_results.max_indentation = impact_results.max_energy_drift = 0;
     impact_results.max_contact_radius = impact_results.max_contact_pressure = 0;
-    impact_results.max_contact_nodes  = 0;
-    impact_results.max_midplane_deflection                           = 0;
-    impact_results.max_top_deflection                                = 0;
-    impact_results.max_newton_iterations                             = 0;
-    impact_results.linear_iterations                                 = 0;
-    impact_results.max_linear_iterations                             = 0;
+    impact_results.max_contact_nodes                                        = 0;
+    impact_results.max_midplane_deflection                                  = 0;
+    impact_results.max_top_deflection                                       = 0;
+    impact_results.max_newton_iterations                                    = 0;
+    impact_results.linear_iterations                                        = 0;
+    impact_results.max_linear_iterations                                    = 0;
     impact_results.contact_duration = std::numeric_limits<double>::quiet_NaN();
     impact_results.n_impacts        = 1;
     columns                         = history_columns();

@@ -21,11 +21,11 @@
 namespace fgimpact
 {
   ResolvedSphereContact::ResolvedSphereContact(const PlateModel &plate,
-                                               const double sphere_radius,
-                                               const Point<2> &impact_point,
-                                               const double candidate_radius,
+                                               const double      sphere_radius,
+                                               const Point<2>   &impact_point,
+                                               const double   candidate_radius,
                                                const GapShape gap_shape,
-                                               const double reference_modulus,
+                                               const double   reference_modulus,
                                                const bool massless_candidates)
     : plate(plate)
     , impact_point(impact_point)
@@ -75,9 +75,9 @@ namespace fgimpact
                                             const Point<2>   &impact_point,
                                             const double      candidate_radius)
   {
-    const auto &dof_handler = plate.get_dof_handler();
-    const auto &constraints = plate.get_constraints();
-    const double h          = plate.get_geometry().thickness();
+    const auto  &dof_handler = plate.get_dof_handler();
+    const auto  &constraints = plate.get_constraints();
+    const double h           = plate.get_geometry().thickness();
     std::map<types::global_dof_index, Point<3>> support;
     DoFTools::map_dofs_to_support_points(plate.get_mapping(),
                                          dof_handler,
@@ -108,15 +108,16 @@ namespace fgimpact
         }
 
     std::vector<Candidate> all;
-    for (const auto &part : Utilities::MPI::all_gather(
-           plate.get_mpi_communicator(), local_z))
+    for (const auto &part :
+         Utilities::MPI::all_gather(plate.get_mpi_communicator(), local_z))
       all.insert(all.end(), part.begin(), part.end());
     std::sort(all.begin(), all.end());
     AssertThrow(!all.empty(),
-                ExcMessage("Contact/Candidate radius: no unconstrained top-face "
-                           "node lies within " +
-                           std::to_string(candidate_radius * 1e3) +
-                           " mm of the impact point."));
+                ExcMessage(
+                  "Contact/Candidate radius: no unconstrained top-face "
+                  "node lies within " +
+                  std::to_string(candidate_radius * 1e3) +
+                  " mm of the impact point."));
     for (const auto &c : all)
       {
         dofs.push_back(static_cast<types::global_dof_index>(c[3]));
@@ -133,9 +134,9 @@ namespace fgimpact
   {
     // A_j = int_top N_j dA, assembled like a unit pressure load (through
     // the constraints, so hanging nodes pass their share to their masters).
-    const auto            &fe = plate.get_fe();
-    const QGauss<2>        quadrature(fe.degree + 1);
-    FEFaceValues<3>        fe_face(plate.get_mapping(),
+    const auto                   &fe = plate.get_fe();
+    const QGauss<2>               quadrature(fe.degree + 1);
+    FEFaceValues<3>               fe_face(plate.get_mapping(),
                             fe,
                             quadrature,
                             update_values | update_JxW_values);
@@ -229,8 +230,8 @@ namespace fgimpact
     // the smallest gap; continuous through 0, so the monitor's zero
     // crossing gives the separation time.
     const double K = 4. / 3. * reference_modulus * std::sqrt(R);
-    state.alpha = (state.force > 0. ? std::pow(state.force / K, 2. / 3.) :
-                                      -std::max(smallest_gap, 0.));
+    state.alpha    = (state.force > 0. ? std::pow(state.force / K, 2. / 3.) :
+                                         -std::max(smallest_gap, 0.));
   }
 
 
@@ -261,9 +262,8 @@ namespace fgimpact
     std::ostringstream s;
     s << "resolved rigid sphere, R = " << R * 1e3 << " mm, "
       << (gap_shape == GapShape::sphere ? "spherical" : "paraboloid")
-      << " gap, " << dofs.size() << " candidate nodes within "
-      << reach() * 1e3 << " mm (nearest neighbour "
-      << smallest_spacing * 1e3 << " mm)";
+      << " gap, " << dofs.size() << " candidate nodes within " << reach() * 1e3
+      << " mm (nearest neighbour " << smallest_spacing * 1e3 << " mm)";
     return s.str();
   }
 
@@ -285,10 +285,10 @@ namespace fgimpact
   void
   ResolvedSphereContact::fill_results(ImpactResults &results) const
   {
-    results.contact_modulus     = reference_modulus;
-    results.contact_stiffness   = 4. / 3. * reference_modulus * std::sqrt(R);
-    results.contact_node_offset = radii.front();
-    results.contact_node_owner  = 0;
+    results.contact_modulus      = reference_modulus;
+    results.contact_stiffness    = 4. / 3. * reference_modulus * std::sqrt(R);
+    results.contact_node_offset  = radii.front();
+    results.contact_node_owner   = 0;
     results.n_contact_candidates = dofs.size();
   }
 } // namespace fgimpact

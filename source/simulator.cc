@@ -71,7 +71,7 @@ namespace fgimpact
       {
         const Impactor       impactor(parameters.impactor);
         const PlateGeometry &g = plate.get_geometry();
-        SphereIndenter indenter;
+        SphereIndenter       indenter;
         indenter.radius           = impactor.radius();
         indenter.candidate_radius = parameters.contact_model.candidate_radius;
         indenter.paraboloid_gap   = parameters.contact_model.paraboloid_gap;

@@ -2,9 +2,9 @@
 
 #include <deal.II/fe/fe_values.h>
 
-#include <fgimpact/postprocessing.h>
 #include <fgimpact/compliance.h>
 #include <fgimpact/contact_law.h>
+#include <fgimpact/postprocessing.h>
 #include <fgimpact/probes.h>
 #include <fgimpact/resolved_contact.h>
 #include <fgimpact/static_analysis.h>
@@ -144,8 +144,8 @@ namespace fgimpact
   void
   StaticAnalysis::solve_indentation(EffectiveMatrixSolver &solver)
   {
-    const double R     = indenter.radius;
-    const double delta = parameters.indentation;
+    const double          R     = indenter.radius;
+    const double          delta = parameters.indentation;
     ResolvedSphereContact contact(
       plate,
       R,
@@ -154,8 +154,7 @@ namespace fgimpact
                                        1.5 * std::sqrt(R * delta),
       indenter.paraboloid_gap ? ResolvedSphereContact::GapShape::paraboloid :
                                 ResolvedSphereContact::GapShape::sphere,
-      top_face_modulus(plate.get_material(),
-                       plate.get_geometry().thickness()));
+      top_face_modulus(plate.get_material(), plate.get_geometry().thickness()));
     // The sphere is displacement-driven: w = delta, no ball compliance.
     // A contact that reaches the candidate set's edge grows the set.
     FullMatrix<double> C;
@@ -175,7 +174,7 @@ namespace fgimpact
                     ExcMessage("Static/Indentation: the contact reaches the "
                                "sphere's radius; reduce the indentation."));
       }
-    const auto &dofs = contact.contact_dofs();
+    const auto &dofs        = contact.contact_dofs();
     results.contact_force   = state.force;
     results.contact_radius  = state.contact_radius;
     results.max_pressure    = state.max_pressure;

@@ -8,10 +8,8 @@
 #include <fgimpact/time_stepper.h>
 
 #include <Epetra_CrsMatrix.h>
-
 #include <cmath>
 #include <limits>
-#include <map>
 #include <sstream>
 
 namespace fgimpact
@@ -104,6 +102,16 @@ namespace fgimpact
 
 
 
+  std::string
+  time_step_label(const unsigned int step, const double t)
+  {
+    std::ostringstream s;
+    s << "time step " << step << " (t = " << t * 1e6 << " us)";
+    return s.str();
+  }
+
+
+
   unsigned int
   TimeStepper::Parameters::n_steps(const double dt) const
   {
@@ -114,13 +122,6 @@ namespace fgimpact
 
   namespace
   {
-    std::string
-    at_step(const unsigned int step, const double t)
-    {
-      std::ostringstream s;
-      s << "time step " << step << " (t = " << t * 1e6 << " us)";
-      return s.str();
-    }
 
 
 
@@ -212,7 +213,7 @@ namespace fgimpact
         AssertThrow(contact.newton_iterations != numbers::invalid_unsigned_int,
                     ExcMessage(
                       "Newton for the contact did not converge at " +
-                      at_step(step, t) + " within " +
+                      time_step_label(step, t) + " within " +
                       std::to_string(parameters.newton.max_iterations) +
                       " iterations; reduce Time integration/Time step or "
                       "raise Newton/Max iterations."));
@@ -250,7 +251,7 @@ namespace fgimpact
         AssertThrow(std::isfinite(contact.alpha) && std::isfinite(strain) &&
                       std::isfinite(kinetic),
                     ExcMessage("the solution is not finite (NaN or Inf) at " +
-                               at_step(step, t) + "."));
+                               time_step_label(step, t) + "."));
       }
 
       std::string
@@ -287,8 +288,8 @@ namespace fgimpact
           zero[dof] = true;
         // In place on the Epetra rows (deal.II's entry-wise set() on an
         // assembled Trilinos matrix costs a search per call).
-        auto &matrix = const_cast<Epetra_CrsMatrix &>(
-          modified_mass.trilinos_matrix());
+        auto &matrix =
+          const_cast<Epetra_CrsMatrix &>(modified_mass.trilinos_matrix());
         double removed = 0; // kg: sum of the zeroed rows' entries
         for (int row = 0; row < matrix.NumMyRows(); ++row)
           {
@@ -319,7 +320,7 @@ namespace fgimpact
         AssertThrow(contact_model.grow_candidates(),
                     ExcMessage("the contact reached the edge of the "
                                "candidate set at " +
-                               at_step(step, t) +
+                               time_step_label(step, t) +
                                ", which cannot grow beyond the sphere's "
                                "radius."));
         dofs = contact_model.contact_dofs();
@@ -334,9 +335,8 @@ namespace fgimpact
             mass->vmult(Ma, a);
           }
         compute_compliance();
-        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) ==
-            0)
-          std::cout << "  " << at_step(step, t)
+        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+          std::cout << "  " << time_step_label(step, t)
                     << ": the contact reached the edge of the candidate "
                        "set; grown to "
                     << dofs.size() << " candidates" << std::endl;
@@ -376,7 +376,7 @@ namespace fgimpact
           {
             AssertThrow(false,
                         ExcMessage("the linear solver did not converge at " +
-                                   at_step(step, t) + " after " +
+                                   time_step_label(step, t) + " after " +
                                    std::to_string(e.last_step) +
                                    " iterations; raise Linear solver/Max "
                                    "iterations or use a direct solver."));
@@ -407,247 +407,23 @@ namespace fgimpact
         measured_costs.solve = timer.wall_time() / n_solves;
       }
 
-      const Parameters        parameters;
-      const NewmarkIntegrator newmark;
+      const Parameters                      parameters;
+      const NewmarkIntegrator               newmark;
       TrilinosWrappers::SparseMatrix        modified_mass;
       const TrilinosWrappers::SparseMatrix *mass         = nullptr;
       double                                removed_mass = 0; // kg
       // Declared before the solver, which refers to it: members are
       // destroyed in reverse order (Amesos_Mumps crashed otherwise).
-      TrilinosWrappers::SparseMatrix             effective;
-      EffectiveMatrixSolver                      solver;
-      const PlateModel                          &plate;
+      TrilinosWrappers::SparseMatrix       effective;
+      EffectiveMatrixSolver                solver;
+      const PlateModel                    &plate;
       ContactModel                        &contact_model;
       std::vector<types::global_dof_index> dofs;
       const double                         m_i;
-      TrilinosWrappers::MPI::Vector a, Mu, Mv, Ma, u_new, Mu_new, rhs;
+      TrilinosWrappers::MPI::Vector        a, Mu, Mv, Ma, u_new, Mu_new, rhs;
       std::vector<TrilinosWrappers::MPI::Vector> c;
       FullMatrix<double>                         compliance;
       bool                                       iterative = false;
-    };
-
-
-
-    /**
-     * Central difference (velocity Verlet form) with a row-sum lumped mass
-     * M_L.  Per step: u_{n+1} = u_n + dt v_n + dt^2/2 a_n, then
-     * a_{n+1} = M_L^{-1} (-sum_j lambda_j g_j - K u_{n+1}) and
-     * v_{n+1} = v_n + dt/2 (a_n + a_{n+1}); the same for the impactor with
-     * a = -F/m.  The contact forces are explicit: no Newton.
-     */
-    class CentralDifferenceStepper : public TimeStepper
-    {
-    public:
-      CentralDifferenceStepper(const Parameters   &parameters,
-                               const PlateModel   &plate,
-                               const ContactModel &contact,
-                               const double        impactor_mass,
-                               const double        impact_velocity)
-        : parameters(parameters)
-        , plate(plate)
-        , contact_model(contact)
-        , dofs(contact.contact_dofs())
-        , m_i(impactor_mass)
-        , V0(impact_velocity)
-      {}
-
-      void
-      initialize(const bool measure_reference_costs) override
-      {
-        Timer timer;
-        for (auto *vector :
-             {&u, &v, &a, &Ku, &inverse_mass, &lumped_mass, &x, &y})
-          plate.initialize_vector(*vector);
-        setup_lumped_mass();
-
-        // Stability limit 2/omega_max, omega_max^2 the largest eigenvalue
-        // of M_L^{-1} (K + k_c sum_j g_j g_j^T), where k_c bounds the
-        // contact's stiffening of the contact DoFs.
-        const double k_c    = contact_model.stiffness_bound(m_i, V0);
-        const double lambda = largest_eigenvalue(k_c);
-        stable_dt           = 2. / std::sqrt(lambda);
-
-        const double requested_dt = parameters.time_step;
-        if (requested_dt == 0.)
-          dt = parameters.safety_factor * stable_dt;
-        else
-          {
-            AssertThrow(requested_dt <= stable_dt,
-                        ExcMessage(
-                          "Time integration/Time step = " +
-                          std::to_string(requested_dt * 1e6) +
-                          " us exceeds the stability limit " +
-                          std::to_string(stable_dt * 1e6) +
-                          " us of the explicit scheme; use Time step = 0 "
-                          "(automatic) or the implicit scheme."));
-            dt = requested_dt;
-          }
-        measured_costs.initialization = timer.wall_time();
-
-        if (measure_reference_costs)
-          {
-            x = 1.;
-            timer.restart();
-            const unsigned int n_spmv = 20;
-            for (unsigned int i = 0; i < n_spmv; ++i)
-              plate.stiffness_matrix().vmult(y, x);
-            measured_costs.spmv = timer.wall_time() / n_spmv;
-          }
-        x = 0.;
-        y = 0.;
-      }
-
-      double
-      time_step() const override
-      {
-        return dt;
-      }
-
-      void
-      advance(const unsigned int step,
-              const double       t,
-              ImpactorState     &impactor,
-              ContactState      &contact) override
-      {
-        // Positions.
-        u.add(dt, v, 0.5 * dt * dt, a);
-        v.add(0.5 * dt, a); // half step
-        impactor.w += dt * impactor.v + 0.5 * dt * dt * impactor.a;
-        impactor.v += 0.5 * dt * impactor.a;
-
-        // Contact forces at the new positions.
-        contact_model.evaluate_explicit(plate.dof_values(u, dofs),
-                                        impactor.w,
-                                        contact);
-
-        // Accelerations and the second velocity half step.
-        plate.stiffness_matrix().vmult(Ku, u);
-        strain = 0.5 * (u * Ku);
-        a.equ(-1., Ku);
-        for (unsigned int j = 0; j < dofs.size(); ++j)
-          if (a.locally_owned_elements().is_element(dofs[j]))
-            a(dofs[j]) -= contact.forces[j];
-        a.scale(inverse_mass);
-        v.add(0.5 * dt, a);
-        impactor.a = -contact.force / m_i;
-        impactor.v += 0.5 * dt * impactor.a;
-
-        // 1/2 v^T M_L v with the diagonal M_L: two vector operations.
-        y = v;
-        y.scale(lumped_mass);
-        kinetic = 0.5 * (v * y);
-
-        AssertThrow(std::isfinite(contact.alpha) && std::isfinite(strain) &&
-                      std::abs(contact.alpha) < 1.,
-                    ExcMessage("the explicit solution blew up (NaN, Inf or "
-                               "an indentation above 1 m) at " +
-                               at_step(step, t) +
-                               "; reduce Time integration/Stable step "
-                               "safety factor."));
-      }
-
-      std::string
-      description() const override
-      {
-        std::ostringstream s;
-        s << "explicit central difference, lumped mass, stability limit "
-          << stable_dt * 1e6 << " us";
-        return s.str();
-      }
-
-    private:
-      /// Row-sum lumping M_L = M 1 (positive for FE_Q(1) and FE_Q(2));
-      /// constrained DoFs stay at rest: zero inverse mass.
-      void
-      setup_lumped_mass()
-      {
-        x = 1.;
-        plate.mass_matrix().vmult(inverse_mass, x);
-        const auto &constraints = plate.get_constraints();
-        for (const auto i : inverse_mass.locally_owned_elements())
-          {
-            AssertThrow(inverse_mass(i) > 0.,
-                        ExcMessage("the lumped mass matrix has a "
-                                   "non-positive entry"));
-            const bool constrained = constraints.is_constrained(i);
-            lumped_mass(i)         = constrained ? 0. : inverse_mass(i);
-            inverse_mass(i)        = constrained ? 0. : 1. / inverse_mass(i);
-          }
-        inverse_mass.compress(VectorOperation::insert);
-        lumped_mass.compress(VectorOperation::insert);
-      }
-
-      /// A deterministic start vector with all frequencies present, a
-      /// function of the DoFs' positions and components rather than of
-      /// their numbers, so that every partition (MPI rank count) finds the
-      /// same time step to round-off.
-      void
-      fill_start_vector()
-      {
-        const auto &dof_handler = plate.get_dof_handler();
-        std::map<types::global_dof_index, Point<3>> support;
-        DoFTools::map_dofs_to_support_points(plate.get_mapping(),
-                                             dof_handler,
-                                             support);
-        std::vector<types::global_dof_index> local_dofs(
-          dof_handler.get_fe().n_dofs_per_cell());
-        for (const auto &cell : dof_handler.active_cell_iterators())
-          if (cell->is_locally_owned())
-            {
-              cell->get_dof_indices(local_dofs);
-              for (unsigned int k = 0; k < local_dofs.size(); ++k)
-                if (x.locally_owned_elements().is_element(local_dofs[k]))
-                  {
-                    const Point<3>    &p = support.at(local_dofs[k]);
-                    const unsigned int c =
-                      dof_handler.get_fe().system_to_component_index(k).first;
-                    // Positions in mm: O(1-100) arguments of the sine.
-                    x(local_dofs[k]) =
-                      (inverse_mass(local_dofs[k]) > 0. ?
-                         std::sin(1.0 + 12.9898e3 * p[0] + 78.233e3 * p[1] +
-                                  37.719e3 * p[2] + 2.3 * c) :
-                         0.);
-                  }
-            }
-        x.compress(VectorOperation::insert);
-      }
-
-      /// Power iteration with Rayleigh quotients on
-      /// M_L^{-1} (K + k_c sum_j g_j g_j^T), unconstrained DoFs only.
-      double
-      largest_eigenvalue(const double k_c)
-      {
-        fill_start_vector();
-        double lambda = 0;
-        for (unsigned int it = 0; it < 1000; ++it)
-          {
-            plate.stiffness_matrix().vmult(y, x); // y = (K + k_c g g^T) x
-            for (const auto dof : dofs)
-              if (y.locally_owned_elements().is_element(dof))
-                y(dof) += k_c * x(dof);
-            Ku = x; // scratch: M_L x
-            Ku.scale(lumped_mass);
-            const double new_lambda = (x * y) / (x * Ku);
-            y.scale(inverse_mass);
-            x = y;
-            x /= x.l2_norm();
-            const bool converged =
-              it > 20 && std::abs(new_lambda - lambda) < 1e-6 * new_lambda;
-            lambda = new_lambda;
-            if (converged)
-              break;
-          }
-        Ku = 0.;
-        return lambda;
-      }
-
-      const Parameters                           parameters;
-      const PlateModel                          &plate;
-      const ContactModel                        &contact_model;
-      const std::vector<types::global_dof_index> dofs;
-      const double                               m_i, V0;
-      double                                     dt = 0, stable_dt = 0;
-      TrilinosWrappers::MPI::Vector a, Ku, inverse_mass, lumped_mass, x, y;
     };
   } // namespace
 
@@ -664,7 +440,7 @@ namespace fgimpact
     switch (parameters.scheme)
       {
         case TimeStepper::Scheme::central_difference:
-          return std::make_unique<CentralDifferenceStepper>(
+          return create_central_difference_stepper(
             parameters, plate, contact, impactor_mass, impact_velocity);
         case TimeStepper::Scheme::implicit_newmark:
           break;

@@ -27,10 +27,10 @@ namespace fgimpact
   {
   public:
     /// impact_point: where the ball first touches the top face (m).
-    ContactVtuWriter(const std::string   &directory,
-                     const Point<3>      &impact_point,
-                     const double         radius,
-                     const ContactModel  &contact);
+    ContactVtuWriter(const std::string  &directory,
+                     const Point<3>     &impact_point,
+                     const double        radius,
+                     const ContactModel &contact);
 
     /// Write the snapshot of step `step` at time t (s), with the ball's
     /// displacement w (m, positive down).
@@ -50,10 +50,10 @@ namespace fgimpact
     void
     write_nodes(const std::string &file, const ContactState &state) const;
 
-    const std::string                         directory;
-    const Point<3>                            impact_point;
-    const double                              R;
-    const ContactModel                       &contact;
+    const std::string                           directory;
+    const Point<3>                              impact_point;
+    const double                                R;
+    const ContactModel                         &contact;
     std::vector<std::pair<double, std::string>> spheres, contacts;
   };
 } // namespace fgimpact

@@ -180,11 +180,11 @@ namespace fgimpact
     ConditionalOStream     pcout;
     ImpactResults         &impact_results;
 
-    PointProbe                 mid_probe, top_probe;
-    std::unique_ptr<CsvWriter> history;
-    std::unique_ptr<VtuWriter> vtu;
+    PointProbe                        mid_probe, top_probe;
+    std::unique_ptr<CsvWriter>        history;
+    std::unique_ptr<VtuWriter>        vtu;
     std::unique_ptr<ContactVtuWriter> contact_vtu;
-    std::vector<RowObserver>   observers;
+    std::vector<RowObserver>          observers;
     /// history_columns(), plus contact_area_columns() for a resolved
     /// contact.
     std::vector<HistoryColumn> columns;

@@ -183,7 +183,7 @@ namespace fgimpact
     double                               candidate_radius; // m
     std::vector<types::global_dof_index> dofs;
     std::vector<double>                  radii, areas, profile;
-    std::vector<Point<3>>                points; // undeformed, m
+    std::vector<Point<3>>                points;               // undeformed, m
     double                               smallest_spacing = 0; // m
     /// The active set of the last solve (warm start).
     mutable std::vector<bool> active;

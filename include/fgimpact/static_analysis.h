@@ -46,8 +46,8 @@ namespace fgimpact
     struct Parameters
     {
       Load   load        = Load::sinusoidal;
-      double pressure    = 1e6; // q0, Pa
-      double point_force = 1e3; // P, N
+      double pressure    = 1e6;  // q0, Pa
+      double point_force = 1e3;  // P, N
       double indentation = 1e-5; // delta of Load = sphere, m
 
       static void
@@ -67,10 +67,10 @@ namespace fgimpact
       /// node in contact), largest nodal pressure (Pa), and
       /// per candidate node its distance from the centre (m) and nodal
       /// pressure lambda_j / A_j (Pa).
-      double              contact_force    = 0;
-      double              contact_radius   = 0;
-      double              max_pressure     = 0;
-      unsigned int        n_contact_nodes  = 0;
+      double              contact_force   = 0;
+      double              contact_radius  = 0;
+      double              max_pressure    = 0;
+      unsigned int        n_contact_nodes = 0;
       std::vector<double> node_radius, node_pressure;
     };
 

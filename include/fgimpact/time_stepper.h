@@ -148,6 +148,18 @@ namespace fgimpact
 
 
 
+  /// "time step N (t = T us)", for messages.
+  std::string
+  time_step_label(const unsigned int step, const double t);
+
+  /// The explicit scheme (source/central_difference_stepper.cc).
+  std::unique_ptr<TimeStepper>
+  create_central_difference_stepper(const TimeStepper::Parameters &parameters,
+                                    const PlateModel              &plate,
+                                    ContactModel                  &contact,
+                                    const double impactor_mass,
+                                    const double impact_velocity);
+
   /// The factory: the scheme named in the parameters.
   std::unique_ptr<TimeStepper>
   create_time_stepper(const TimeStepper::Parameters           &parameters,

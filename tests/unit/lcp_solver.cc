@@ -21,8 +21,8 @@ namespace
 {
   /// A random SPD matrix B B^T + m I/10 and a q with mixed signs.
   void
-  random_problem(const unsigned int m,
-                 std::mt19937      &rng,
+  random_problem(const unsigned int  m,
+                 std::mt19937       &rng,
                  FullMatrix<double> &A,
                  Vector<double>     &q)
   {
@@ -96,8 +96,8 @@ main()
         FullMatrix<double> A;
         Vector<double>     q, lambda;
         random_problem(m, rng, A, q);
-        std::vector<bool>   active;
-        const LcpStatistics s     = solve_lcp(A, q, lambda, active);
+        std::vector<bool>    active;
+        const LcpStatistics  s     = solve_lcp(A, q, lambda, active);
         const Vector<double> exact = enumerate(A, q);
         Vector<double>       diff(lambda);
         diff -= exact;

@@ -8,8 +8,9 @@
 //    the modified mass), energy drift below 1e-3;
 //  - a candidate set too small at the start grows and gives the same peak;
 //  - hertz midplane at levels 0, 2, 4: the peak force changes by less than
-//    0.1 % (5 mm to 0.3 mm under the ball), while the paper's hertz node at the same levels changes by
-//    more than 10 % (its point force under a refined node).
+//    0.1 % (5 mm to 0.3 mm under the ball), while the paper's hertz node at the
+//    same levels changes by more than 10 % (its point force under a refined
+//    node).
 
 #include <deal.II/base/mpi.h>
 
@@ -98,7 +99,7 @@ main(int argc, char *argv[])
   const Run    grown = run("resolved sphere",
                         4,
                         "subsection Contact\n set Candidate radius = 0.0006\n"
-                        "end\n");
+                           "end\n");
   const double grown_difference =
     std::abs(grown.results.peak_contact_force / F[1] - 1.);
   std::printf("resolved sphere, level 4, candidates grown from 0.6 mm: peak "
@@ -114,8 +115,8 @@ main(int argc, char *argv[])
       double Fm[3];
       for (unsigned int k = 0; k < 3; ++k)
         Fm[k] = run(model, 2 * k).results.peak_contact_force;
-      const double change = std::max(std::abs(Fm[1] / Fm[0] - 1.),
-                                     std::abs(Fm[2] / Fm[1] - 1.));
+      const double change =
+        std::max(std::abs(Fm[1] / Fm[0] - 1.), std::abs(Fm[2] / Fm[1] - 1.));
       std::printf("%s, levels 0, 2, 4: peak %.2f, %.2f, %.2f N, largest "
                   "change %.3f %%\n",
                   model.c_str(),

@@ -40,8 +40,7 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const unsigned int rank = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
 
-  const auto alone =
-    run(MPI_COMM_SELF, "out_self_" + std::to_string(rank));
+  const auto alone    = run(MPI_COMM_SELF, "out_self_" + std::to_string(rank));
   const auto together = run(MPI_COMM_WORLD, "out_world");
 
   double worst = 0;

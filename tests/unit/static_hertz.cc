@@ -49,8 +49,11 @@ namespace
     mp.power_law_index      = 0; // pure metal: homogeneous
     const PlateGeometry              geometry(gp);
     const FunctionallyGradedMaterial material(mp, gp.thickness);
-    PlateModel plate(PlateModel::Parameters(), geometry, material, MPI_COMM_WORLD);
-    LocalRefinement refinement;
+    PlateModel                       plate(PlateModel::Parameters(),
+                     geometry,
+                     material,
+                     MPI_COMM_WORLD);
+    LocalRefinement                  refinement;
     refinement.centre = Point<3>(gp.length / 2, gp.width / 2, gp.thickness);
     refinement.radius = 1.5 * std::sqrt(R * delta);
     refinement.levels = levels;
@@ -97,14 +100,14 @@ main(int argc, char *argv[])
                   r[k].contact_radius * 1e3,
                   r[k].n_contact_nodes);
     }
-  const double d1 = r[1].contact_force - r[0].contact_force;
-  const double d2 = r[2].contact_force - r[1].contact_force;
+  const double d1    = r[1].contact_force - r[0].contact_force;
+  const double d2    = r[2].contact_force - r[1].contact_force;
   const double order = std::log2(d1 / d2);
   std::printf("observed order in the element size: %.2f\n", order);
 
   const StaticAnalysis::Results big = indent(2., 7);
-  const double F_infinite_block     = 2. * big.contact_force - r[1].contact_force;
-  const double block_factor         = r[1].contact_force / F_infinite_block;
+  const double F_infinite_block = 2. * big.contact_force - r[1].contact_force;
+  const double block_factor     = r[1].contact_force / F_infinite_block;
   std::printf("block correction: F(2H) = %.4f N at level 7, F(H)/F(inf) - 1 "
               "= %.3f %% (Boussinesq estimate %.3f %%)\n",
               big.contact_force,
@@ -129,7 +132,7 @@ main(int argc, char *argv[])
           sx += x, sy += y, sxx += x * x, sxy += x * y, n_fit += 1;
         }
     }
-  const double slope = (n_fit * sxy - sx * sy) / (n_fit * sxx - sx * sx);
+  const double slope        = (n_fit * sxy - sx * sy) / (n_fit * sxx - sx * sx);
   const double intercept    = (sy - slope * sx) / n_fit;
   const double a_fit        = std::sqrt(-intercept / slope);
   const double radius_error = a_fit / a - 1.;
@@ -143,11 +146,9 @@ main(int argc, char *argv[])
     if (r[2].node_radius[j] < 0.8 * a)
       {
         const double rr = r[2].node_radius[j] / a;
-        pressure_error =
-          std::max(pressure_error,
-                   std::abs(r[2].node_pressure[j] -
-                            p0 * std::sqrt(1. - rr * rr)) /
-                     p0);
+        pressure_error  = std::max(
+          pressure_error,
+          std::abs(r[2].node_pressure[j] - p0 * std::sqrt(1. - rr * rr)) / p0);
         ++n_inside;
       }
   std::printf("level 8, block-corrected force error %+.3f %% (limit 1 %%)\n",
