@@ -187,6 +187,7 @@ namespace fgimpact
     , dt(dt)
     , n_steps(n_steps)
     , root(Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+
     , pcout(std::cout, root)
     , impact_results(results)
     , mid_probe(plate,
@@ -196,6 +197,7 @@ namespace fgimpact
                 plate.get_geometry().centre(plate.get_geometry().thickness()))
     , progress(n_steps, root && parameters.print_timing)
   {
+    plate_communicator = plate.get_mpi_communicator();
     output_timer.stop();
     output_timer.reset();
     // A fresh run: the time history's entries start from nothing.
@@ -281,7 +283,17 @@ namespace fgimpact
     sample.E_impactor = 0.5 * m_i * ball.v * ball.v;
     sample.E_kinetic  = stepper.kinetic_energy();
     sample.E_strain   = stepper.strain_energy();
-    sample.E_contact  = contact_model.potential(contact);
+    // A model without a potential (hertz midplane: the force acts at the
+    // top node, alpha is measured at the mid-plane) stores the work of the
+    // contact force on the approach at the top node, int F d(w + u_top)
+    // (trapezoidal: exact for the average-acceleration rule).
+    const double approach = ball.w + contact.node_displacement;
+    if (!contact_model.has_potential() && step > 0)
+      contact_work +=
+        0.5 * (last_force + contact.force) * (approach - last_approach);
+    sample.E_contact = contact_model.has_potential() ?
+                         contact_model.potential(contact) :
+                         contact_work;
     sample.E_total =
       sample.E_impactor + sample.E_kinetic + sample.E_strain + sample.E_contact;
 
@@ -292,8 +304,9 @@ namespace fgimpact
       std::max(impact_results.max_linear_iterations,
                stepper.linear_iterations());
     write_outputs(step, t, stepper, sample);
-    last_force = contact.force;
-    last_alpha = contact.alpha;
+    last_force    = contact.force;
+    last_alpha    = contact.alpha;
+    last_approach = approach;
   }
 
 
@@ -472,8 +485,14 @@ namespace fgimpact
       {
         if (contact_vtu)
           contact_vtu->finish();
-        if (vtu)
+        // The peak fields are written collectively: only if no rank's
+        // VTU output failed (a failed rank has dropped its writer).
+        const bool all_writing =
+          Utilities::MPI::min(vtu ? 1u : 0u, plate_communicator) == 1u;
+        if (vtu && all_writing)
           vtu->write_peak_fields(); // finishes the series first
+        else if (vtu)
+          vtu->finish();
         if (history)
           history->flush();
       }

@@ -105,6 +105,15 @@ namespace fgimpact
     virtual double
     potential(const ContactState &state) const = 0;
 
+    /// Whether the contact force derives from potential(); if not, the
+    /// monitor books the force's work on the approach at the first contact
+    /// DoF as the contact energy.
+    virtual bool
+    has_potential() const
+    {
+      return true;
+    }
+
     /**
      * An upper bound of the contact's stiffness dF/dalpha (N/m) during an
      * impact of a ball of mass m (kg) at V0 (m/s), for the explicit
@@ -317,6 +326,14 @@ namespace fgimpact
     evaluate_explicit(const Vector<double> &u_c,
                       const double          w,
                       ContactState         &state) const override;
+
+    /// The force acts at the top node, alpha is measured at the
+    /// mid-plane: no potential.
+    bool
+    has_potential() const override
+    {
+      return false;
+    }
 
     double
     potential(const ContactState &state) const override;

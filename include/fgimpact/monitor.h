@@ -195,6 +195,10 @@ namespace fgimpact
     bool   in_contact     = true;
     bool   separated_once = false;
     double last_force = 0, last_alpha = 0;
+    /// Models without a potential: approach at the top node (m) and the
+    /// contact force's work on it (J).
+    double   last_approach = 0, contact_work = 0;
+    MPI_Comm plate_communicator = MPI_COMM_WORLD;
     // Peak detection: the sample left of the largest one.
     double peak_left    = 0;
     bool   peak_pending = false;
