@@ -130,6 +130,12 @@ namespace fgimpact
                                "safety factor."));
       }
 
+      bool
+      has_lumped_mass() const override
+      {
+        return true;
+      }
+
       std::string
       description() const override
       {
@@ -231,7 +237,7 @@ namespace fgimpact
       const std::vector<types::global_dof_index> dofs;
       const double                               m_i, V0;
       double                                     dt = 0, stable_dt = 0;
-      TrilinosWrappers::MPI::Vector a, Ku, inverse_mass, lumped_mass, x, y;
+      TrilinosWrappers::MPI::Vector Ku, inverse_mass, lumped_mass, x, y;
     };
   } // namespace
 

@@ -58,7 +58,7 @@ namespace fgimpact
         "true",
         Patterns::Bool(),
         "true: before writing, remove exactly the files this "
-        "program writes from Directory (history.csv, "
+        "program writes from Directory (history.csv, probes.csv, "
         "summary.txt, parameters.prm, input.prm, log.txt, "
         "frequencies.csv, solution.pvd, solution_*.vtu/"
         ".pvtu, sphere and contact series, peak_fields, "
@@ -66,6 +66,7 @@ namespace fgimpact
         "with the new ones. false: refuse a Directory that "
         "is not empty.");
       VtuFields::declare_parameters(prm);
+      ProbePoints::declare_parameters(prm);
     }
     prm.leave_subsection();
   }
@@ -90,6 +91,7 @@ namespace fgimpact
                            DataOutBase::VtkFlags::best_speed;
     overwrite = prm.get_bool("Overwrite");
     vtu_fields.parse_parameters(prm);
+    probe_points.parse_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -150,6 +152,15 @@ namespace fgimpact
         history =
           std::make_unique<CsvWriter>(parameters.directory + "/history.csv",
                                       header);
+      }
+    if (!parameters.probe_points.points.empty())
+      {
+        probe_set =
+          std::make_unique<ProbeSet>(plate, parameters.probe_points.points);
+        if (root)
+          probe_csv =
+            std::make_unique<CsvWriter>(parameters.directory + "/probes.csv",
+                                        probe_set->columns());
       }
     if (parameters.vtu_interval > 0)
       vtu = std::make_unique<VtuWriter>(plate,
@@ -221,6 +232,13 @@ namespace fgimpact
     sample.E_total =
       sample.E_impactor + sample.E_kinetic + sample.E_strain + sample.E_contact;
 
+    if (probe_set)
+      probe_row =
+        probe_set->row(t,
+                       probe_set->evaluate(u,
+                                           stepper.velocity(),
+                                           stepper.acceleration(),
+                                           stepper.has_lumped_mass()));
     update_extremes(t, sample);
     watch_energy(step, t, std::abs(sample.E_total - E0) / E0);
     impact_results.linear_iterations += stepper.linear_iterations();
@@ -359,6 +377,8 @@ namespace fgimpact
       {
         if (history)
           history->write_row(row);
+        if (probe_csv)
+          probe_csv->write_row(probe_row);
         if (vtu && step % parameters.vtu_interval == 0)
           {
             output_timer.start();
@@ -374,6 +394,7 @@ namespace fgimpact
         e.print_info(message);
         output_failure_message = one_line(message.str());
         history.reset();
+        probe_csv.reset();
         vtu.reset();
         contact_vtu.reset();
       }
@@ -419,6 +440,8 @@ namespace fgimpact
           vtu->finish();
         if (history)
           history->flush();
+        if (probe_csv)
+          probe_csv->flush();
       }
     catch (const ExceptionBase &e)
       {

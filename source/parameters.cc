@@ -247,6 +247,7 @@ namespace fgimpact
                   "above min(Length a, Width b) = " +
                   std::to_string(std::min(a, b)) + " m)."));
     validate_supports(*this);
+    output.probe_points.validate(a, b, geometry.thickness);
   }
 
   std::vector<std::string>

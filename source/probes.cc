@@ -14,18 +14,12 @@ namespace fgimpact
 
 
 
-  PointProbe::PointProbe(const PlateModel &plate, const Point<3> &location)
-    : point(location)
-    , mpi_communicator(plate.get_mpi_communicator())
+  std::vector<std::pair<DoFHandler<3>::active_cell_iterator, Point<3>>>
+  locally_owned_cells_containing(const PlateModel &plate,
+                                 const Point<3>   &location)
   {
-    const auto &dof_handler = plate.get_dof_handler();
-    const auto &fe          = plate.get_fe();
-
-    // The locally owned cells that contain the point (within round-off of
-    // their size); on a face, edge or vertex there are several, possibly on
-    // several ranks.
     std::vector<std::pair<DoFHandler<3>::active_cell_iterator, Point<3>>> cells;
-    for (const auto &cell : dof_handler.active_cell_iterators())
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           const double tolerance = 1e-10 * cell->diameter();
@@ -40,6 +34,31 @@ namespace fgimpact
                 plate.get_mapping().transform_real_to_unit_cell(cell,
                                                                 location)));
         }
+    return cells;
+  }
+
+
+
+  std::vector<std::pair<types::global_dof_index, double>>
+  owned_nonzeros(const PlateModel                    &plate,
+                 const TrilinosWrappers::MPI::Vector &vector)
+  {
+    std::vector<std::pair<types::global_dof_index, double>> list;
+    for (const auto dof : plate.locally_owned_dofs())
+      if (vector(dof) != 0.)
+        list.emplace_back(dof, vector(dof));
+    return list;
+  }
+
+
+
+  PointProbe::PointProbe(const PlateModel &plate, const Point<3> &location)
+    : point(location)
+    , mpi_communicator(plate.get_mpi_communicator())
+  {
+    const auto &fe = plate.get_fe();
+
+    const auto         cells = locally_owned_cells_containing(plate, location);
     const unsigned int n_adjacent_cells =
       Utilities::MPI::sum(static_cast<unsigned int>(cells.size()),
                           mpi_communicator);
@@ -101,11 +120,8 @@ namespace fgimpact
     for (unsigned int k = 0; k < 9; ++k)
       {
         weights[k].compress(VectorOperation::add);
-        Weights &list =
-          (k < 3 ? displacement_weights[k] : stress_weights[k - 3]);
-        for (const auto dof : plate.locally_owned_dofs())
-          if (weights[k](dof) != 0.)
-            list.emplace_back(dof, weights[k](dof));
+        (k < 3 ? displacement_weights[k] : stress_weights[k - 3]) =
+          owned_nonzeros(plate, weights[k]);
       }
   }
 

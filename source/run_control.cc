@@ -48,7 +48,8 @@ namespace fgimpact
       if (ends_with(name, ".tmp"))
         name.resize(name.size() - 4);
       // log.txt too: the cleaning happens before this run opens its own.
-      if (name == "history.csv" || name == "summary.txt" ||
+      if (name == "history.csv" || name == "probes.csv" ||
+          name == "summary.txt" ||
           name == "parameters.prm" || name == "frequencies.csv" ||
           name == "solution.pvd" || name == "log.txt" || name == "input.prm" ||
           name == "sphere.pvd" || name == "contact.pvd" ||

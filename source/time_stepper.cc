@@ -420,7 +420,7 @@ namespace fgimpact
       ContactModel                        &contact_model;
       std::vector<types::global_dof_index> dofs;
       const double                         m_i;
-      TrilinosWrappers::MPI::Vector        a, Mu, Mv, Ma, u_new, Mu_new, rhs;
+      TrilinosWrappers::MPI::Vector        Mu, Mv, Ma, u_new, Mu_new, rhs;
       std::vector<TrilinosWrappers::MPI::Vector> c;
       FullMatrix<double>                         compliance;
       bool                                       iterative = false;

@@ -11,6 +11,7 @@
 #include <fgimpact/logger.h>
 #include <fgimpact/plate_model.h>
 #include <fgimpact/postprocessing.h>
+#include <fgimpact/probe_set.h>
 #include <fgimpact/probes.h>
 #include <fgimpact/results.h>
 #include <fgimpact/time_stepper.h>
@@ -39,6 +40,8 @@ namespace fgimpact
       DataOutBase::VtkFlags::best_speed;
     /// Entry "Fields" (what the VTU files hold).
     VtuFields vtu_fields;
+    /// Entry "Probe points" (probes.csv).
+    ProbePoints probe_points;
 
     static void
     declare_parameters(ParameterHandler &prm);
@@ -180,8 +183,12 @@ namespace fgimpact
     ConditionalOStream     pcout;
     ImpactResults         &impact_results;
 
-    PointProbe                        mid_probe, top_probe;
-    std::unique_ptr<CsvWriter>        history;
+    PointProbe                 mid_probe, top_probe;
+    std::unique_ptr<CsvWriter> history;
+    /// probes.csv: the probe points and the support reaction.
+    std::unique_ptr<ProbeSet>         probe_set;
+    std::unique_ptr<CsvWriter>        probe_csv;
+    std::vector<double>               probe_row;
     std::unique_ptr<VtuWriter>        vtu;
     std::unique_ptr<ContactVtuWriter> contact_vtu;
     std::vector<RowObserver>          observers;

@@ -17,6 +17,18 @@ namespace fgimpact
 {
   using namespace dealii;
 
+  /// The locally owned cells that contain location (within 1e-10 of their
+  /// size) and the point in each one's unit cell; on a face, edge or
+  /// vertex there are several, possibly on several ranks.
+  std::vector<std::pair<DoFHandler<3>::active_cell_iterator, Point<3>>>
+  locally_owned_cells_containing(const PlateModel &plate,
+                                 const Point<3>   &location);
+
+  /// The nonzero entries of a distributed vector at this rank's DoFs.
+  std::vector<std::pair<types::global_dof_index, double>>
+  owned_nonzeros(const PlateModel                    &plate,
+                 const TrilinosWrappers::MPI::Vector &vector);
+
   /**
    * Displacement and stress at a fixed point of the plate as linear
    * functionals of the DoF vector, with the weights computed once (no mesh

@@ -107,6 +107,21 @@ namespace fgimpact
       return v;
     }
 
+    /// Plate acceleration (m/s^2) at the current time.
+    const TrilinosWrappers::MPI::Vector &
+    acceleration() const
+    {
+      return a;
+    }
+
+    /// Whether the scheme's mass matrix is lumped (diagonal, zero at the
+    /// constrained DoFs): their reactions then carry no inertia.
+    virtual bool
+    has_lumped_mass() const
+    {
+      return false;
+    }
+
     /// Kinetic energy 1/2 v^T M v and strain energy 1/2 u^T K u of the
     /// plate (J), kept up to date by advance() without extra matrix-vector
     /// products.
@@ -140,7 +155,7 @@ namespace fgimpact
 
   protected:
     /// The state every scheme keeps and advance() updates.
-    TrilinosWrappers::MPI::Vector u, v;
+    TrilinosWrappers::MPI::Vector u, v, a;
     double                        kinetic = 0, strain = 0;
     unsigned int                  last_linear_iterations = 0;
     Costs                         measured_costs;
