@@ -43,7 +43,7 @@ namespace
           {
             dealii::ParameterHandler prm;
             fgimpact::Parameters::declare_parameters(prm);
-            prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
+            fgimpact::CommandLine::print_parameters(prm, std::cout);
             return 0;
           }
         case Action::error:

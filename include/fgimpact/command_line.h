@@ -1,6 +1,9 @@
 #ifndef fgimpact_command_line_h
 #define fgimpact_command_line_h
 
+#include <deal.II/base/parameter_handler.h>
+
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -57,6 +60,15 @@ namespace fgimpact
     provenance(const int          argc,
                const char *const *argv,
                const unsigned int n_mpi_ranks);
+
+    /**
+     * `fgimpact --print-parameters`: the documented .prm of prm (deal.II's
+     * PRM style, readable by parse_input()) with a comment line before
+     * every entry giving its allowed values or range (the entry's
+     * Patterns description).  In source/parameter_listing.cc.
+     */
+    void
+    print_parameters(const dealii::ParameterHandler &prm, std::ostream &out);
 
     /**
      * Before MPI_Init: a process not started by an MPI launcher (no

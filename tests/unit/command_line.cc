@@ -100,7 +100,8 @@ main()
                         "cli_include",
                         "cli_validate",
                         "cli_bad",
-                        "cli_sub"})
+                        "cli_sub",
+                        "cli_probes"})
     fs::remove_all(d);
   const std::string velocity_2 =
     "subsection Impactor\n set Initial velocity = 2\nend\n";
@@ -213,6 +214,65 @@ main()
     check("-s with a bad value: exit 1, one line naming the entry",
           code == 1 && n_lines(err) == 1 &&
             contains(err, "Impactor/Initial velocity"));
+  }
+
+  // --print-parameters: the allowed values or range before every entry,
+  // and the range listed is the one the program enforces.
+  {
+    const int          code    = run("--print-parameters");
+    const std::string  listing = read("cli.stdout");
+    std::istringstream lines(listing);
+    std::string        line, previous, vtu_allowed;
+    unsigned int       n_set = 0, n_annotated = 0;
+    while (std::getline(lines, line))
+      {
+        if (line.find_first_not_of(' ') != std::string::npos &&
+            line.compare(line.find_first_not_of(' '), 4, "set ") == 0)
+          {
+            ++n_set;
+            n_annotated += contains(previous, "# Allowed: [");
+            if (contains(line, "set VTU interval"))
+              vtu_allowed = previous;
+          }
+        previous = line;
+      }
+    check("--print-parameters: exit 0, every entry preceded by its "
+          "allowed values",
+          code == 0 && n_set > 50 && n_annotated == n_set);
+    write("cli_listing.prm", listing);
+    check("... the listing is a valid .prm",
+          run("--validate cli_listing.prm") == 0);
+    check("... Output/VTU interval listed as 0...100000000, and enforced",
+          contains(vtu_allowed, "[Integer range 0...100000000 (inclusive)]") &&
+            run("--validate cli_validate.prm -s 'Output/VTU "
+                "interval=100000000'") == 0 &&
+            run("--validate cli_validate.prm -s 'Output/VTU "
+                "interval=100000001'") == 1);
+  }
+
+  // Output/Probe points through the executable.
+  {
+    write("cli_probes.prm", scene("cli_probes"));
+    const int code = run("cli_probes.prm -s 'Output/Probe points=corner: "
+                         "0, 0, 0; q: 0.25a, 0.5b, 15'");
+    const std::string probes = read("cli_probes/probes.csv");
+    check("named probes: probes.csv has t_us, support_reaction_z_N, the "
+          "named columns and a row per history row",
+          code == 0 &&
+            contains(probes, "t_us, support_reaction_z_N, corner_ux_um") &&
+            contains(probes, "q_sigma_yz_MPa\n") &&
+            n_lines(probes) == n_lines(history("cli_probes")));
+    const int         outside = run("cli_probes.prm -s 'Output/Probe "
+                                    "points=far: 250, 50, 5'");
+    const std::string err     = read("cli.stderr");
+    check("a probe outside the plate: exit 1, one line naming the entry "
+          "and the point",
+          outside == 1 && n_lines(err) == 1 &&
+            contains(err, "Output/Probe points") && contains(err, "'far'"));
+    const int bad = run("cli_probes.prm -s 'Output/Probe points=p: 1, 2'");
+    check("a probe with two coordinates: exit 1, one line naming the entry",
+          bad == 1 && n_lines(read("cli.stderr")) == 1 &&
+            contains(read("cli.stderr"), "Output/Probe points"));
   }
   std::printf("%s\n", all_ok ? "OK" : "FAILED");
   return 0;
