@@ -1,27 +1,42 @@
 #!/usr/bin/python3
 """Overlay the time histories of several fgimpact runs, like Figs. 3-8 of
-Asemi & Salami (2015).
+Asemi & Salami (2015), with their energies, force-indentation curves and
+probes.
 
 Usage:
   plot_histories.py --out DIR [--title T] [--departure]
+                    [--format png|pdf|svg] [--time-window T0 T1]
                     [--label L1] run_dir1 [--label L2] run_dir2 ...
+  plot_histories.py --help
 
 Each run_dir must contain the history.csv written by fgimpact (and, for
 --departure, summary.txt and parameters.prm). A "--label L" applies to the
 run directory that follows it; without it the label is the directory's
-basename.
+basename. --format picks the file type (default png); --time-window T0 T1
+(in us, T0 < T1) restricts every time axis and the force-indentation
+curves to T0 <= t <= T1. Exit code 0, or 2 with one error line for a bad
+command line or a missing/malformed file.
 
-Writes into DIR (created if missing):
-  contact_force.png        contact force F (N) vs t (us)          Figs. 3a, 6a, 8a
-  impactor_velocity.png    projectile velocity (m/s) vs t (us)    Fig. 3b
-  midplane_deflection.png  w at (a/2, b/2, h/2) (um) vs t (us)    Figs. 4a, 6b, 8b
-  top_deflection.png       w at (a/2, b/2, h) (um) vs t (us)      Fig. 4b
-  sigma_yy.png             sigma_yy at the mid-plane centre (MPa)  Fig. 5a
-  sigma_zz.png             sigma_zz at the mid-plane centre (MPa)  Fig. 5b
+Writes into DIR (created if missing), EXT = the --format:
+  contact_force.EXT        contact force F (N) vs t (us)          Figs. 3a, 6a, 8a
+  impactor_velocity.EXT    projectile velocity (m/s) vs t (us)    Fig. 3b
+  midplane_deflection.EXT  w at (a/2, b/2, h/2) (um) vs t (us)    Figs. 4a, 6b, 8b
+  top_deflection.EXT       w at (a/2, b/2, h) (um) vs t (us)      Fig. 4b
+  sigma_yy.EXT             sigma_yy at the mid-plane centre (MPa)  Fig. 5a
+  sigma_zz.EXT             sigma_zz at the mid-plane centre (MPa)  Fig. 5b
+  energy.EXT               impactor, plate kinetic, strain, contact and
+                           total energy (J) vs t (us)
+  force_indentation.EXT    contact force F (N) vs indentation (um), the
+                           samples in contact (indentation > 0)
+and if a run_dir holds probes.csv (Output/Probe points):
+  probes.EXT               per probe point u_z (um) and sigma_xx, sigma_zz
+                           (MPa) vs t, and the support reaction (N) vs t
 and with --departure:
-  departure_velocity.png   departure velocity vs V0 (and their ratio), Fig. 7
+  departure_velocity.EXT   departure velocity vs V0 (and their ratio), Fig. 7
+The paths written are printed, one per line.
 
-Needs only the csv module and matplotlib (Agg backend); run it with
+Needs only the csv module and matplotlib (Agg backend, imported only to
+plot: --help and the argument checks work without it); run it with
 /usr/bin/python3, whose matplotlib is installed.
 """
 
@@ -30,29 +45,39 @@ import math
 import os
 import sys
 
-import matplotlib
+plt = None  # matplotlib.pyplot, imported by load_matplotlib()
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
+
+def load_matplotlib():
+    global plt
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as pyplot
+    except ImportError:
+        fail("matplotlib is not installed for "
+                 "%s; run /usr/bin/python3 scripts/plot_histories.py"
+                 % sys.executable)
+    plt = pyplot
 
 
 # (file name, history.csv column, y-axis label, title)
 FIGURES = [
-    ("contact_force.png", "contact_force_N", "Contact force $F$ (N)",
+    ("contact_force", "contact_force_N", "Contact force $F$ (N)",
      "Contact force"),
-    ("impactor_velocity.png", "impactor_velocity_m_s",
+    ("impactor_velocity", "impactor_velocity_m_s",
      "Projectile velocity (m/s)\n(positive towards the plate)",
      "Projectile velocity"),
-    ("midplane_deflection.png", "midplane_deflection_um",
+    ("midplane_deflection", "midplane_deflection_um",
      r"Mid-plane deflection $w(a/2,\,b/2,\,h/2)$ ($\mu$m)",
      "Mid-plane deflection at the plate centre"),
-    ("top_deflection.png", "top_deflection_um",
+    ("top_deflection", "top_deflection_um",
      r"Top deflection $w(a/2,\,b/2,\,h)$ ($\mu$m)",
      "Top-surface deflection at the plate centre"),
-    ("sigma_yy.png", "sigma_yy_mid_MPa",
+    ("sigma_yy", "sigma_yy_mid_MPa",
      r"In-plane stress $\sigma_{yy}$ (MPa)",
      r"In-plane stress $\sigma_{yy}$ at $(a/2,\,b/2,\,h/2)$"),
-    ("sigma_zz.png", "sigma_zz_mid_MPa",
+    ("sigma_zz", "sigma_zz_mid_MPa",
      r"Peel stress $\sigma_{zz}$ (MPa)",
      r"Peel stress $\sigma_{zz}$ at $(a/2,\,b/2,\,h/2)$"),
 ]
@@ -60,18 +85,26 @@ FIGURES = [
 TIME_LABEL = r"Time $t$ ($\mu$s)"
 
 
-def usage(message=None, status=2):
-    stream = sys.stderr if message else sys.stdout
-    if message:
-        stream.write("plot_histories.py: error: %s\n\n" % message)
-    stream.write(__doc__.split("\nWrites")[0].strip() + "\n")
-    sys.exit(status)
+def fail(message):
+    """A missing or malformed input: one line, exit 2."""
+    sys.stderr.write("plot_histories.py: error: %s\n" % message)
+    sys.exit(2)
+
+
+def usage(message=None):
+    """--help: the whole text, exit 0; an error: one line, exit 2."""
+    if message is None:
+        sys.stdout.write(__doc__.strip() + "\n")
+        sys.exit(0)
+    sys.stderr.write("plot_histories.py: error: %s (see --help)\n" % message)
+    sys.exit(2)
 
 
 def parse_arguments(argv):
     out = None
     title = None
     departure = False
+    options = {"format": "png", "window": None}
     runs = []  # (label, directory)
     pending_label = None
     i = 0
@@ -102,6 +135,27 @@ def parse_arguments(argv):
             title = arg.split("=", 1)[1]
         elif arg == "--departure":
             departure = True
+        elif arg == "--format" or arg.startswith("--format="):
+            if arg == "--format":
+                if i + 1 >= len(argv):
+                    usage("--format needs a value (png, pdf or svg)")
+                i += 1
+                value = argv[i]
+            else:
+                value = arg.split("=", 1)[1]
+            if value not in ("png", "pdf", "svg"):
+                usage("--format '%s': use png, pdf or svg" % value)
+            options["format"] = value
+        elif arg == "--time-window":
+            if i + 2 >= len(argv):
+                usage("--time-window needs two times T0 T1 (us)")
+            t0, t1 = to_float(argv[i + 1]), to_float(argv[i + 2])
+            if not (t0 < t1):  # also NaN
+                usage("--time-window '%s' '%s': need numbers T0 < T1 (us)"
+                      % (argv[i + 1], argv[i + 2]))
+            options["window"] = (t0, t1)
+            i += 3
+            continue
         elif arg.startswith("--"):
             usage("unknown option '%s'" % arg)
         else:
@@ -117,14 +171,15 @@ def parse_arguments(argv):
         usage("no run directories given")
     if pending_label is not None:
         usage("--label '%s' is not followed by a run directory" % pending_label)
-    return out, title, departure, runs
+    return out, title, departure, runs, options
 
 
-def read_history(run_dir):
-    """Columns of run_dir/history.csv as a dict name -> list of floats."""
-    path = os.path.join(run_dir, "history.csv")
+def read_history(run_dir, name="history.csv"):
+    """Columns of run_dir/name (a CSV written by fgimpact) as a dict
+    name -> list of floats."""
+    path = os.path.join(run_dir, name)
     if not os.path.isfile(path):
-        sys.exit("plot_histories.py: error: %s not found" % path)
+        fail("%s not found" % path)
     with open(path, newline="") as f:
         reader = csv.reader(f, skipinitialspace=True)
         header = [h.strip() for h in next(reader)]
@@ -133,12 +188,12 @@ def read_history(run_dir):
             if not row:
                 continue
             if len(row) != len(header):
-                sys.exit("plot_histories.py: error: %s: a row has %d fields, "
+                fail("%s: a row has %d fields, "
                          "the header %d" % (path, len(row), len(header)))
             for h, value in zip(header, row):
                 columns[h].append(float(value))
     if not columns.get("t_us"):
-        sys.exit("plot_histories.py: error: %s has no data rows" % path)
+        fail("%s has no data rows" % path)
     return columns
 
 
@@ -196,46 +251,144 @@ def style_axes(ax, title, xlabel, ylabel):
     ax.axhline(0.0, color="0.6", linewidth=0.6, zorder=0)
 
 
-def plot_time_histories(out, title, runs, histories):
+def in_window(t, window):
+    return window is None or window[0] <= t <= window[1]
+
+
+def set_time_axis(ax, histories, window):
+    if window is not None:
+        ax.set_xlim(*window)
+    else:
+        ax.set_xlim(0.0, max(h["t_us"][-1] for h in histories))
+
+
+def save(fig, out, name, options):
+    fig.tight_layout()
+    path = os.path.join(out, "%s.%s" % (name, options["format"]))
+    fig.savefig(path, dpi=130)
+    plt.close(fig)
+    return path
+
+
+def column(history, name, run_dir, file_name="history.csv"):
+    if name not in history:
+        fail("%s/%s has no column '%s'" % (run_dir, file_name, name))
+    return history[name]
+
+
+def plot_time_histories(out, title, runs, histories, options):
     written = []
-    t_max = max(h["t_us"][-1] for h in histories)
-    for file_name, column, ylabel, fig_title in FIGURES:
+    for file_name, name, ylabel, fig_title in FIGURES:
         fig, ax = plt.subplots(figsize=(7.5, 4.8))
         for (label, run_dir), history in zip(runs, histories):
-            if column not in history:
-                sys.exit("plot_histories.py: error: %s/history.csv has no "
-                         "column '%s'" % (run_dir, column))
-            ax.plot(history["t_us"], history[column], label=label,
-                    linewidth=1.4)
+            ax.plot(history["t_us"], column(history, name, run_dir),
+                    label=label, linewidth=1.4)
         style_axes(ax, fig_title if not title else "%s\n%s" % (title, fig_title),
                    TIME_LABEL, ylabel)
-        ax.set_xlim(0.0, t_max)
+        set_time_axis(ax, histories, options["window"])
         ax.legend(loc="best", fontsize="small", framealpha=0.85)
-        fig.tight_layout()
-        path = os.path.join(out, file_name)
-        fig.savefig(path, dpi=130)
-        plt.close(fig)
-        written.append(path)
+        written.append(save(fig, out, file_name, options))
     return written
 
 
-def plot_departure(out, title, runs):
+ENERGIES = [("energy_impactor_J", "impactor"),
+            ("energy_plate_kinetic_J", "plate kinetic"),
+            ("energy_strain_J", "strain"),
+            ("energy_contact_J", "contact"),
+            ("energy_total_J", "total")]
+LINESTYLES = ["-", "--", ":", "-."]
+
+
+def plot_energy(out, title, runs, histories, options):
+    """Colours: the energy; line styles: the run."""
+    fig, ax = plt.subplots(figsize=(7.5, 4.8))
+    for k, ((label, run_dir), history) in enumerate(zip(runs, histories)):
+        for c, (name, what) in enumerate(ENERGIES):
+            ax.plot(history["t_us"], column(history, name, run_dir),
+                    color="C%d" % c, linestyle=LINESTYLES[k % 4],
+                    linewidth=1.6 if what == "total" else 1.2,
+                    label="%s, %s" % (what, label) if len(runs) > 1 else what)
+    style_axes(ax, "Energies" if not title else "%s\nEnergies" % title,
+               TIME_LABEL, "Energy (J)")
+    set_time_axis(ax, histories, options["window"])
+    ax.legend(loc="best", fontsize="x-small", framealpha=0.85)
+    return [save(fig, out, "energy", options)]
+
+
+def plot_force_indentation(out, title, runs, histories, options):
+    fig, ax = plt.subplots(figsize=(7.5, 4.8))
+    for (label, run_dir), history in zip(runs, histories):
+        alpha = column(history, "indentation_um", run_dir)
+        force = column(history, "contact_force_N", run_dir)
+        # In contact only: after separation indentation_um is minus the gap.
+        points = [(a, f) for t, a, f in zip(history["t_us"], alpha, force)
+                  if a > 0 and in_window(t, options["window"])]
+        ax.plot([p[0] for p in points], [p[1] for p in points], label=label,
+                linewidth=1.4)
+    style_axes(ax, "Force-indentation" if not title
+               else "%s\nForce-indentation" % title,
+               r"Indentation $\alpha$ ($\mu$m)", "Contact force $F$ (N)")
+    ax.legend(loc="best", fontsize="small", framealpha=0.85)
+    return [save(fig, out, "force_indentation", options)]
+
+
+def probe_names(probes):
+    """The probe names of a probes.csv, in column order."""
+    return [c[:-len("_uz_um")] for c in probes if c.endswith("_uz_um")]
+
+
+def plot_probes(out, title, runs, options):
+    """probes.csv of the runs that have one: colours the probe, line styles
+    the run."""
+    tables = [(label, run_dir, read_history(run_dir, "probes.csv"))
+              for label, run_dir in runs
+              if os.path.isfile(os.path.join(run_dir, "probes.csv"))]
+    if not tables:
+        return []
+    panels = [("_uz_um", r"$u_z$ ($\mu$m)"),
+              ("_sigma_xx_MPa", r"$\sigma_{xx}$ (MPa)"),
+              ("_sigma_zz_MPa", r"$\sigma_{zz}$ (MPa)")]
+    fig, axes = plt.subplots(2, 2, figsize=(11, 7.5))
+    axes = axes.flatten()
+    for k, (label, run_dir, probes) in enumerate(tables):
+        style = LINESTYLES[k % 4]
+        suffix = ", %s" % label if len(tables) > 1 else ""
+        for c, name in enumerate(probe_names(probes)):
+            for ax, (ending, _) in zip(axes, panels):
+                ax.plot(probes["t_us"],
+                        column(probes, name + ending, run_dir, "probes.csv"),
+                        color="C%d" % c, linestyle=style,
+                        label=name + suffix)
+        axes[3].plot(probes["t_us"],
+                     column(probes, "support_reaction_z_N", run_dir,
+                            "probes.csv"),
+                     color="C0", linestyle=style, label="reaction" + suffix)
+    for ax, (_, ylabel) in zip(axes, panels + [(None, "Support reaction (N)")]):
+        style_axes(ax, ylabel, TIME_LABEL, ylabel)
+        set_time_axis(ax, [t[2] for t in tables], options["window"])
+        ax.legend(loc="best", fontsize="x-small", framealpha=0.85)
+    if title:
+        fig.suptitle(title)
+    return [save(fig, out, "probes", options)]
+
+
+def plot_departure(out, title, runs, options):
     points = []  # (V0, V_departure, label)
     for label, run_dir in runs:
         v0 = to_float(read_parameter(run_dir, "Impactor", "Initial velocity"))
         vd = to_float(read_summary(run_dir).get("departure_velocity_m_s"))
         if math.isnan(v0):
-            sys.exit("plot_histories.py: error: cannot read Impactor/Initial "
+            fail("cannot read Impactor/Initial "
                      "velocity from %s/parameters.prm" % run_dir)
         if math.isnan(vd):
             sys.stderr.write("plot_histories.py: warning: %s has no departure "
                              "velocity (still in contact at the end time?); "
-                             "left out of departure_velocity.png\n" % run_dir)
+                             "left out of departure_velocity\n" % run_dir)
             continue
         points.append((v0, vd, label))
     if not points:
         sys.stderr.write("plot_histories.py: warning: no departure velocities; "
-                         "departure_velocity.png not written\n")
+                         "departure_velocity not written\n")
         return []
     points.sort()
     v0s = [p[0] for p in points]
@@ -269,20 +422,20 @@ def plot_departure(out, title, runs):
     ax2.set_ylim(lo - pad, hi + pad)
     if title:
         fig.suptitle(title)
-    fig.tight_layout()
-    path = os.path.join(out, "departure_velocity.png")
-    fig.savefig(path, dpi=130)
-    plt.close(fig)
-    return [path]
+    return [save(fig, out, "departure_velocity", options)]
 
 
 def main(argv):
-    out, title, departure, runs = parse_arguments(argv)
+    out, title, departure, runs, options = parse_arguments(argv)
     histories = [read_history(run_dir) for _, run_dir in runs]
+    load_matplotlib()
     os.makedirs(out, exist_ok=True)
-    written = plot_time_histories(out, title, runs, histories)
+    written = plot_time_histories(out, title, runs, histories, options)
+    written += plot_energy(out, title, runs, histories, options)
+    written += plot_force_indentation(out, title, runs, histories, options)
+    written += plot_probes(out, title, runs, options)
     if departure:
-        written += plot_departure(out, title, runs)
+        written += plot_departure(out, title, runs, options)
     for path in written:
         print(path)
 

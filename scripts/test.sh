@@ -10,6 +10,8 @@ cmake --build build -j2 --target fgimpact
 allow_local_mpirun
 # deal.II's test macros build each test when ctest runs it.
 (cd build && ctest -j2 --output-on-failure)
+# The plotting script (skips the drawing without matplotlib, as in CI).
+scripts/check_plot_histories.sh build
 
 # The unit tests on small meshes again against deal.II's debug library
 # (libdeal.ii.g.so), so that its Assert checks (index ranges, dimensions,

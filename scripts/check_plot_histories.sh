@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Checks scripts/plot_histories.py (run by scripts/test.sh after ctest):
+# --help exits 0 and names every figure it writes; a bad command line
+# exits 2 with one error line; with matplotlib installed, it draws a small
+# run's figures in svg and pdf (file signatures checked) for a time window.
+# Skips cleanly (exit 0, a note) without python3 or matplotlib: CI does not
+# install python3-matplotlib.  Usage: scripts/check_plot_histories.sh [BUILD_DIR]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+python=/usr/bin/python3
+[ -x "$python" ] || python=$(command -v python3 || true)
+if [ -z "$python" ]; then
+  echo "check_plot_histories: skipped (no python3)"
+  exit 0
+fi
+plot="$python scripts/plot_histories.py"
+failed=0
+check() { # what, command...
+  local what=$1
+  shift
+  if "$@"; then echo "check_plot_histories: $what: yes"; else
+    echo "check_plot_histories: $what: NO"
+    failed=1
+  fi
+}
+exits() { # code, arguments...: exit code and one line on stderr
+  local code=$1
+  shift
+  local status=0
+  $plot "$@" >/dev/null 2>"$work/err" || status=$?
+  [ "$status" = "$code" ] && [ "$(wc -l <"$work/err")" = 1 ]
+}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+help=$($plot --help) && help_ok=1 || help_ok=0
+names_all=1
+for name in contact_force impactor_velocity midplane_deflection top_deflection \
+  sigma_yy sigma_zz energy force_indentation probes departure_velocity; do
+  grep -q "^  $name\.EXT" <<<"$help" || names_all=0
+done
+check "--help exits 0 and lists every figure" test "$help_ok$names_all" = 11
+check "--format gif refused (exit 2, one line)" exits 2 --out "$work/f" --format gif "$work"
+check "--time-window 5 2 refused" exits 2 --out "$work/f" --time-window 5 2 "$work"
+check "an unknown option refused" exits 2 --out "$work/f" --colour "$work"
+check "a directory without history.csv refused" exits 2 --out "$work/f" "$work"
+
+if ! "$python" -c "import matplotlib" 2>/dev/null; then
+  echo "check_plot_histories: drawing skipped (no matplotlib for $python)"
+  exit $failed
+fi
+"$build/fgimpact" tests/run/default_small.prm -s "Output/Directory=$work/run" \
+  -s "Output/Log interval=0" -s "Output/Print timing=false" >/dev/null
+for format in svg pdf; do
+  $plot --out "$work/$format" --format "$format" --time-window 0 50 \
+    --departure "$work/run" >"$work/list"
+  ok=1
+  [ "$(wc -l <"$work/list")" = 10 ] || ok=0
+  while read -r file; do
+    case $format in
+    svg) grep -q "<svg" "$file" || ok=0 ;;
+    pdf) [ "$(head -c 4 "$file")" = "%PDF" ] || ok=0 ;;
+    esac
+  done <"$work/list"
+  check "draws the 10 figures as $format" test $ok = 1
+done
+exit $failed
