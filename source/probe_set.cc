@@ -223,6 +223,72 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The cell of the scalar DoFHandler on the same mesh cell.
+    DoFHandler<3>::active_cell_iterator
+    scalar_cell(const DoFHandler<3>                       &scalar_dofs,
+                const DoFHandler<3>::active_cell_iterator &cell)
+    {
+      return DoFHandler<3>::active_cell_iterator(
+        &scalar_dofs.get_triangulation(),
+        cell->level(),
+        cell->index(),
+        &scalar_dofs);
+    }
+
+    /// Ghosted vectors on scalar_dofs: [0] the number of cells (on all
+    /// ranks) at each node, [1 + p] the coefficients c_j of point p: its
+    /// shape function values N_j(x_p), averaged over the cells that
+    /// contain it.
+    std::vector<TrilinosWrappers::MPI::Vector>
+    recovery_coefficients(const PlateModel            &plate,
+                          const DoFHandler<3>         &scalar_dofs,
+                          const std::vector<Point<3>> &points)
+    {
+      const MPI_Comm comm  = plate.get_mpi_communicator();
+      const IndexSet owned = scalar_dofs.locally_owned_dofs();
+      IndexSet       relevant;
+      DoFTools::extract_locally_relevant_dofs(scalar_dofs, relevant);
+      const FiniteElement<3>              &scalar_fe = scalar_dofs.get_fe();
+      std::vector<types::global_dof_index> sdofs(scalar_fe.n_dofs_per_cell());
+
+      std::vector<TrilinosWrappers::MPI::Vector> sums(1 + points.size());
+      for (auto &v : sums)
+        v.reinit(owned, relevant, comm, /*vector_writable=*/true);
+      for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            scalar_cell(scalar_dofs, cell)->get_dof_indices(sdofs);
+            for (const auto dof : sdofs)
+              sums[0](dof) += 1.;
+          }
+      for (unsigned int p = 0; p < points.size(); ++p)
+        {
+          const auto cells = locally_owned_cells_containing(plate, points[p]);
+          const unsigned int n_cells =
+            Utilities::MPI::sum(static_cast<unsigned int>(cells.size()), comm);
+          for (const auto &[cell, unit_point] : cells)
+            {
+              scalar_cell(scalar_dofs, cell)->get_dof_indices(sdofs);
+              for (unsigned int k = 0; k < sdofs.size(); ++k)
+                sums[1 + p](sdofs[k]) +=
+                  scalar_fe.shape_value(k, unit_point) / n_cells;
+            }
+        }
+      std::vector<TrilinosWrappers::MPI::Vector> ghosted(sums.size());
+      for (unsigned int k = 0; k < sums.size(); ++k)
+        {
+          sums[k].compress(VectorOperation::add);
+          ghosted[k].reinit(owned, relevant, comm);
+          ghosted[k] = sums[k];
+        }
+      return ghosted;
+    }
+  } // namespace
+
+
+
   void
   ProbeSet::setup_stress_weights(const PlateModel &plate)
   {
@@ -234,51 +300,9 @@ namespace fgimpact
     DoFHandler<3> scalar_dofs(plate.get_dof_handler().get_triangulation());
     scalar_dofs.distribute_dofs(plate.get_fe().base_element(0));
     const FiniteElement<3> &scalar_fe = scalar_dofs.get_fe();
-    const IndexSet          owned     = scalar_dofs.locally_owned_dofs();
-    IndexSet                relevant;
-    DoFTools::extract_locally_relevant_dofs(scalar_dofs, relevant);
-    const auto scalar_cell = [&](const auto &cell) {
-      return DoFHandler<3>::active_cell_iterator(
-        &scalar_dofs.get_triangulation(),
-        cell->level(),
-        cell->index(),
-        &scalar_dofs);
-    };
+    const unsigned int      n_points  = points.size();
+    const auto ghosted = recovery_coefficients(plate, scalar_dofs, points);
     std::vector<types::global_dof_index> sdofs(scalar_fe.n_dofs_per_cell());
-
-    const unsigned int n_points = points.size();
-    // count, then c of every point, as writable-ghost vectors.
-    std::vector<TrilinosWrappers::MPI::Vector> sums(1 + n_points);
-    for (auto &v : sums)
-      v.reinit(owned, relevant, mpi_communicator, /*vector_writable=*/true);
-    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          scalar_cell(cell)->get_dof_indices(sdofs);
-          for (const auto dof : sdofs)
-            sums[0](dof) += 1.;
-        }
-    for (unsigned int p = 0; p < n_points; ++p)
-      {
-        const auto cells = locally_owned_cells_containing(plate, points[p]);
-        const unsigned int n_cells =
-          Utilities::MPI::sum(static_cast<unsigned int>(cells.size()),
-                              mpi_communicator);
-        for (const auto &[cell, unit_point] : cells)
-          {
-            scalar_cell(cell)->get_dof_indices(sdofs);
-            for (unsigned int k = 0; k < sdofs.size(); ++k)
-              sums[1 + p](sdofs[k]) +=
-                scalar_fe.shape_value(k, unit_point) / n_cells;
-          }
-      }
-    std::vector<TrilinosWrappers::MPI::Vector> ghosted(1 + n_points);
-    for (unsigned int k = 0; k <= n_points; ++k)
-      {
-        sums[k].compress(VectorOperation::add);
-        ghosted[k].reinit(owned, relevant, mpi_communicator);
-        ghosted[k] = sums[k];
-      }
 
     // Each cell's stress at its scalar support points, as in
     // StressRecovery::recover().
@@ -302,7 +326,7 @@ namespace fgimpact
     for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          scalar_cell(cell)->get_dof_indices(sdofs);
+          scalar_cell(scalar_dofs, cell)->get_dof_indices(sdofs);
           bool needed = false;
           for (unsigned int p = 0; p < n_points; ++p)
             for (const auto dof : sdofs)
