@@ -57,13 +57,14 @@ namespace fgimpact
                 options.study.push_back(value);
               else
                 {
-                  char *end = nullptr;
-                  const long k = std::strtol(value.c_str(), &end, 10);
+                  char      *end = nullptr;
+                  const long k   = std::strtol(value.c_str(), &end, 10);
                   if (value.empty() || *end != '\0' || k < 0 || k > 99999)
                     {
                       options.action = Action::error;
                       options.error  = "--study-case needs a case number, "
-                                      "not '" + value + "'";
+                                       "not '" +
+                                      value + "'";
                       return options;
                     }
                   options.study_case = static_cast<int>(k);

@@ -40,8 +40,8 @@ namespace fgimpact
              "holds for the average acceleration rule only)";
     if (p.output.vtu_interval > 0)
       return "Output/VTU interval > 0 (VTU needs the fields)";
-    const double bytes = 16. * ti.n_steps(ti.time_step) *
-                         plate.locally_owned_dofs().n_elements();
+    const double bytes =
+      16. * ti.n_steps(ti.time_step) * plate.locally_owned_dofs().n_elements();
     if (bytes > memory_limit)
       return "the unit responses would need " +
              std::to_string(static_cast<long long>(bytes / 1e6)) +
@@ -54,22 +54,20 @@ namespace fgimpact
   bool
   ImpactStudyEngine::prepare(const Parameters &p)
   {
-    Timer                timer;
-    const Impactor       impactor(p.impactor);
+    setup_time = total_timer.wall_time();
+    Timer                 timer;
+    const Impactor        impactor(p.impactor);
     const HertzContactLaw law(p.contact, plate.get_material(), impactor);
-    const PlateGeometry &g = plate.get_geometry();
-    const auto           contact =
-      create_contact_model(p.contact_model,
-                           law,
-                           plate,
-                           impactor.radius(),
-                           impactor.impact_point(g.length(), g.width()),
-                           expected_contact_radius(p,
-                                                   plate.get_material(),
-                                                   g.thickness()),
-                           top_face_modulus(plate.get_material(),
-                                            g.thickness()));
-    dofs = contact->contact_dofs();
+    const PlateGeometry  &g       = plate.get_geometry();
+    const auto            contact = create_contact_model(
+      p.contact_model,
+      law,
+      plate,
+      impactor.radius(),
+      impactor.impact_point(g.length(), g.width()),
+      expected_contact_radius(p, plate.get_material(), g.thickness()),
+      top_face_modulus(plate.get_material(), g.thickness()));
+    dofs               = contact->contact_dofs();
     const auto stepper = create_time_stepper(p.time_integration,
                                              p.linear_solver,
                                              plate,
@@ -86,39 +84,55 @@ namespace fgimpact
     const PointProbe mid(plate, points[0]), top(plate, points[1]);
     contact_response.assign(n_steps, 0.);
     probe_response.assign(n_steps, PlateSample());
-    const std::size_t          n_local = plate.locally_owned_dofs().n_elements();
-    LAPACKFullMatrix<double>   V(n_steps, n_local), MV(n_steps, n_local);
-    const bool                 supported = stepper->unit_response(
-      n_steps,
-      [&](const unsigned int                   j,
-          const TrilinosWrappers::MPI::Vector &u,
-          const TrilinosWrappers::MPI::Vector &v,
-          const TrilinosWrappers::MPI::Vector &Mv) {
-        contact_response[j - 1] = plate.dof_values(u, dofs)[0];
-        probe_response[j - 1]   = probe_plate(mid, top, u);
-        for (std::size_t i = 0; i < n_local; ++i)
-          {
-            V(j - 1, i)  = v.begin()[i];
-            MV(j - 1, i) = Mv.begin()[i];
-          }
-      });
+    const std::size_t n_local = plate.locally_owned_dofs().n_elements();
+    // Column j - 1: the step's local velocity values (contiguous).
+    LAPACKFullMatrix<double> V(n_local, n_steps), MV(n_local, n_steps);
+    const bool               supported =
+      stepper->unit_response(n_steps,
+                             [&](const unsigned int                   j,
+                                 const TrilinosWrappers::MPI::Vector &u,
+                                 const TrilinosWrappers::MPI::Vector &v,
+                                 const TrilinosWrappers::MPI::Vector &Mv) {
+                               contact_response[j - 1] =
+                                 plate.dof_values(u, dofs)[0];
+                               probe_response[j - 1] = probe_plate(mid, top, u);
+                               for (std::size_t i = 0; i < n_local; ++i)
+                                 {
+                                   V(i, j - 1)  = v.begin()[i];
+                                   MV(i, j - 1) = Mv.begin()[i];
+                                 }
+                             });
     if (!supported)
       {
         reason = "the time stepper has no unit response here (an iterative "
                  "linear solver: set Linear solver/Type = direct)";
         return false;
       }
-    compliance = -contact_response[0];
+    compliance    = -contact_response[0];
+    response_time = timer.wall_time() - factorization_time;
 
     LAPACKFullMatrix<double> G(n_steps, n_steps);
-    V.mTmult(G, MV);
+    V.Tmmult(G, MV);
     gram.reinit(n_steps, n_steps);
     for (unsigned int i = 0; i < n_steps; ++i)
       for (unsigned int j = 0; j < n_steps; ++j)
         gram(i, j) = G(i, j);
     Utilities::MPI::sum(gram, plate.get_mpi_communicator(), gram);
     prepare_time = timer.wall_time();
+    gram_time    = prepare_time - response_time - factorization_time;
     return true;
+  }
+
+
+
+  std::string
+  ImpactStudyEngine::preparation_timing() const
+  {
+    std::ostringstream s;
+    s << "factorization " << factorization_time << " s, unit response pass "
+      << response_time << " s (" << n_steps << " solves), Gram matrix "
+      << gram_time << " s";
+    return s.str();
   }
 
 
@@ -161,20 +175,17 @@ namespace fgimpact
   const ImpactResults &
   ImpactStudyEngine::run_case(const Parameters &p)
   {
-    const Impactor       impactor(p.impactor);
+    const Impactor        impactor(p.impactor);
     const HertzContactLaw law(p.contact, plate.get_material(), impactor);
-    const PlateGeometry &g = plate.get_geometry();
-    const auto           contact =
-      create_contact_model(p.contact_model,
-                           law,
-                           plate,
-                           impactor.radius(),
-                           impactor.impact_point(g.length(), g.width()),
-                           expected_contact_radius(p,
-                                                   plate.get_material(),
-                                                   g.thickness()),
-                           top_face_modulus(plate.get_material(),
-                                            g.thickness()));
+    const PlateGeometry  &g       = plate.get_geometry();
+    const auto            contact = create_contact_model(
+      p.contact_model,
+      law,
+      plate,
+      impactor.radius(),
+      impactor.impact_point(g.length(), g.width()),
+      expected_contact_radius(p, plate.get_material(), g.thickness()),
+      top_face_modulus(plate.get_material(), g.thickness()));
     AssertThrow(contact->contact_dofs() == dofs,
                 ExcMessage("study: a case's contact node differs from the "
                            "group's; vary Impactor/Impact point x/y only in "
@@ -184,17 +195,18 @@ namespace fgimpact
                            "from the group's."));
     const double m = impactor.mass(), V0 = impactor.initial_velocity();
 
-    results             = ImpactResults();
-    results.n_dofs      = plate.n_dofs();
-    results.n_mpi_ranks = Utilities::MPI::n_mpi_processes(
-      plate.get_mpi_communicator());
+    results        = ImpactResults();
+    results.n_dofs = plate.n_dofs();
+    results.n_mpi_ranks =
+      Utilities::MPI::n_mpi_processes(plate.get_mpi_communicator());
     results.impactor_mass      = m;
     results.plate_mass         = plate.total_mass();
-    results.setup_time         = total_timer.wall_time();
+    results.setup_time         = setup_time;
     results.factorization_time = factorization_time;
     contact->fill_results(results);
 
-    ImpactMonitor monitor(p.output, plate, *contact, m, V0, dt, n_steps, results);
+    ImpactMonitor monitor(
+      p.output, plate, *contact, m, V0, dt, n_steps, results);
     for (const auto &observer : observers)
       monitor.add_row_observer(observer);
     ImpactorState ball;
@@ -244,8 +256,11 @@ namespace fgimpact
     monitor.close_output();
     AssertThrow(monitor.output_failure().empty(),
                 ExcOutputFailure(monitor.output_failure()));
-    monitor.finish(
-      ball, n_steps, "completed", loop_timer.wall_time(), total_timer.wall_time());
+    monitor.finish(ball,
+                   n_steps,
+                   "completed",
+                   loop_timer.wall_time(),
+                   total_timer.wall_time());
     return results;
   }
 } // namespace fgimpact

@@ -159,15 +159,15 @@ main(int argc, char *argv[])
 
   // A study (Study/Entries or --study): its own cases and outputs.
   if (!study.entries.empty() && options.action == CommandLine::Action::run)
-    return run_study(
-      study,
-      *input,
-      options.overrides,
-      options.study_case,
-      CommandLine::provenance(argc,
-                              argv,
-                              Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)),
-      logger);
+    return run_study(study,
+                     *input,
+                     options.overrides,
+                     options.study_case,
+                     CommandLine::provenance(argc,
+                                             argv,
+                                             Utilities::MPI::n_mpi_processes(
+                                               MPI_COMM_WORLD)),
+                     logger);
 
   try
     {

@@ -185,34 +185,12 @@ namespace fgimpact
                         const ImpactorState &ball,
                         const ContactState  &contact)
   {
-    PlateSample plate = probe_plate(mid_probe, top_probe, stepper.displacement());
+    PlateSample plate =
+      probe_plate(mid_probe, top_probe, stepper.displacement());
     plate.E_kinetic         = stepper.kinetic_energy();
     plate.E_strain          = stepper.strain_energy();
     plate.linear_iterations = stepper.linear_iterations();
     record(step, t, plate, ball, contact, &stepper);
-  }
-
-
-
-  std::array<Point<3>, 2>
-  history_probe_points(const PlateGeometry &geometry)
-  {
-    return {{geometry.centre(geometry.thickness() / 2),
-             geometry.centre(geometry.thickness())}};
-  }
-
-
-
-  PlateSample
-  probe_plate(const PointProbe                    &mid_probe,
-              const PointProbe                    &top_probe,
-              const TrilinosWrappers::MPI::Vector &u)
-  {
-    PlateSample plate;
-    plate.W_mid     = -mid_probe.displacement(u)[2];
-    plate.W_top     = -top_probe.displacement(u)[2];
-    plate.sigma_mid = mid_probe.stress(u);
-    return plate;
   }
 
 

@@ -75,9 +75,9 @@ namespace fgimpact
         entries.push_back(entry);
     combination = (prm.get("Combination") == "zip" ? Combination::zip :
                                                      Combination::product);
-    method =
-      (prm.get("Method") == "time loop" ? Method::time_loop : Method::automatic);
-    write_vtu = prm.get_bool("Write VTU");
+    method      = (prm.get("Method") == "time loop" ? Method::time_loop :
+                                                      Method::automatic);
+    write_vtu   = prm.get_bool("Write VTU");
     prm.leave_subsection();
   }
 
@@ -98,8 +98,7 @@ namespace fgimpact
         lists.push_back(
           Utilities::split_string_list(entry.substr(eq + 1), ','));
         AssertThrow(!lists.back().empty() && !paths.back().empty(),
-                    ExcMessage("Study/Entries: '" + entry +
-                               "' has no values"));
+                    ExcMessage("Study/Entries: '" + entry + "' has no values"));
       }
     std::vector<StudyCase> cases;
     if (paths.empty())
@@ -171,7 +170,7 @@ namespace fgimpact
                                                    "Contact/Contact stiffness",
                                                    "Newton/Tolerance",
                                                    "Newton/Max iterations"};
-      const bool mesh_follows_impactor =
+      const bool                         mesh_follows_impactor =
         p.geometry.contact_refinement_levels > 0 &&
         p.geometry.contact_refinement_radius == 0.;
       return others.count(path) > 0 ||
@@ -229,8 +228,7 @@ namespace fgimpact
     {
       run_on_root(MPI_COMM_WORLD, [&]() {
         prepare_output_directory(c.parameters.output);
-        write_file_atomically(c.parameters.output.directory +
-                                "/parameters.prm",
+        write_file_atomically(c.parameters.output.directory + "/parameters.prm",
                               c.prm_text);
         write_file_atomically(c.parameters.output.directory + "/input.prm",
                               input.original());
@@ -249,7 +247,7 @@ namespace fgimpact
 
     /// The group's cases: by convolution if the engine applies.
     void
-    run_group(const StudyParameters                &study,
+    run_group(const StudyParameters                 &study,
               const std::vector<const ParsedCase *> &cases,
               const InputFile                       &input,
               const Timer                           &study_timer)
@@ -278,8 +276,7 @@ namespace fgimpact
                 pcout << "  study: " << cases.size()
                       << " case(s) by convolution of the plate's unit "
                          "response ("
-                      << engine->preparation_time()
-                      << " s for the factorization and the response pass)\n";
+                      << engine->preparation_timing() << ")\n";
             }
         }
       if (!reason.empty())
@@ -333,8 +330,8 @@ namespace fgimpact
                     const std::string             &filename)
     {
       std::vector<std::string> keys;
-      for (const auto &[key, value] : read_summary(
-             cases[0].parameters.output.directory + "/summary.txt"))
+      for (const auto &[key, value] :
+           read_summary(cases[0].parameters.output.directory + "/summary.txt"))
         if (is_number(value) || value == "none")
           keys.push_back(key);
       std::ostringstream csv;
@@ -404,8 +401,7 @@ namespace fgimpact
             run_time_loop(cases[only_case], input);
             if (root)
               std::cout << "fgimpact: results in "
-                        << cases[only_case].parameters.output.directory
-                        << '\n';
+                        << cases[only_case].parameters.output.directory << '\n';
             return 0;
           }
         run_on_root(MPI_COMM_WORLD, [&]() {
@@ -416,7 +412,7 @@ namespace fgimpact
         if (root)
           std::cout << "fgimpact: study of " << cases.size() << " cases\n";
         // Groups in the order of their first case.
-        std::vector<std::string>                              order;
+        std::vector<std::string>                               order;
         std::map<std::string, std::vector<const ParsedCase *>> groups;
         for (const auto &c : cases)
           {

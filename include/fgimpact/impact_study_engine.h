@@ -93,19 +93,16 @@ namespace fgimpact
       observers.push_back(observer);
     }
 
-    /// Set-up and unit response pass (s), shared by the cases.
-    double
-    preparation_time() const
-    {
-      return prepare_time;
-    }
+    /// What the cases share (s): the factorization (with the compliance
+    /// solve), the unit response pass, the Gram matrix.
+    std::string
+    preparation_timing() const;
 
   private:
     /// One step of the case: the convolved plate, the contact solve and
     /// the impactor's update; returns the plate sample at step n + 1.
     PlateSample
-    convolved_plate(const unsigned int         n,
-                    const std::vector<double> &F) const;
+    convolved_plate(const unsigned int n, const std::vector<double> &F) const;
 
     const PlateModel &plate;
     const Timer      &total_timer;
@@ -113,9 +110,10 @@ namespace fgimpact
 
     std::vector<types::global_dof_index> dofs;
     double                               dt = 0, compliance = 0;
-    unsigned int                         n_steps = 0;
+    unsigned int                         n_steps            = 0;
     double                               factorization_time = 0;
     double                               prepare_time       = 0;
+    double setup_time = 0, response_time = 0, gram_time = 0;
 
     /// Unit responses, index j - 1 for step j: contact DoF displacement
     /// (m, positive up) and the probes.

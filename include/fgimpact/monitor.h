@@ -69,8 +69,8 @@ namespace fgimpact
    */
   struct PlateSample
   {
-    double                W_mid = 0, W_top = 0;     // m, positive down
-    SymmetricTensor<2, 3> sigma_mid;                // Pa
+    double                W_mid = 0, W_top = 0;        // m, positive down
+    SymmetricTensor<2, 3> sigma_mid;                   // Pa
     double                E_kinetic = 0, E_strain = 0; // J
     unsigned int          linear_iterations = 0;
   };

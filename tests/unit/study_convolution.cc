@@ -70,9 +70,9 @@ namespace
                                                      "time_per_step_ms",
                                                      "output_s",
                                                      "wall_time_s"};
-    std::map<std::string, std::string> entries;
-    std::ifstream                      in(filename);
-    std::string                        line;
+    std::map<std::string, std::string>    entries;
+    std::ifstream                         in(filename);
+    std::string                           line;
     while (std::getline(in, line))
       {
         const auto eq = line.find(" = ");
@@ -116,24 +116,26 @@ main(int argc, char **argv)
   std::vector<fgimpact_tests::RunOutput> separate;
   for (unsigned int i = 0; i < cases.size(); ++i)
     separate.push_back(fgimpact_tests::run_quietly(
-      "", case_settings(i, "separate_" + std::to_string(i)), MPI_COMM_WORLD, true));
+      "",
+      case_settings(i, "separate_" + std::to_string(i)),
+      MPI_COMM_WORLD,
+      true));
 
   // (1) The engine: one plate, one unit response, four convolutions.
   std::ostringstream log;
   auto *const        old = std::cout.rdbuf(log.rdbuf());
   std::vector<std::vector<std::vector<double>>> rows(cases.size());
   {
-    const Parameters first = parameters_of(case_settings(0, "engine_0"));
-    Simulator        plate_owner(first, MPI_COMM_WORLD);
+    const Parameters  first = parameters_of(case_settings(0, "engine_0"));
+    Simulator         plate_owner(first, MPI_COMM_WORLD);
     const PlateModel &plate = plate_owner.setup_plate();
     Timer             timer;
     ImpactStudyEngine engine(plate, timer);
     ok = ok && ImpactStudyEngine::unsupported(first, plate).empty() &&
          engine.prepare(first);
     unsigned int current = 0;
-    engine.add_row_observer([&](const std::vector<double> &row) {
-      rows[current].push_back(row);
-    });
+    engine.add_row_observer(
+      [&](const std::vector<double> &row) { rows[current].push_back(row); });
     for (current = 0; current < cases.size(); ++current)
       {
         const Parameters p = parameters_of(
@@ -183,7 +185,7 @@ main(int argc, char **argv)
   prm.parse_input("study.prm");
   StudyParameters study;
   study.parse_parameters(prm);
-  Logger     logger(false);
+  Logger             logger(false);
   std::ostringstream study_log;
   std::cout.rdbuf(study_log.rdbuf());
   const int code = run_study(study, InputFile("study.prm"), {}, -1, "", logger);
@@ -195,8 +197,8 @@ main(int argc, char **argv)
               convolved ? "yes" : "NO");
   ok = ok && code == 0 && convolved;
 
-  std::ifstream            csv("study_out/study.csv");
-  std::string              line;
+  std::ifstream csv("study_out/study.csv");
+  std::string   line;
   std::getline(csv, line);
   const auto header = split_csv(line);
   for (unsigned int i = 0; i < cases.size(); ++i)
