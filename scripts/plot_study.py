@@ -78,6 +78,7 @@ def main():
             ax.set_xlabel(entry)
             ax.set_ylabel(label)
             ax.grid(True, alpha=0.3)
+            ax.tick_params(axis="x", labelrotation=30)
         if others:
             axes[0].legend(fontsize=7)
         fig.tight_layout()

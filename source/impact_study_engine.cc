@@ -15,6 +15,29 @@
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// A case's contact model, built as ImpactDriver::setup() builds it.
+    std::unique_ptr<ContactModel>
+    contact_model_of(const Parameters      &p,
+                     const HertzContactLaw &law,
+                     const Impactor        &impactor,
+                     const PlateModel      &plate)
+    {
+      const PlateGeometry &g = plate.get_geometry();
+      return create_contact_model(
+        p.contact_model,
+        law,
+        plate,
+        impactor.radius(),
+        impactor.impact_point(g.length(), g.width()),
+        expected_contact_radius(p, plate.get_material(), g.thickness()),
+        top_face_modulus(plate.get_material(), g.thickness()));
+    }
+  } // namespace
+
+
+
   ImpactStudyEngine::ImpactStudyEngine(const PlateModel &plate,
                                        const Timer      &total_timer)
     : plate(plate)
@@ -59,16 +82,9 @@ namespace fgimpact
     const Impactor        impactor(p.impactor);
     const HertzContactLaw law(p.contact, plate.get_material(), impactor);
     const PlateGeometry  &g       = plate.get_geometry();
-    const auto            contact = create_contact_model(
-      p.contact_model,
-      law,
-      plate,
-      impactor.radius(),
-      impactor.impact_point(g.length(), g.width()),
-      expected_contact_radius(p, plate.get_material(), g.thickness()),
-      top_face_modulus(plate.get_material(), g.thickness()));
-    dofs               = contact->contact_dofs();
-    const auto stepper = create_time_stepper(p.time_integration,
+    const auto            contact = contact_model_of(p, law, impactor, plate);
+    dofs                          = contact->contact_dofs();
+    const auto stepper            = create_time_stepper(p.time_integration,
                                              p.linear_solver,
                                              plate,
                                              *contact,
@@ -177,15 +193,7 @@ namespace fgimpact
   {
     const Impactor        impactor(p.impactor);
     const HertzContactLaw law(p.contact, plate.get_material(), impactor);
-    const PlateGeometry  &g       = plate.get_geometry();
-    const auto            contact = create_contact_model(
-      p.contact_model,
-      law,
-      plate,
-      impactor.radius(),
-      impactor.impact_point(g.length(), g.width()),
-      expected_contact_radius(p, plate.get_material(), g.thickness()),
-      top_face_modulus(plate.get_material(), g.thickness()));
+    const auto            contact = contact_model_of(p, law, impactor, plate);
     AssertThrow(contact->contact_dofs() == dofs,
                 ExcMessage("study: a case's contact node differs from the "
                            "group's; vary Impactor/Impact point x/y only in "
