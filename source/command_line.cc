@@ -44,6 +44,32 @@ namespace fgimpact
                 }
               options.overrides.emplace_back(argv[++i]);
             }
+          else if (arg == "--study" || arg == "--study-case")
+            {
+              if (i + 1 == argc)
+                {
+                  options.action = Action::error;
+                  options.error  = "option '" + arg + "' needs an argument";
+                  return options;
+                }
+              const std::string value = argv[++i];
+              if (arg == "--study")
+                options.study.push_back(value);
+              else
+                {
+                  char      *end = nullptr;
+                  const long k   = std::strtol(value.c_str(), &end, 10);
+                  if (value.empty() || *end != '\0' || k < 0 || k > 99999)
+                    {
+                      options.action = Action::error;
+                      options.error  = "--study-case needs a case number, "
+                                       "not '" +
+                                      value + "'";
+                      return options;
+                    }
+                  options.study_case = static_cast<int>(k);
+                }
+            }
           else if (arg == "--validate")
             {
               if (options.action == Action::run)
@@ -109,6 +135,17 @@ namespace fgimpact
              "subsections\n"
              "                          joined by '/', e.g. \"Impactor/"
              "Initial velocity=2\")\n"
+             "  --study \"Section/Entry=v1,v2,...\"\n"
+             "                          a parameter study over these "
+             "values (repeatable:\n"
+             "                          cartesian product; see the Study "
+             "subsection);\n"
+             "                          writes Directory/case_NNN/ and "
+             "Directory/study.csv\n"
+             "  --study-case K          rerun case K of the study alone, "
+             "fully (VTU as\n"
+             "                          in the input), into "
+             "Directory/case_K\n"
              "  --validate              read and check the input (mesh "
              "included),\n"
              "                          print its size, run nothing\n"

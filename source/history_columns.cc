@@ -1,5 +1,6 @@
 // The history.csv columns: name, decimals and value in one list each
-// (declared in monitor.h), apart from the monitor that writes them.
+// (declared in monitor.h), apart from the monitor that writes them; and
+// the probes whose values they show.
 
 #include <fgimpact/monitor.h>
 
@@ -77,5 +78,28 @@ namespace fgimpact
          return static_cast<double>(s.contact->n_active);
        }}};
     return columns;
+  }
+
+
+
+  std::array<Point<3>, 2>
+  history_probe_points(const PlateGeometry &geometry)
+  {
+    return {{geometry.centre(geometry.thickness() / 2),
+             geometry.centre(geometry.thickness())}};
+  }
+
+
+
+  PlateSample
+  probe_plate(const PointProbe                    &mid_probe,
+              const PointProbe                    &top_probe,
+              const TrilinosWrappers::MPI::Vector &u)
+  {
+    PlateSample plate;
+    plate.W_mid     = -mid_probe.displacement(u)[2];
+    plate.W_top     = -top_probe.displacement(u)[2];
+    plate.sigma_mid = mid_probe.stress(u);
+    return plate;
   }
 } // namespace fgimpact

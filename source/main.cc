@@ -10,6 +10,7 @@
 #include <fgimpact/logger.h>
 #include <fgimpact/run_control.h>
 #include <fgimpact/simulator.h>
+#include <fgimpact/study.h>
 
 #include <iostream>
 #include <memory>
@@ -127,6 +128,7 @@ main(int argc, char *argv[])
   ParameterHandler           prm;
   fgimpact::Parameters       parameters;
   std::unique_ptr<InputFile> input;
+  StudyParameters            study;
   // Input errors: everything is checked before any file is written; the
   // -s overrides are applied before validate().  Failures are reported in
   // one line with their exit code by report_failure() (run_control.cc).
@@ -137,6 +139,10 @@ main(int argc, char *argv[])
       input->parse_into(prm, options.overrides);
       parameters.parse_parameters(prm);
       parameters.validate();
+      study.parse_parameters(prm);
+      study.entries.insert(study.entries.end(),
+                           options.study.begin(),
+                           options.study.end());
       for (const auto &warning : parameters.warnings())
         if (root)
           std::cerr << "fgimpact: warning: " << warning << std::endl;
@@ -150,6 +156,18 @@ main(int argc, char *argv[])
                                              std::string("standard input") :
                                              prm_file));
     }
+
+  // A study (Study/Entries or --study): its own cases and outputs.
+  if (!study.entries.empty() && options.action == CommandLine::Action::run)
+    return run_study(study,
+                     *input,
+                     options.overrides,
+                     options.study_case,
+                     CommandLine::provenance(argc,
+                                             argv,
+                                             Utilities::MPI::n_mpi_processes(
+                                               MPI_COMM_WORLD)),
+                     logger);
 
   try
     {

@@ -116,11 +116,8 @@ namespace fgimpact
 
     , pcout(std::cout, root)
     , impact_results(results)
-    , mid_probe(plate,
-                plate.get_geometry().centre(plate.get_geometry().thickness() /
-                                            2))
-    , top_probe(plate,
-                plate.get_geometry().centre(plate.get_geometry().thickness()))
+    , mid_probe(plate, history_probe_points(plate.get_geometry())[0])
+    , top_probe(plate, history_probe_points(plate.get_geometry())[1])
     , progress(n_steps, root && parameters.print_timing)
   {
     plate_communicator = plate.get_mpi_communicator();
@@ -199,6 +196,24 @@ namespace fgimpact
                         const ImpactorState &ball,
                         const ContactState  &contact)
   {
+    PlateSample plate =
+      probe_plate(mid_probe, top_probe, stepper.displacement());
+    plate.E_kinetic         = stepper.kinetic_energy();
+    plate.E_strain          = stepper.strain_energy();
+    plate.linear_iterations = stepper.linear_iterations();
+    record(step, t, plate, ball, contact, &stepper);
+  }
+
+
+
+  void
+  ImpactMonitor::record(const unsigned int   step,
+                        const double         t,
+                        const PlateSample   &plate,
+                        const ImpactorState &ball,
+                        const ContactState  &contact,
+                        const TimeStepper   *stepper)
+  {
     if (step > 0)
       {
         // Trapezoidal impulse: consistent with both schemes' impactor
@@ -207,17 +222,16 @@ namespace fgimpact
         update_episodes(t, contact);
       }
 
-    const auto   &u = stepper.displacement();
     HistorySample sample;
     sample.t          = t;
     sample.ball       = &ball;
     sample.contact    = &contact;
-    sample.W_mid      = -mid_probe.displacement(u)[2];
-    sample.W_top      = -top_probe.displacement(u)[2];
-    sample.sigma_mid  = mid_probe.stress(u);
+    sample.W_mid      = plate.W_mid;
+    sample.W_top      = plate.W_top;
+    sample.sigma_mid  = plate.sigma_mid;
     sample.E_impactor = 0.5 * m_i * ball.v * ball.v;
-    sample.E_kinetic  = stepper.kinetic_energy();
-    sample.E_strain   = stepper.strain_energy();
+    sample.E_kinetic  = plate.E_kinetic;
+    sample.E_strain   = plate.E_strain;
     // A model without a potential (hertz midplane: the force acts at the
     // top node, alpha is measured at the mid-plane) stores the work of the
     // contact force on the approach at the top node, int F d(w + u_top)
@@ -232,19 +246,20 @@ namespace fgimpact
     sample.E_total =
       sample.E_impactor + sample.E_kinetic + sample.E_strain + sample.E_contact;
 
-    if (probe_set)
+    // The convolution engine of a study has no fields: it clears the
+    // probe points (probes.csv comes from --study-case K).
+    if (probe_set && stepper)
       probe_row =
         probe_set->row(t,
-                       probe_set->evaluate(u,
-                                           stepper.velocity(),
-                                           stepper.acceleration(),
-                                           stepper.has_lumped_mass()));
+                       probe_set->evaluate(stepper->displacement(),
+                                           stepper->velocity(),
+                                           stepper->acceleration(),
+                                           stepper->has_lumped_mass()));
     update_extremes(t, sample);
     watch_energy(step, t, std::abs(sample.E_total - E0) / E0);
-    impact_results.linear_iterations += stepper.linear_iterations();
+    impact_results.linear_iterations += plate.linear_iterations;
     impact_results.max_linear_iterations =
-      std::max(impact_results.max_linear_iterations,
-               stepper.linear_iterations());
+      std::max(impact_results.max_linear_iterations, plate.linear_iterations);
     write_outputs(step, t, stepper, sample);
     last_force    = contact.force;
     last_alpha    = contact.alpha;
@@ -364,7 +379,7 @@ namespace fgimpact
   void
   ImpactMonitor::write_outputs(const unsigned int   step,
                                const double         t,
-                               const TimeStepper   &stepper,
+                               const TimeStepper   *stepper,
                                const HistorySample &sample)
   {
     std::vector<double> row;
@@ -379,10 +394,10 @@ namespace fgimpact
           history->write_row(row);
         if (probe_csv)
           probe_csv->write_row(probe_row);
-        if (vtu && step % parameters.vtu_interval == 0)
+        if (vtu && stepper && step % parameters.vtu_interval == 0)
           {
             output_timer.start();
-            vtu->write(step, t, stepper.displacement(), stepper.velocity());
+            vtu->write(step, t, stepper->displacement(), stepper->velocity());
             if (contact_vtu)
               contact_vtu->write(step, t, sample.ball->w, *sample.contact);
             output_timer.stop();

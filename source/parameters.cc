@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <fgimpact/parameters.h>
+#include <fgimpact/study.h>
 
 #include <algorithm>
 #include <array>
@@ -170,6 +171,7 @@ namespace fgimpact
     EffectiveMatrixSolver::Parameters::declare_parameters(prm);
     TimeStepper::Parameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
+    StudyParameters::declare_parameters(prm);
   }
 
   void

@@ -165,6 +165,33 @@ namespace fgimpact
   void
   Simulator::setup()
   {
+    setup_plate();
+    switch (parameters.problem_type)
+      {
+        case ProblemType::impact:
+          {
+            auto impact =
+              std::make_unique<ImpactDriver>(parameters, *plate, total_timer);
+            for (const auto &observer : observers)
+              impact->add_row_observer(observer);
+            driver = std::move(impact);
+            break;
+          }
+        case ProblemType::static_load:
+          driver = std::make_unique<StaticDriver>(parameters, *plate);
+          break;
+        case ProblemType::modal:
+          driver = std::make_unique<ModalDriver>(parameters, *plate);
+          break;
+      }
+    driver->setup();
+  }
+
+
+
+  const PlateModel &
+  Simulator::setup_plate()
+  {
     total_timer.restart();
     geometry = std::make_unique<PlateGeometry>(parameters.geometry);
     material =
@@ -203,26 +230,7 @@ namespace fgimpact
             << " levels within " << contact_refinement().radius * 1e3
             << " mm of the impact point, smallest element "
             << plate->smallest_cell_size() * 1e6 << " um\n";
-
-    switch (parameters.problem_type)
-      {
-        case ProblemType::impact:
-          {
-            auto impact =
-              std::make_unique<ImpactDriver>(parameters, *plate, total_timer);
-            for (const auto &observer : observers)
-              impact->add_row_observer(observer);
-            driver = std::move(impact);
-            break;
-          }
-        case ProblemType::static_load:
-          driver = std::make_unique<StaticDriver>(parameters, *plate);
-          break;
-        case ProblemType::modal:
-          driver = std::make_unique<ModalDriver>(parameters, *plate);
-          break;
-      }
-    driver->setup();
+    return *plate;
   }
 
 

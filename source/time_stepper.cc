@@ -254,6 +254,35 @@ namespace fgimpact
                                time_step_label(step, t) + "."));
       }
 
+      bool
+      unit_response(const unsigned int      n_steps,
+                    const ResponseObserver &observe) override
+      {
+        if (dofs.size() != 1 || iterative)
+          return false;
+        const ContactState no_force;
+        for (unsigned int step = 1; step <= n_steps; ++step)
+          {
+            // As advance() with F_1 = 1 N and F_j = 0 after.
+            solve_contact_free(step, step * newmark.time_step(), no_force);
+            if (step == 1)
+              u_new.add(-1., c[0]);
+            mass->vmult(Mu_new, u_new);
+            newmark.update(u_new, u, v, a);
+            newmark.update(Mu_new, Mu, Mv, Ma);
+            if (step % 64 == 0)
+              {
+                mass->vmult(Mv, v);
+                mass->vmult(Ma, a);
+              }
+            observe(step, u, v, Mv);
+          }
+        for (auto *vector : {&u, &v, &a, &Mu, &Mv, &Ma})
+          *vector = 0.;
+        kinetic = strain = 0;
+        return true;
+      }
+
       std::string
       description() const override
       {

@@ -32,6 +32,8 @@ namespace fgimpact
       Action                   action = Action::run;
       std::string              prm_file;  // "-": standard input
       std::vector<std::string> overrides; // "Section/Entry=value", in order
+      std::vector<std::string> study;     // "Section/Entry=v1,v2,...", --study
+      int                      study_case = -1; // --study-case K
       std::string              error;
       bool show_usage = false; // no argument at all: print the usage
     };

@@ -16,6 +16,7 @@
 #include <fgimpact/results.h>
 #include <fgimpact/time_stepper.h>
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <string>
@@ -62,6 +63,32 @@ namespace fgimpact
     double E_impactor = 0, E_kinetic = 0, E_strain = 0, E_contact = 0; // J
     double E_total = 0;                                                // J
   };
+
+  /**
+   * What history.csv shows of the plate at one time (SI units): the probes'
+   * values, which are linear functionals of the displacement, and the
+   * plate's energies.  ImpactMonitor::record() takes them from a time
+   * stepper; the study's convolution engine from sums of unit responses.
+   */
+  struct PlateSample
+  {
+    double                W_mid = 0, W_top = 0;        // m, positive down
+    SymmetricTensor<2, 3> sigma_mid;                   // Pa
+    double                E_kinetic = 0, E_strain = 0; // J
+    unsigned int          linear_iterations = 0;
+  };
+
+  /// Where history.csv's probes are (m): the mid-plane and the top-face
+  /// points at the plate's centre, in this order.
+  std::array<Point<3>, 2>
+  history_probe_points(const PlateGeometry &geometry);
+
+  /// The probes' values (mid-plane, top) for the plate displacement u (m);
+  /// energies 0.  Collective.
+  PlateSample
+  probe_plate(const PointProbe                    &mid,
+              const PointProbe                    &top,
+              const TrilinosWrappers::MPI::Vector &u);
 
   /// One column of history.csv: name (with unit), decimals, and the value
   /// in the file's unit.
@@ -134,6 +161,16 @@ namespace fgimpact
            const ImpactorState &ball,
            const ContactState  &contact);
 
+    /// The same with the plate given as a sample; VTU snapshots only if a
+    /// stepper (holding the fields) is given.
+    void
+    record(const unsigned int   step,
+           const double         t,
+           const PlateSample   &plate,
+           const ImpactorState &ball,
+           const ContactState  &contact,
+           const TimeStepper   *stepper = nullptr);
+
     /// Wait for the last VTU snapshot and flush history.csv (timed as
     /// output).
     void
@@ -168,7 +205,7 @@ namespace fgimpact
     void
     write_outputs(const unsigned int   step,
                   const double         t,
-                  const TimeStepper   &stepper,
+                  const TimeStepper   *stepper,
                   const HistorySample &sample);
     void
     print_results() const;

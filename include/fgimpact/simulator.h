@@ -49,6 +49,11 @@ namespace fgimpact
     void
     setup();
 
+    /// Only the first part of setup(): geometry, material, mesh and
+    /// matrices (for a study engine that drives the plate itself).
+    const PlateModel &
+    setup_plate();
+
     /// Run (calling setup() if not done) and write the outputs into the
     /// output directory, which must exist.
     void

@@ -10,6 +10,7 @@
 #include <fgimpact/newmark.h>
 #include <fgimpact/plate_model.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -94,6 +95,32 @@ namespace fgimpact
             const double       t,
             ImpactorState     &impactor,
             ContactState      &contact) = 0;
+
+    /// Receives step j, u_j (m), v_j (m/s) and M v_j of a unit response.
+    using ResponseObserver =
+      std::function<void(const unsigned int,
+                         const TrilinosWrappers::MPI::Vector &,
+                         const TrilinosWrappers::MPI::Vector &,
+                         const TrilinosWrappers::MPI::Vector &)>;
+
+    /**
+     * The plate's discrete response, from rest, to a unit contact force
+     * (1 N down on the single contact DoF) at step 1 and none after:
+     * observe() gets steps 1..n_steps, computed by the same recursion,
+     * matrices and factorization as advance() (one solve per step).  The
+     * plate is linear and time-invariant, so any force history's response
+     * is the convolution of these (the study engine).  Leaves the stepper
+     * at rest.  Returns false, observing nothing, where this does not
+     * reproduce advance() (explicit scheme, iterative solver, several
+     * contact DoFs).
+     */
+    virtual bool
+    unit_response(const unsigned int n_steps, const ResponseObserver &observe)
+    {
+      (void)n_steps;
+      (void)observe;
+      return false;
+    }
 
     /// Plate displacement (m) and velocity (m/s) at the current time.
     const TrilinosWrappers::MPI::Vector &

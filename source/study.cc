@@ -1,0 +1,441 @@
+// Parameter studies: the Study subsection, the cases, their grouping by
+// shared plate, and study.csv.  The convolution engine itself is in
+// impact_study_engine.cc.
+
+#include <deal.II/base/utilities.h>
+
+#include <fgimpact/impact_study_engine.h>
+#include <fgimpact/parameters.h>
+#include <fgimpact/run_control.h>
+#include <fgimpact/simulator.h>
+#include <fgimpact/study.h>
+
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+
+namespace fgimpact
+{
+  void
+  StudyParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Study");
+    {
+      prm.declare_entry(
+        "Entries",
+        "",
+        Patterns::Anything(),
+        "The entries a parameter study varies, separated by ';', each "
+        "'Section/Entry = v1, v2, ...' (nested subsections joined by '/'), "
+        "e.g. 'Impactor/Initial velocity = 1, 2, 3, 4'. Empty: no study, "
+        "one run. Each case writes a normal output directory "
+        "Directory/case_NNN and Directory/study.csv gathers their "
+        "summaries. The command-line option --study appends to this list.");
+      prm.declare_entry("Combination",
+                        "product",
+                        Patterns::Selection("product|zip"),
+                        "product: every combination of the lists (the first "
+                        "entry varies slowest). zip: the i-th case takes the "
+                        "i-th value of every list (all lists equally long).");
+      prm.declare_entry(
+        "Method",
+        "auto",
+        Patterns::Selection("auto|time loop"),
+        "auto: cases that share the plate and differ only in the impactor, "
+        "the contact law's constants or Newton's control run as "
+        "convolutions of the plate's unit response (Hertz node contact, "
+        "implicit Newmark with beta = 1/4, gamma = 1/2, no VTU), the others "
+        "through the time loop (logged). time loop: every case through the "
+        "normal time loop.");
+      prm.declare_entry("Write VTU",
+                        "false",
+                        Patterns::Bool(),
+                        "false: the cases write no VTU (Output/VTU interval "
+                        "= 0, so that they can run by convolution); "
+                        "--study-case K reruns one case with the input's "
+                        "VTU output. true: the input's VTU interval (time "
+                        "loop).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  StudyParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Study");
+    entries.clear();
+    for (const auto &entry :
+         Utilities::split_string_list(prm.get("Entries"), ';'))
+      if (!entry.empty())
+        entries.push_back(entry);
+    combination = (prm.get("Combination") == "zip" ? Combination::zip :
+                                                     Combination::product);
+    method      = (prm.get("Method") == "time loop" ? Method::time_loop :
+                                                      Method::automatic);
+    write_vtu   = prm.get_bool("Write VTU");
+    prm.leave_subsection();
+  }
+
+
+
+  std::vector<StudyCase>
+  expand_study(const StudyParameters &study)
+  {
+    std::vector<std::string>              paths;
+    std::vector<std::vector<std::string>> lists;
+    for (const auto &entry : study.entries)
+      {
+        const auto eq = entry.find('=');
+        AssertThrow(eq != std::string::npos && eq > 0,
+                    ExcMessage("Study/Entries: '" + entry +
+                               "' is not 'Section/Entry = v1, v2, ...'"));
+        paths.push_back(Utilities::trim(entry.substr(0, eq)));
+        lists.push_back(
+          Utilities::split_string_list(entry.substr(eq + 1), ','));
+        AssertThrow(!lists.back().empty() && !paths.back().empty(),
+                    ExcMessage("Study/Entries: '" + entry + "' has no values"));
+      }
+    std::vector<StudyCase> cases;
+    if (paths.empty())
+      return cases;
+    if (study.combination == StudyParameters::Combination::zip)
+      {
+        for (const auto &list : lists)
+          AssertThrow(list.size() == lists[0].size(),
+                      ExcMessage("Study/Combination = zip: the lists of "
+                                 "Study/Entries differ in length"));
+        for (std::size_t i = 0; i < lists[0].size(); ++i)
+          {
+            StudyCase c;
+            c.paths = paths;
+            for (const auto &list : lists)
+              c.values.push_back(list[i]);
+            cases.push_back(c);
+          }
+        return cases;
+      }
+    // Cartesian product, the last entry varying fastest.
+    std::vector<std::size_t> index(paths.size(), 0);
+    while (true)
+      {
+        StudyCase c;
+        c.paths = paths;
+        for (std::size_t e = 0; e < paths.size(); ++e)
+          c.values.push_back(lists[e][index[e]]);
+        cases.push_back(c);
+        std::size_t e = paths.size();
+        while (e > 0 && ++index[e - 1] == lists[e - 1].size())
+          index[--e] = 0;
+        if (e == 0)
+          return cases;
+      }
+  }
+
+
+
+  namespace
+  {
+    /// A case, parsed and checked.
+    struct ParsedCase
+    {
+      StudyCase   study_case;
+      Parameters  parameters;
+      std::string prm_text; // parameters.prm
+      std::string group;    // the plate's key
+    };
+
+    /**
+     * The entries that leave the plate, its mesh and the time step alone:
+     * the impactor (unless an automatic contact refinement radius makes
+     * the mesh depend on it), the Hertz law's constants, Newton's control.
+     */
+    bool
+    is_case_entry(const std::string &path, const Parameters &p)
+    {
+      static const std::set<std::string> impactor = {
+        "Impactor/Radius",
+        "Impactor/Density",
+        "Impactor/Mass",
+        "Impactor/Initial velocity",
+        "Impactor/Material",
+        "Impactor/Young's modulus",
+        "Impactor/Poisson's ratio"};
+      static const std::set<std::string> others = {"Contact/Plate modulus",
+                                                   "Contact/Swanson beta",
+                                                   "Contact/Contact stiffness",
+                                                   "Newton/Tolerance",
+                                                   "Newton/Max iterations"};
+      const bool                         mesh_follows_impactor =
+        p.geometry.contact_refinement_levels > 0 &&
+        p.geometry.contact_refinement_radius == 0.;
+      return others.count(path) > 0 ||
+             (impactor.count(path) > 0 && !mesh_follows_impactor);
+    }
+
+    std::string
+    case_directory(const std::string &base, const unsigned int i)
+    {
+      char name[32];
+      std::snprintf(name, sizeof(name), "/case_%03u", i);
+      return base + name;
+    }
+
+    /// Parse every case (input errors: before anything is written).
+    std::vector<ParsedCase>
+    parse_cases(const StudyParameters          &study,
+                const InputFile                &input,
+                const std::vector<std::string> &overrides,
+                const std::string              &base_directory)
+    {
+      std::vector<ParsedCase> parsed;
+      const auto              cases = expand_study(study);
+      for (unsigned int i = 0; i < cases.size(); ++i)
+        {
+          std::vector<std::string> all = overrides;
+          for (unsigned int e = 0; e < cases[i].paths.size(); ++e)
+            all.push_back(cases[i].assignment(e));
+          all.push_back("Output/Directory=" +
+                        case_directory(base_directory, i));
+          all.push_back("Study/Entries=");
+          if (!study.write_vtu)
+            all.push_back("Output/VTU interval=0");
+          ParameterHandler prm;
+          Parameters::declare_parameters(prm);
+          input.parse_into(prm, all);
+          ParsedCase c;
+          c.study_case = cases[i];
+          c.parameters.parse_parameters(prm);
+          c.parameters.validate();
+          std::ostringstream text;
+          prm.print_parameters(text, ParameterHandler::PRM);
+          c.prm_text = text.str();
+          for (unsigned int e = 0; e < cases[i].paths.size(); ++e)
+            if (!is_case_entry(cases[i].paths[e], c.parameters))
+              c.group += cases[i].assignment(e) + ";";
+          parsed.push_back(std::move(c));
+        }
+      return parsed;
+    }
+
+    /// The case's output directory with parameters.prm and input.prm.
+    void
+    start_case_files(const ParsedCase &c, const InputFile &input)
+    {
+      run_on_root(MPI_COMM_WORLD, [&]() {
+        prepare_output_directory(c.parameters.output);
+        write_file_atomically(c.parameters.output.directory + "/parameters.prm",
+                              c.prm_text);
+        write_file_atomically(c.parameters.output.directory + "/input.prm",
+                              input.original());
+      });
+    }
+
+    /// A case through the normal set-up and time loop.
+    void
+    run_time_loop(const ParsedCase &c, const InputFile &input)
+    {
+      Simulator simulator(c.parameters, MPI_COMM_WORLD);
+      simulator.setup();
+      start_case_files(c, input);
+      simulator.run();
+    }
+
+    /// The group's cases: by convolution if the engine applies.
+    void
+    run_group(const StudyParameters                 &study,
+              const std::vector<const ParsedCase *> &cases,
+              const InputFile                       &input,
+              const Timer                           &study_timer)
+    {
+      ConditionalOStream pcout(
+        std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+      const Parameters &first = cases[0]->parameters;
+      std::string       reason;
+      if (study.method == StudyParameters::Method::time_loop)
+        reason = "Study/Method = time loop";
+      std::unique_ptr<Simulator>         plate_owner;
+      std::unique_ptr<ImpactStudyEngine> engine;
+      if (reason.empty())
+        {
+          plate_owner = std::make_unique<Simulator>(first, MPI_COMM_WORLD);
+          const PlateModel &plate = plate_owner->setup_plate();
+          for (const auto *c : cases)
+            if (reason.empty())
+              reason = ImpactStudyEngine::unsupported(c->parameters, plate);
+          if (reason.empty())
+            {
+              engine = std::make_unique<ImpactStudyEngine>(plate, study_timer);
+              if (!engine->prepare(first))
+                reason = engine->fallback_reason();
+              else
+                pcout << "  study: " << cases.size()
+                      << " case(s) by convolution of the plate's unit "
+                         "response ("
+                      << engine->preparation_timing() << ")\n";
+            }
+        }
+      if (!reason.empty())
+        pcout << "  study: " << cases.size()
+              << " case(s) through the time loop: " << reason << '\n';
+      for (const auto *c : cases)
+        {
+          pcout << "study case " << c->parameters.output.directory << ":";
+          for (unsigned int e = 0; e < c->study_case.paths.size(); ++e)
+            pcout << ' ' << c->study_case.assignment(e) << ';';
+          pcout << '\n';
+          if (engine && reason.empty())
+            {
+              start_case_files(*c, input);
+              engine->run_case(c->parameters);
+            }
+          else
+            run_time_loop(*c, input);
+        }
+    }
+
+    /// "key = value" lines of a summary.txt ('#' lines skipped).
+    std::vector<std::pair<std::string, std::string>>
+    read_summary(const std::string &filename)
+    {
+      std::vector<std::pair<std::string, std::string>> entries;
+      std::ifstream                                    in(filename);
+      std::string                                      line;
+      while (std::getline(in, line))
+        {
+          const auto eq = line.find(" = ");
+          if (line.empty() || line[0] == '#' || eq == std::string::npos)
+            continue;
+          entries.emplace_back(line.substr(0, eq), line.substr(eq + 3));
+        }
+      return entries;
+    }
+
+    bool
+    is_number(const std::string &text)
+    {
+      char *end = nullptr;
+      std::strtod(text.c_str(), &end);
+      return !text.empty() && end != nullptr && *end == '\0';
+    }
+
+    /// study.csv: case, the varied entries, every numeric summary key (of
+    /// the first case; "none" stays "none").
+    void
+    write_study_csv(const std::vector<ParsedCase> &cases,
+                    const std::string             &filename)
+    {
+      std::vector<std::string> keys;
+      for (const auto &[key, value] :
+           read_summary(cases[0].parameters.output.directory + "/summary.txt"))
+        if (is_number(value) || value == "none")
+          keys.push_back(key);
+      std::ostringstream csv;
+      csv << "case";
+      for (const auto &path : cases[0].study_case.paths)
+        csv << ", " << path;
+      for (const auto &key : keys)
+        csv << ", " << key;
+      csv << '\n';
+      for (unsigned int i = 0; i < cases.size(); ++i)
+        {
+          std::map<std::string, std::string> summary;
+          for (const auto &[key, value] : read_summary(
+                 cases[i].parameters.output.directory + "/summary.txt"))
+            summary[key] = value;
+          csv << i;
+          for (const auto &value : cases[i].study_case.values)
+            csv << ", " << value;
+          for (const auto &key : keys)
+            csv << ", " << (summary.count(key) ? summary[key] : "none");
+          csv << '\n';
+        }
+      write_file_atomically(filename, csv.str());
+    }
+  } // namespace
+
+
+
+  int
+  run_study(const StudyParameters          &study,
+            const InputFile                &input,
+            const std::vector<std::string> &overrides,
+            const int                       only_case,
+            const std::string              &provenance,
+            Logger                         &logger)
+  {
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    Timer      study_timer;
+    std::vector<ParsedCase> cases;
+    Parameters              base;
+    try
+      {
+        ParameterHandler prm;
+        Parameters::declare_parameters(prm);
+        input.parse_into(prm, overrides);
+        base.parse_parameters(prm);
+        StudyParameters rerun = study;
+        rerun.write_vtu       = rerun.write_vtu || only_case >= 0;
+        cases = parse_cases(rerun, input, overrides, base.output.directory);
+        AssertThrow(only_case < static_cast<int>(cases.size()),
+                    ExcMessage("--study-case " + std::to_string(only_case) +
+                               ": the study has " +
+                               std::to_string(cases.size()) + " cases"));
+      }
+    catch (...)
+      {
+        return report_failure(std::current_exception(),
+                              root,
+                              1,
+                              "error in " + input.input_name());
+      }
+
+    try
+      {
+        if (only_case >= 0)
+          {
+            run_time_loop(cases[only_case], input);
+            if (root)
+              std::cout << "fgimpact: results in "
+                        << cases[only_case].parameters.output.directory << '\n';
+            return 0;
+          }
+        run_on_root(MPI_COMM_WORLD, [&]() {
+          prepare_output_directory(base.output);
+          logger.open(base.output.directory + "/log.txt", provenance);
+          SummaryWriter::set_preamble(provenance);
+        });
+        if (root)
+          std::cout << "fgimpact: study of " << cases.size() << " cases\n";
+        // Groups in the order of their first case.
+        std::vector<std::string>                               order;
+        std::map<std::string, std::vector<const ParsedCase *>> groups;
+        for (const auto &c : cases)
+          {
+            if (groups.count(c.group) == 0)
+              order.push_back(c.group);
+            groups[c.group].push_back(&c);
+          }
+        for (const auto &key : order)
+          run_group(study, groups[key], input, study_timer);
+        run_on_root(MPI_COMM_WORLD, [&]() {
+          write_study_csv(cases, base.output.directory + "/study.csv");
+        });
+        if (root)
+          std::cout << "fgimpact: study of " << cases.size() << " cases in "
+                    << study_timer.wall_time() << " s; results in "
+                    << base.output.directory
+                    << " (study.csv; figures: scripts/plot_study.py "
+                    << base.output.directory << "/study.csv)\n";
+      }
+    catch (...)
+      {
+        return report_failure(std::current_exception(), root, 2);
+      }
+    return 0;
+  }
+} // namespace fgimpact

@@ -1,0 +1,237 @@
+// The parameter study's convolution engine against separate runs: a study
+// of 4 cases (V0 = 1, 3 m/s x impactor density 7800, 11300 kg/m^3) on a
+// 10 x 6 x 2 plate, 300 steps.  (1) Every history row of the engine (the
+// plate's unit response convolved with the contact force, the Hertz law
+// solved per step) equals the normal time loop's (a separate run, its own
+// factorization and Newmark recursion) to 1e-9 relative, column by column
+// (difference over the column's largest magnitude); newton_iterations
+// equal.  (2) run_study(), as the executable calls it, writes case_NNN/
+// whose summary.txt equals the separate run's (every key but the
+// timings; the two round-off measures impulse_identity_error and
+// max_relative_energy_drift, already relative, within 1e-9 absolute), and
+// study.csv rows equal the separate summaries.
+
+#include <deal.II/base/mpi.h>
+
+#include <fgimpact/impact_study_engine.h>
+#include <fgimpact/study.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <test_tools.h>
+
+using namespace fgimpact;
+
+namespace
+{
+  const std::string base =
+    "subsection Geometry\n set Subdivisions x = 10\n set Subdivisions y = 6\n"
+    " set Subdivisions z = 2\nend\n"
+    "subsection Time integration\n set End time = 300e-6\nend\n"
+    "subsection Output\n set Log interval = 0\n set Print timing = false\n"
+    " set VTU interval = 0\nend\n";
+
+  const std::vector<std::pair<double, double>> cases = {{1., 7800.},
+                                                        {1., 11300.},
+                                                        {3., 7800.},
+                                                        {3., 11300.}};
+
+  std::string
+  case_settings(const unsigned int i, const std::string &directory)
+  {
+    return base + "subsection Impactor\n set Initial velocity = " +
+           std::to_string(cases[i].first) +
+           "\n set Density = " + std::to_string(cases[i].second) +
+           "\nend\nsubsection Output\n set Directory = " + directory +
+           "\nend\n";
+  }
+
+  Parameters
+  parameters_of(const std::string &settings)
+  {
+    ParameterHandler prm;
+    Parameters::declare_parameters(prm);
+    prm.parse_input_from_string(settings);
+    Parameters p;
+    p.parse_parameters(prm);
+    p.validate();
+    return p;
+  }
+
+  /// "key = value" of a summary.txt, timings left out.
+  std::map<std::string, std::string>
+  summary_of(const std::string &filename)
+  {
+    static const std::vector<std::string> timings = {"setup_s",
+                                                     "factorization_s",
+                                                     "time_loop_s",
+                                                     "time_per_step_ms",
+                                                     "output_s",
+                                                     "wall_time_s"};
+    std::map<std::string, std::string>    entries;
+    std::ifstream                         in(filename);
+    std::string                           line;
+    while (std::getline(in, line))
+      {
+        const auto eq = line.find(" = ");
+        if (line.empty() || line[0] == '#' || eq == std::string::npos)
+          continue;
+        const std::string key = line.substr(0, eq);
+        if (std::find(timings.begin(), timings.end(), key) == timings.end())
+          entries[key] = line.substr(eq + 3);
+      }
+    return entries;
+  }
+
+  /// Equal strings, or for the round-off measures within 1e-9.
+  bool
+  same(const std::string &key, const std::string &a, const std::string &b)
+  {
+    if (key == "impulse_identity_error" || key == "max_relative_energy_drift")
+      return std::abs(std::stod(a) - std::stod(b)) < 1e-9;
+    return a == b;
+  }
+
+  std::vector<std::string>
+  split_csv(const std::string &line)
+  {
+    std::vector<std::string> cells;
+    for (const auto &cell : Utilities::split_string_list(line, ','))
+      cells.push_back(Utilities::trim(cell));
+    return cells;
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                             ok = true;
+
+  // Separate runs: the normal set-up and time loop, one per case.
+  std::vector<fgimpact_tests::RunOutput> separate;
+  for (unsigned int i = 0; i < cases.size(); ++i)
+    separate.push_back(fgimpact_tests::run_quietly(
+      "",
+      case_settings(i, "separate_" + std::to_string(i)),
+      MPI_COMM_WORLD,
+      true));
+
+  // (1) The engine: one plate, one unit response, four convolutions.
+  std::ostringstream log;
+  auto *const        old = std::cout.rdbuf(log.rdbuf());
+  std::vector<std::vector<std::vector<double>>> rows(cases.size());
+  {
+    const Parameters  first = parameters_of(case_settings(0, "engine_0"));
+    Simulator         plate_owner(first, MPI_COMM_WORLD);
+    const PlateModel &plate = plate_owner.setup_plate();
+    Timer             timer;
+    ImpactStudyEngine engine(plate, timer);
+    ok = ok && ImpactStudyEngine::unsupported(first, plate).empty() &&
+         engine.prepare(first);
+    unsigned int current = 0;
+    engine.add_row_observer(
+      [&](const std::vector<double> &row) { rows[current].push_back(row); });
+    for (current = 0; current < cases.size(); ++current)
+      {
+        const Parameters p = parameters_of(
+          case_settings(current, "engine_" + std::to_string(current)));
+        std::filesystem::create_directories(p.output.directory);
+        engine.run_case(p);
+      }
+  }
+  std::cout.rdbuf(old);
+  std::printf("history rows, engine against separate runs (max over the "
+              "columns of max |difference| / max |value|, units of 1e-9):\n");
+  for (unsigned int i = 0; i < cases.size(); ++i)
+    {
+      const auto &a = rows[i], &b = separate[i].history;
+      double      worst = (a.size() == b.size() ? 0. : 1.);
+      for (unsigned int c = 0; a.size() == b.size() && c < b[0].size(); ++c)
+        {
+          double scale = 0, difference = 0;
+          for (unsigned int n = 0; n < b.size(); ++n)
+            {
+              scale      = std::max(scale, std::abs(b[n][c]));
+              difference = std::max(difference, std::abs(a[n][c] - b[n][c]));
+            }
+          if (scale > 0)
+            worst = std::max(worst, difference / scale);
+        }
+      std::printf("  case %u (V0 = %.0f m/s, rho_i = %.0f kg/m^3): %zu rows, "
+                  "%.2f\n",
+                  i,
+                  cases[i].first,
+                  cases[i].second,
+                  a.size(),
+                  worst * 1e9);
+      ok = ok && worst < 1e-9;
+    }
+
+  // (2) The study as the executable runs it.
+  {
+    std::ofstream prm("study.prm");
+    prm << base
+        << "subsection Output\n set Directory = study_out\nend\n"
+           "subsection Study\n set Entries = Impactor/Initial velocity = 1, "
+           "3; Impactor/Density = 7800, 11300\nend\n";
+  }
+  ParameterHandler prm;
+  Parameters::declare_parameters(prm);
+  prm.parse_input("study.prm");
+  StudyParameters study;
+  study.parse_parameters(prm);
+  Logger             logger(false);
+  std::ostringstream study_log;
+  std::cout.rdbuf(study_log.rdbuf());
+  const int code = run_study(study, InputFile("study.prm"), {}, -1, "", logger);
+  std::cout.rdbuf(old);
+  const bool convolved =
+    study_log.str().find("4 case(s) by convolution") != std::string::npos;
+  std::printf("study: exit code %d, all 4 cases by convolution: %s\n",
+              code,
+              convolved ? "yes" : "NO");
+  ok = ok && code == 0 && convolved;
+
+  std::ifstream csv("study_out/study.csv");
+  std::string   line;
+  std::getline(csv, line);
+  const auto header = split_csv(line);
+  for (unsigned int i = 0; i < cases.size(); ++i)
+    {
+      char directory[40];
+      std::snprintf(directory, sizeof(directory), "study_out/case_%03u", i);
+      const auto expected =
+        summary_of("separate_" + std::to_string(i) + "/summary.txt");
+      const auto   got   = summary_of(std::string(directory) + "/summary.txt");
+      unsigned int equal = 0;
+      for (const auto &[key, value] : expected)
+        equal += (got.count(key) && same(key, got.at(key), value));
+      std::getline(csv, line);
+      const auto   cells     = split_csv(line);
+      unsigned int csv_equal = 0, csv_keys = 0;
+      for (unsigned int c = 3; c < header.size() && c < cells.size(); ++c)
+        if (expected.count(header[c]))
+          {
+            ++csv_keys;
+            csv_equal += same(header[c], expected.at(header[c]), cells[c]);
+          }
+      std::printf("  case %u: summary.txt keys equal %u of %zu; study.csv row "
+                  "(V0 %s, rho_i %s) values equal %u of %u\n",
+                  i,
+                  equal,
+                  expected.size(),
+                  cells.size() > 1 ? cells[1].c_str() : "?",
+                  cells.size() > 2 ? cells[2].c_str() : "?",
+                  csv_equal,
+                  csv_keys);
+      ok = ok && equal == expected.size() && csv_equal == csv_keys &&
+           csv_keys > 20;
+    }
+  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+  return ok ? 0 : 1;
+}
