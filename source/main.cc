@@ -136,6 +136,7 @@ main(int argc, char *argv[])
       input = read_input(prm_file, MPI_COMM_WORLD);
       input->parse_into(prm, options.overrides);
       parameters.parse_parameters(prm);
+      parameters.material.resolve_relative_paths(prm_file);
       parameters.validate();
       for (const auto &warning : parameters.warnings())
         if (root)
