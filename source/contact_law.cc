@@ -96,22 +96,57 @@ namespace fgimpact
   HertzContactLaw::contact_region_constants(
     const FunctionallyGradedMaterial &material)
   {
-    const auto  &p  = material.get_parameters();
-    const double Vm = material.total_metal_volume_fraction();
-    const double Vc = 1. - Vm;
-    const double nu = p.poissons_ratio;
-    const double Gm = p.metal_youngs_modulus / (2. * (1. + nu));
-    const double Gc = p.ceramic_youngs_modulus / (2. * (1. + nu));
+    const auto        &p      = material.get_parameters();
+    const Constituents phases = p.constituents();
+    double             E_reuss, G_reuss, E_voigt, nu;
+    if (p.gradation == Gradation::power_law ||
+        p.gradation == Gradation::sigmoid)
+      {
+        // Eq. 2.3 on the two phases with their total volume fractions
+        // (power law 1/(1+n), sigmoid 1/2): Reuss (series) through the
+        // thickness, Voigt (parallel) in plane.
+        const double Vm   = material.total_metal_volume_fraction();
+        const double Vc   = 1. - Vm;
+        const double nu_m = phases.metal.nu, nu_c = phases.ceramic.nu;
+        const double Gm = p.metal_youngs_modulus / (2. * (1. + nu_m));
+        const double Gc = p.ceramic_youngs_modulus / (2. * (1. + nu_c));
+        E_reuss =
+          1. / (Vc / p.ceramic_youngs_modulus + Vm / p.metal_youngs_modulus);
+        G_reuss = 1. / (Vc / Gc + Vm / Gm);
+        E_voigt = p.ceramic_youngs_modulus * Vc + p.metal_youngs_modulus * Vm;
+        nu      = (nu_m == nu_c ? nu_m : Vc * nu_c + Vm * nu_m);
+      }
+    else
+      {
+        // Exponential and tabulated profiles have no phases: the same
+        // averages of the profile itself over the thickness (midpoint rule
+        // on 4096 slices, far below the contact law's accuracy).
+        const unsigned int n    = 4096;
+        const double       h    = material.thickness();
+        double             invE = 0, invG = 0, sumE = 0, sumnu = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const IsotropicProperties q =
+              material.properties((i + 0.5) * h / n);
+            invE += 1. / q.E / n;
+            invG += 2. * (1. + q.nu) / q.E / n;
+            sumE += q.E / n;
+            sumnu += q.nu / n;
+          }
+        E_reuss = 1. / invE;
+        G_reuss = 1. / invG;
+        E_voigt = sumE;
+        nu      = sumnu;
+      }
 
     TransverselyIsotropicConstants c;
-    // Eq. 2.3: Reuss (series) through the thickness, Voigt (parallel) in
-    // plane.
-    c.E_z  = 1. / (Vc / p.ceramic_youngs_modulus + Vm / p.metal_youngs_modulus);
-    c.G_xz = 1. / (Vc / Gc + Vm / Gm);
-    c.E_x  = p.ceramic_youngs_modulus * Vc + p.metal_youngs_modulus * Vm;
+    c.E_z  = E_reuss;
+    c.G_xz = G_reuss;
+    c.E_x  = E_voigt;
     // The paper is silent on the Poisson's ratios of the contact region; with
-    // nu constant in both phases we take nu_xy = nu_xz = nu, and the
-    // in-plane shear modulus that transverse isotropy requires.
+    // nu constant in both phases we take nu_xy = nu_xz = nu (else its
+    // average), and the in-plane shear modulus that transverse isotropy
+    // requires.
     c.nu_xy = nu;
     c.nu_xz = nu;
     c.G_xy  = c.E_x / (2. * (1. + nu));
@@ -186,7 +221,7 @@ namespace fgimpact
   top_face_modulus(const FunctionallyGradedMaterial &material,
                    const double                      thickness)
   {
-    const double nu = material.poissons_ratio();
-    return material.youngs_modulus(thickness) / (1. - nu * nu);
+    const IsotropicProperties top = material.properties(thickness);
+    return top.E / (1. - top.nu * top.nu);
   }
 } // namespace fgimpact

@@ -138,6 +138,7 @@ main(int argc, char *argv[])
       input = read_input(prm_file, MPI_COMM_WORLD);
       input->parse_into(prm, options.overrides);
       parameters.parse_parameters(prm);
+      parameters.material.resolve_relative_paths(prm_file);
       parameters.validate();
       study.parse_parameters(prm);
       study.entries.insert(study.entries.end(),

@@ -2,9 +2,113 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace fgimpact
 {
+  namespace
+  {
+    void
+    declare_gradation_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Ceramic Poisson's ratio",
+        "same",
+        Patterns::Anything(),
+        "Poisson's ratio nu_c of the ceramic (bottom face): 'same' (the "
+        "metal's, Poisson's ratio) or a number in [-0.99, 0.49]. With a "
+        "different value nu varies through the thickness. Dimensionless.");
+      prm.declare_entry(
+        "Gradation",
+        "power law",
+        Patterns::Selection("power law|exponential|sigmoid|tabulated"),
+        "How the properties vary with zeta = z/h (z from the bottom face; "
+        "metal on top). power law: metal volume fraction V_m = zeta^n "
+        "(Eq. 2.1). exponential: P = P_c exp(ln(P_m/P_c) zeta) for E and "
+        "rho, nu = nu_c + (nu_m - nu_c) zeta (Power-law index unused). "
+        "sigmoid: Chung & Chi's two power laws, V_m = (2 zeta)^n / 2 for "
+        "zeta <= 1/2, 1 - (2 - 2 zeta)^n / 2 above (n = Power-law index). "
+        "tabulated: E, nu, rho interpolated linearly in Profile file.");
+      prm.declare_entry(
+        "Homogenization",
+        "rule of mixtures",
+        Patterns::Selection("rule of mixtures|Mori-Tanaka"),
+        "How E and nu of the mixture follow from the metal volume fraction "
+        "(power law and sigmoid only). rule of mixtures: P = P_c + (P_m - "
+        "P_c) V_m for E, nu and rho. Mori-Tanaka: metal matrix with ceramic "
+        "inclusions, Mori-Tanaka bulk and shear moduli (nu then varies even "
+        "with equal constituent ratios); rho by the rule of mixtures.");
+      prm.declare_entry(
+        "Profile file",
+        "",
+        Patterns::FileName(),
+        "Gradation = tabulated: a CSV file with the columns z/h (from the "
+        "bottom face, strictly increasing from 0 to 1), E (Pa), nu and rho "
+        "(kg/m^3); '#' starts a comment, one header line is allowed. A "
+        "relative path is relative to the directory of the .prm given on "
+        "the command line.");
+      prm.declare_entry(
+        "Graded nodal values",
+        "sampled",
+        Patterns::Selection("sampled|layer average"),
+        "Property mode = graded: the nodal values the elements interpolate. "
+        "sampled: the profile at the nodes (Eq. 3.3). layer average: the "
+        "element-wise L2 projection of the profile onto polynomials in z "
+        "of the element degree, so that each element keeps the exact "
+        "average of E, nu and rho over its thickness; a boundary layer "
+        "thinner than an element (n -> 0+) is then not misread "
+        "(doc/theory.md).");
+    }
+
+
+
+    void
+    parse_gradation_parameters(ParameterHandler                       &prm,
+                               FunctionallyGradedMaterial::Parameters &p)
+    {
+      const std::string nu_c = prm.get("Ceramic Poisson's ratio");
+      if (nu_c == "same")
+        p.ceramic_poissons_ratio = -2.;
+      else
+        {
+          std::size_t end   = 0;
+          double      value = 0;
+          try
+            {
+              value = std::stod(nu_c, &end);
+            }
+          catch (...)
+            {
+              end = 0;
+            }
+          AssertThrow(end > 0 && end == nu_c.size() && value >= -0.99 &&
+                        value <= 0.49,
+                      ExcMessage("Material/Ceramic Poisson's ratio = '" + nu_c +
+                                 "' is neither 'same' nor a number in "
+                                 "[-0.99, 0.49]."));
+          p.ceramic_poissons_ratio = value;
+        }
+      const std::string g = prm.get("Gradation");
+      p.gradation         = (g == "exponential" ? Gradation::exponential :
+                             g == "sigmoid"     ? Gradation::sigmoid :
+                             g == "tabulated"   ? Gradation::tabulated :
+                                                  Gradation::power_law);
+      p.homogenization    = prm.get("Homogenization") == "Mori-Tanaka" ?
+                              Homogenization::mori_tanaka :
+                              Homogenization::rule_of_mixtures;
+      p.profile_file      = prm.get("Profile file");
+      AssertThrow(p.gradation != Gradation::tabulated ||
+                    !p.profile_file.empty(),
+                  ExcMessage("Material/Gradation = tabulated needs "
+                             "Material/Profile file."));
+      p.graded_nodal_values = prm.get("Graded nodal values") == "sampled" ?
+                                GradedNodalValues::sampled :
+                                GradedNodalValues::layer_average;
+    }
+  } // namespace
+
+
+
   void
   FunctionallyGradedMaterial::Parameters::declare_parameters(
     ParameterHandler &prm)
@@ -34,8 +138,9 @@ namespace fgimpact
       prm.declare_entry("Poisson's ratio",
                         "0.3",
                         Patterns::Double(-0.99, 0.49),
-                        "Poisson's ratio nu, the same for both constituents "
-                        "and constant through the thickness (Eq. 2.12). "
+                        "Poisson's ratio nu of the metal, and of the "
+                        "ceramic unless Ceramic Poisson's ratio is set: then "
+                        "constant through the thickness (Eq. 2.12). "
                         "Dimensionless.");
       prm.declare_entry("Power-law index",
                         "1",
@@ -56,6 +161,7 @@ namespace fgimpact
         "rho(z) of Eq. 2.1 evaluated at every quadrature point (no "
         "interpolation; for steep gradients, large n, where the graded "
         "interpolant smears the metal skin over the top element).");
+      declare_gradation_parameters(prm);
     }
     prm.leave_subsection();
   }
@@ -78,8 +184,36 @@ namespace fgimpact
       property_mode          = (mode == "graded"      ? PropertyMode::graded :
                                 mode == "homogeneous" ? PropertyMode::homogeneous :
                                                         PropertyMode::pointwise);
+      parse_gradation_parameters(prm, *this);
     }
     prm.leave_subsection();
+  }
+
+
+
+  void
+  FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
+    const std::string &prm_file)
+  {
+    namespace fs = std::filesystem;
+    if (profile_file.empty() || fs::path(profile_file).is_absolute() ||
+        prm_file.empty() || prm_file == "-")
+      return;
+    const fs::path directory = fs::path(prm_file).parent_path();
+    if (!directory.empty())
+      profile_file = (directory / profile_file).string();
+  }
+
+
+
+  Constituents
+  FunctionallyGradedMaterial::Parameters::constituents() const
+  {
+    return {{metal_youngs_modulus, poissons_ratio, metal_density},
+            {ceramic_youngs_modulus,
+             ceramic_poissons_ratio < -1. ? poissons_ratio :
+                                            ceramic_poissons_ratio,
+             ceramic_density}};
   }
 
 
@@ -89,17 +223,19 @@ namespace fgimpact
     const double      thickness)
     : parameters(parameters)
     , h(thickness)
+    , law(create_gradation_law(parameters.gradation,
+                               parameters.homogenization,
+                               parameters.constituents(),
+                               parameters.power_law_index,
+                               parameters.profile_file))
   {}
 
 
 
-  double
-  FunctionallyGradedMaterial::metal_volume_fraction(const double z) const
+  IsotropicProperties
+  FunctionallyGradedMaterial::properties(const double z) const
   {
-    const double zeta = std::clamp(z / h, 0., 1.);
-    // pow(0, 0) is 1 in C++: n = 0 gives pure metal everywhere, including the
-    // bottom face, as Eq. 2.1 requires.
-    return std::pow(zeta, parameters.power_law_index);
+    return law->properties(std::clamp(z / h, 0., 1.));
   }
 
 
@@ -107,10 +243,7 @@ namespace fgimpact
   double
   FunctionallyGradedMaterial::youngs_modulus(const double z) const
   {
-    return parameters.ceramic_youngs_modulus +
-           (parameters.metal_youngs_modulus -
-            parameters.ceramic_youngs_modulus) *
-             metal_volume_fraction(z);
+    return properties(z).E;
   }
 
 
@@ -118,26 +251,25 @@ namespace fgimpact
   double
   FunctionallyGradedMaterial::density(const double z) const
   {
-    return parameters.ceramic_density +
-           (parameters.metal_density - parameters.ceramic_density) *
-             metal_volume_fraction(z);
+    return properties(z).rho;
   }
 
 
 
   double
-  FunctionallyGradedMaterial::lambda_per_E() const
+  FunctionallyGradedMaterial::poissons_ratio(const double z) const
   {
-    const double nu = parameters.poissons_ratio;
-    return nu / ((1. + nu) * (1. - 2. * nu));
+    // With equal constituent ratios every law returns nu_c + 0 * (...):
+    // exactly the constant.
+    return properties(z).nu;
   }
 
 
 
-  double
-  FunctionallyGradedMaterial::mu_per_E() const
+  bool
+  FunctionallyGradedMaterial::constant_poissons_ratio() const
   {
-    return 1. / (2. * (1. + parameters.poissons_ratio));
+    return law->constant_poissons_ratio();
   }
 
 
@@ -145,7 +277,10 @@ namespace fgimpact
   double
   FunctionallyGradedMaterial::total_metal_volume_fraction() const
   {
-    return 1. / (1. + parameters.power_law_index);
+    // The sigmoid law is antisymmetric about the mid-plane: half metal.
+    return parameters.gradation == Gradation::sigmoid ?
+             0.5 :
+             1. / (1. + parameters.power_law_index);
   }
 
 

@@ -168,22 +168,20 @@ namespace fgimpact
     FullMatrix<double>                   cell_K(dofs_per_cell, dofs_per_cell);
     FullMatrix<double>                   cell_M(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
-    std::vector<double>                  E, rho;
-
-    const HookeLaw hooke(material);
+    std::vector<double>                  E, nu, rho;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          properties.values(cell, E, rho);
+          properties.values(cell, E, nu, rho);
           cell_K = 0;
           cell_M = 0;
 
           for (unsigned int q = 0; q < n_q; ++q)
             {
-              const double lambda = hooke.lambda(E[q]);
-              const double mu     = hooke.mu(E[q]);
+              const double lambda = HookeLaw::lambda(E[q], nu[q]);
+              const double mu     = HookeLaw::mu(E[q], nu[q]);
               const double JxW    = fe_values.JxW(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
@@ -338,13 +336,13 @@ namespace fgimpact
     PropertyInterpolator properties(fe.base_element(0),
                                     quadrature.get_points(),
                                     material);
-    std::vector<double>  E, rho;
+    std::vector<double>  E, nu, rho;
     double               m = 0;
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          properties.values(cell, E, rho);
+          properties.values(cell, E, nu, rho);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             m += rho[q] * fe_values.JxW(q);
         }

@@ -76,7 +76,7 @@ namespace fgimpact
     const auto cell = inputs.template get_cell<3>();
     for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
       {
-        const auto [E, rho] =
+        const auto [E, nu, rho] =
           properties.value_at(cell, inputs.evaluation_points[p]);
         unsigned int k = 0;
         if (with_stress)
@@ -86,7 +86,7 @@ namespace fgimpact
               for (unsigned int b = a; b < 3; ++b)
                 eps[a][b] = 0.5 * (inputs.solution_gradients[p][a][b] +
                                    inputs.solution_gradients[p][b][a]);
-            const SymmetricTensor<2, 3> sigma = hooke.stress(E, eps);
+            const SymmetricTensor<2, 3> sigma = hooke.stress(E, nu, eps);
             const SymmetricTensor<2, 3> s     = deviator(sigma);
 
             for (unsigned int a = 0; a < 3; ++a)

@@ -65,8 +65,7 @@ namespace fgimpact
     AssertThrow(n_adjacent_cells > 0,
                 ExcMessage("A probe point lies outside the plate."));
 
-    const HookeLaw hooke(plate.get_material());
-    const double   w = 1. / n_adjacent_cells;
+    const double w = 1. / n_adjacent_cells;
 
     // The weights of the 3 displacement and 6 stress components, summed
     // into distributed vectors so that each ends up on the rank that owns
@@ -89,11 +88,11 @@ namespace fgimpact
         fe_values.reinit(cell);
         cell->get_dof_indices(local_dofs);
 
-        std::vector<double>  E, rho;
+        std::vector<double>  E, nu, rho;
         PropertyInterpolator properties(fe.base_element(0),
                                         quadrature.get_points(),
                                         plate.get_material());
-        properties.values(cell, E, rho);
+        properties.values(cell, E, nu, rho);
 
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
@@ -107,7 +106,8 @@ namespace fgimpact
             SymmetricTensor<2, 3> eps;
             for (unsigned int d = 0; d < 3; ++d)
               eps[c][d] += (c == d ? 1. : 0.5) * g[d];
-            const SymmetricTensor<2, 3> sigma = hooke.stress(E[0], eps);
+            const SymmetricTensor<2, 3> sigma =
+              HookeLaw::stress(E[0], nu[0], eps);
             for (unsigned int s = 0; s < 6; ++s)
               {
                 const double value = sigma[voigt[s][0]][voigt[s][1]];

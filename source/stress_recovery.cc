@@ -110,10 +110,9 @@ namespace fgimpact
     PropertyInterpolator properties(scalar_fe,
                                     points.get_points(),
                                     plate.get_material());
-    const HookeLaw       hooke(plate.get_material());
     const FEValuesExtractors::Vector     displacement(0);
     std::vector<SymmetricTensor<2, 3>>   eps(points.size());
-    std::vector<double>                  E, rho;
+    std::vector<double>                  E, nu, rho;
     std::vector<types::global_dof_index> dofs(scalar_fe.n_dofs_per_cell());
 
     for (auto &v : sums)
@@ -124,7 +123,7 @@ namespace fgimpact
           fe_values.reinit(cell);
           fe_values[displacement].get_function_symmetric_gradients(u_ghosted,
                                                                    eps);
-          properties.values(cell, E, rho);
+          properties.values(cell, E, nu, rho);
           const DoFHandler<3>::active_cell_iterator scalar_cell(
             &dof_handler.get_triangulation(),
             cell->level(),
@@ -133,7 +132,8 @@ namespace fgimpact
           scalar_cell->get_dof_indices(dofs);
           for (unsigned int q = 0; q < points.size(); ++q)
             {
-              const SymmetricTensor<2, 3> sigma = hooke.stress(E[q], eps[q]);
+              const SymmetricTensor<2, 3> sigma =
+                HookeLaw::stress(E[q], nu[q], eps[q]);
               for (unsigned int s = 0; s < 6; ++s)
                 {
                   const unsigned int a = component[s][0], b = component[s][1];

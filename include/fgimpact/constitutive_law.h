@@ -10,6 +10,9 @@
 
 #include <fgimpact/material.h>
 
+#include <map>
+#include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -18,12 +21,19 @@ namespace fgimpact
   using namespace dealii;
 
   /**
-   * The graded material at a point of an element: E(z) and rho(z) at fixed
-   * unit-cell points of any cell, either graded (nodal values of the scalar
-   * base element interpolated with its shape functions, Eq. 3.3),
-   * homogeneous (the value at the cell centre) or pointwise (E(z), rho(z)
-   * at the points themselves).  Assembly, probes and the VTU output all
-   * take E from here, so the three see the same material.
+   * The graded material at a point of an element: E(z), nu(z) and rho(z) at
+   * fixed unit-cell points of any cell, either graded (nodal values of the
+   * scalar base element interpolated with its shape functions, Eq. 3.3),
+   * homogeneous (the value at the cell centre) or pointwise (E(z), nu(z),
+   * rho(z) at the points themselves).  Assembly, probes and the VTU output
+   * all take the material from here, so the three see the same material.
+   *
+   * Graded elements interpolate E and nu (not lambda and mu): with a
+   * constant nu this is the paper's Eq. 3.3 on E, and nu is then used
+   * exactly, not interpolated; nu stays bounded where lambda would not
+   * (nu -> 1/2).  The nodal values are the profile sampled at the nodes or,
+   * with GradedNodalValues::layer_average, its element-wise L2 projection
+   * in z (computed once per element layer and cached).
    *
    * The shape function table is computed once; cells must be axis-aligned
    * bricks (all cells of this program are).
@@ -35,22 +45,37 @@ namespace fgimpact
                          const std::vector<Point<3>>      &unit_points,
                          const FunctionallyGradedMaterial &material);
 
-    /// E (Pa) and rho (kg/m^3) at the unit points of cell.
+    /// E (Pa), nu and rho (kg/m^3) at the unit points of cell.
     void
     values(const typename Triangulation<3>::cell_iterator &cell,
            std::vector<double>                            &E,
+           std::vector<double>                            &nu,
            std::vector<double>                            &rho) const;
 
-    /// E (Pa) and rho (kg/m^3) at a real point p inside cell (shape
+    /// E (Pa), nu and rho (kg/m^3) at a real point p inside cell (shape
     /// functions evaluated on the fly: for output, not for loops over
     /// quadrature points).
-    std::pair<double, double>
+    IsotropicProperties
     value_at(const typename Triangulation<3>::cell_iterator &cell,
              const Point<3>                                 &p) const;
 
   private:
+    /// The graded nodal values (one per scalar support point) of the
+    /// element layer [z0, z0 + hz].
+    const std::vector<IsotropicProperties> &
+    nodal_values(const double z0, const double hz) const;
+
     const FiniteElement<3>           &scalar_fe;
     const FunctionallyGradedMaterial &material;
+    /// nodal_values() per element layer (z0, hz); shared by copies and
+    /// guarded, since DataOut evaluates value_at() on several threads.
+    struct Cache
+    {
+      std::mutex mutex;
+      std::map<std::pair<double, double>, std::vector<IsotropicProperties>>
+        layers;
+    };
+    std::shared_ptr<Cache> cache;
     /// z coordinate of each evaluation point on the unit cell.
     std::vector<double> unit_point_z;
     /// z coordinate of each scalar support point on the unit cell.
@@ -62,10 +87,10 @@ namespace fgimpact
 
 
   /**
-   * Hooke's law of the isotropic graded material, with Poisson's ratio
-   * constant through the thickness and E(z) from PropertyInterpolator:
+   * Hooke's law of the isotropic graded material, with E(z) and nu(z) from
+   * PropertyInterpolator:
    *
-   *   sigma = lambda(E) tr(eps) I + 2 mu(E) eps,
+   *   sigma = lambda tr(eps) I + 2 mu eps,
    *   lambda = E nu / ((1 + nu)(1 - 2 nu)),  mu = E / (2 (1 + nu)).
    *
    * E, lambda, mu and sigma in Pa.  The stiffness assembly uses the
@@ -76,36 +101,31 @@ namespace fgimpact
   class HookeLaw
   {
   public:
-    explicit HookeLaw(const FunctionallyGradedMaterial &material)
-      : lambda_per_E(material.lambda_per_E())
-      , mu_per_E(material.mu_per_E())
-    {}
+    explicit HookeLaw(const FunctionallyGradedMaterial &) {}
 
-    /// Lame's first parameter lambda at Young's modulus E (Pa).
-    double
-    lambda(const double E) const
+    /// Lame's first parameter lambda at Young's modulus E (Pa) and nu.
+    static double
+    lambda(const double E, const double nu)
     {
-      return lambda_per_E * E;
+      // lambda/E first, then times E: the rounding of the constant-nu
+      // program, whose numbers the default scene keeps.
+      return nu / ((1. + nu) * (1. - 2. * nu)) * E;
     }
 
-    /// The shear modulus mu at Young's modulus E (Pa).
-    double
-    mu(const double E) const
+    /// The shear modulus mu at Young's modulus E (Pa) and nu.
+    static double
+    mu(const double E, const double nu)
     {
-      return mu_per_E * E;
+      return 1. / (2. * (1. + nu)) * E;
     }
 
-    /// Cauchy stress (Pa) for the strain eps at Young's modulus E (Pa).
-    SymmetricTensor<2, 3>
-    stress(const double E, const SymmetricTensor<2, 3> &eps) const
+    /// Cauchy stress (Pa) for the strain eps at E (Pa) and nu.
+    static SymmetricTensor<2, 3>
+    stress(const double E, const double nu, const SymmetricTensor<2, 3> &eps)
     {
-      return lambda(E) * trace(eps) * unit_symmetric_tensor<3>() +
-             2. * mu(E) * eps;
+      return lambda(E, nu) * trace(eps) * unit_symmetric_tensor<3>() +
+             2. * mu(E, nu) * eps;
     }
-
-  private:
-    const double lambda_per_E;
-    const double mu_per_E;
   };
 } // namespace fgimpact
 

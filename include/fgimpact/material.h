@@ -3,6 +3,11 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fgimpact/gradation.h>
+
+#include <memory>
+#include <string>
+
 namespace fgimpact
 {
   using namespace dealii;
@@ -25,39 +30,76 @@ namespace fgimpact
   };
 
   /**
-   * Power-law functionally graded material, Eq. 2.1 of Asemi & Salami (2015):
+   * The nodal values that graded elements interpolate
+   * (Material/Graded nodal values).
+   */
+  enum class GradedNodalValues
+  {
+    /// The profile sampled at the nodes (Eq. 3.3 as in the paper).
+    sampled,
+    /// The element-wise L2 projection of the profile onto the polynomials of
+    /// the element's degree in z, evaluated at the nodes: each element keeps
+    /// the exact layer average (and, for degree >= 1, the first moment) of
+    /// E, nu and rho, and a boundary layer thinner than an element is not
+    /// misread (doc/theory.md, "Layer-averaged nodal values").
+    layer_average
+  };
+
+  /**
+   * Functionally graded material.  The default is the power law of Eq. 2.1
+   * of Asemi & Salami (2015) with the rule of mixtures:
    *
    *   P(z) = P_c + (P_m - P_c) (z/h)^n,
    *
    * z measured from the bottom face, so the bottom (z = 0) is pure ceramic and
-   * the top (z = h) pure metal; n = 0 gives pure metal throughout.  Poisson's
-   * ratio is constant.  All quantities in SI units (Pa, kg/m^3, m).
+   * the top (z = h) pure metal; n = 0 gives pure metal throughout.  The other
+   * gradations (exponential, sigmoid, tabulated) and the Mori-Tanaka
+   * homogenization are those of gradation.h; Poisson's ratio then may vary
+   * through the thickness.  All quantities in SI units (Pa, kg/m^3, m).
    */
   class FunctionallyGradedMaterial
   {
   public:
     struct Parameters
     {
-      double       metal_youngs_modulus   = 70e9;
-      double       metal_density          = 2707.;
-      double       ceramic_youngs_modulus = 380e9;
-      double       ceramic_density        = 3800.;
-      double       poissons_ratio         = 0.3;
-      double       power_law_index        = 1.;
-      PropertyMode property_mode          = PropertyMode::graded;
+      double metal_youngs_modulus   = 70e9;
+      double metal_density          = 2707.;
+      double ceramic_youngs_modulus = 380e9;
+      double ceramic_density        = 3800.;
+      double poissons_ratio         = 0.3;
+      /// Negative: the same as poissons_ratio (Material/Ceramic Poisson's
+      /// ratio = same).
+      double            ceramic_poissons_ratio = -2.;
+      double            power_law_index        = 1.;
+      PropertyMode      property_mode          = PropertyMode::graded;
+      Gradation         gradation              = Gradation::power_law;
+      Homogenization    homogenization      = Homogenization::rule_of_mixtures;
+      GradedNodalValues graded_nodal_values = GradedNodalValues::sampled;
+      /// Gradation = tabulated: the CSV file (after
+      /// resolve_relative_paths(), relative to the .prm's directory).
+      std::string profile_file;
 
       static void
       declare_parameters(ParameterHandler &prm);
       void
       parse_parameters(ParameterHandler &prm);
+
+      /// A relative Profile file is taken relative to the directory of
+      /// prm_file (the top-level input; "" or "-": the working directory).
+      void
+      resolve_relative_paths(const std::string &prm_file);
+
+      /// The metal and ceramic constituents.
+      Constituents
+      constituents() const;
     };
 
     FunctionallyGradedMaterial(const Parameters &parameters,
                                const double      thickness);
 
-    /// Metal volume fraction (z/h)^n at height z (m), clipped to [0, h].
-    double
-    metal_volume_fraction(const double z) const;
+    /// E (Pa), nu and rho (kg/m^3) at height z (m), z clipped to [0, h].
+    IsotropicProperties
+    properties(const double z) const;
 
     /// Young's modulus E(z) in Pa.
     double
@@ -67,27 +109,23 @@ namespace fgimpact
     double
     density(const double z) const;
 
+    /// Poisson's ratio nu(z).
     double
-    poissons_ratio() const
-    {
-      return parameters.poissons_ratio;
-    }
+    poissons_ratio(const double z) const;
 
-    /// Lame's first parameter per unit Young's modulus, lambda/E.
-    double
-    lambda_per_E() const;
+    /// Whether nu is the same at every z: the constitutive law then uses
+    /// it exactly (no interpolation, so the default scene's numbers are
+    /// those of the constant-nu program).
+    bool
+    constant_poissons_ratio() const;
 
-    /// Shear modulus per unit Young's modulus, mu/E = 1/(2(1+nu)).
-    double
-    mu_per_E() const;
-
-    /// Total metal volume fraction of the whole thickness, Eq. 2.2:
-    /// V_m = 1/(1+n).
+    /// Power law: total metal volume fraction of the whole thickness,
+    /// Eq. 2.2: V_m = 1/(1+n).
     double
     total_metal_volume_fraction() const;
 
-    /// Exact through-thickness integral of rho(z) dz (kg/m^2), used to check
-    /// the assembled mass.
+    /// Power law with the rule of mixtures: the exact through-thickness
+    /// integral of rho(z) dz (kg/m^2), used to check the assembled mass.
     double
     mass_per_unit_area() const;
 
@@ -103,8 +141,9 @@ namespace fgimpact
     }
 
   private:
-    const Parameters parameters;
-    const double     h;
+    const Parameters                    parameters;
+    const double                        h;
+    const std::unique_ptr<GradationLaw> law;
   };
 } // namespace fgimpact
 

@@ -16,7 +16,7 @@
 // ---------------------------------------------------------------------------
 // Plate 0 <= x <= a, 0 <= y <= b, 0 <= z <= h (z from the bottom face).
 // The material is isotropic at each z: Young's modulus E(z), density rho(z),
-// Poisson's ratio nu constant, so that
+// Poisson's ratio nu(z) (constant, or a profile Plate::nu_z), so that
 //   lambda(z) = E nu / ((1 + nu)(1 - 2 nu)),   mu(z) = E / (2 (1 + nu)).
 // The four side faces are simply supported: w = 0, the tangential in-plane
 // displacement = 0 and the normal stress = 0 on the whole face (v = 0,
@@ -61,8 +61,10 @@
 //        |  (Q12+mu) p q        Q11 q^2+mu p^2-rw2   0        0     0    -beta q |
 //        |  0                   0                   -rw2      p     q     0      |
 //
-// (rw2 = rho(z) omega^2). No derivative of E(z) appears, so the formulation
-// is valid for any piecewise continuous gradation. Traction conditions on
+// (rw2 = rho(z) omega^2). No derivative of E(z) or nu(z) appears (every
+// entry is a local value: Q11, Q12, mu, C33 and beta all at the same z), so
+// the formulation is valid for any piecewise continuous gradation of E, nu
+// and rho alike. Traction conditions on
 // the faces: X = Y = 0 at z = 0 and z = h, and Z(0) = 0, Z(h) = -q0 for a
 // downward pressure q0 sin(px) sin(qy) on the top face, or Z = 0 on both
 // faces for free vibration. W is positive upward (along +z); a downward
@@ -156,6 +158,15 @@ namespace fgimpact_exact
     double  a  = 0.2;
     double  b  = 0.1;
     double  h  = 0.02;
+    /// Poisson's ratio through the thickness; empty: the constant nu.
+    Profile nu_z = Profile();
+
+    /// nu at height z.
+    double
+    poisson(const double z) const
+    {
+      return nu_z ? nu_z(z) : nu;
+    }
   };
 
   /// The paper's FGM plate in one line: power law (Eq. 2.1) for E and rho
@@ -345,7 +356,8 @@ namespace fgimpact_exact
               layer_A[2 * i + g]   = static_matrix(zeta);
               layer_rho[2 * i + g] = plate.rho(zeta * plate.h);
               const double mu =
-                plate.E(zeta * plate.h) / (2. * (1. + plate.nu));
+                plate.E(zeta * plate.h) /
+                (2. * (1. + plate.poisson(zeta * plate.h)));
               c_T_min = std::min(c_T_min, std::sqrt(mu / layer_rho[2 * i + g]));
             }
       }
@@ -361,7 +373,7 @@ namespace fgimpact_exact
       Matrix6
       static_matrix(const double zeta) const
       {
-        const double nu   = plate.nu;
+        const double nu   = plate.poisson(zeta * plate.h);
         const double E    = plate.E(zeta * plate.h) / E0;
         const double mu   = E / (2. * (1. + nu));
         const double Q11  = E / (1. - nu * nu);
@@ -526,8 +538,9 @@ namespace fgimpact_exact
     {
       const auto  &pr   = *problem;
       const Vector6 s   = state(z);
-      const double nu   = pr.plate.nu;
-      const double E    = pr.plate.E(std::clamp(z, 0., pr.plate.h));
+      const double zc   = std::clamp(z, 0., pr.plate.h);
+      const double nu   = pr.plate.poisson(zc);
+      const double E    = pr.plate.E(zc);
       const double Q11  = E / (1. - nu * nu);
       const double Q12  = nu * Q11;
       const double mu   = E / (2. * (1. + nu));
