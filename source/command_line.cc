@@ -44,6 +44,17 @@ namespace fgimpact
                 }
               options.overrides.emplace_back(argv[++i]);
             }
+          else if (arg == "--resume")
+            {
+              if (i + 1 == argc)
+                {
+                  options.action = Action::error;
+                  options.error  = "option '--resume' needs an output "
+                                   "directory";
+                  return options;
+                }
+              options.resume_directory = argv[++i];
+            }
           else if (arg == "--validate")
             {
               if (options.action == Action::run)
@@ -69,6 +80,23 @@ namespace fgimpact
               options.action == Action::version ||
               options.action == Action::print_parameters)
             return options;
+        }
+      if (!options.resume_directory.empty())
+        {
+          // The run's own expanded parameters (Output/Directory is set to
+          // the directory given, wherever the run was started from).
+          if (!options.prm_file.empty())
+            {
+              options.action = Action::error;
+              options.error  = "--resume takes the parameters from " +
+                              options.resume_directory +
+                              "/parameters.prm: give no parameter file";
+              return options;
+            }
+          options.prm_file = options.resume_directory + "/parameters.prm";
+          options.overrides.insert(options.overrides.begin(),
+                                   "Output/Directory=" +
+                                     options.resume_directory);
         }
       if (options.prm_file.empty())
         {
@@ -109,6 +137,10 @@ namespace fgimpact
              "subsections\n"
              "                          joined by '/', e.g. \"Impactor/"
              "Initial velocity=2\")\n"
+             "  --resume DIR            continue the impact run in DIR "
+             "from its last\n"
+             "                          checkpoint (DIR/parameters.prm; "
+             "same MPI ranks)\n"
              "  --validate              read and check the input (mesh "
              "included),\n"
              "                          print its size, run nothing\n"

@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <fgimpact/checkpoint.h>
 #include <fgimpact/command_line.h>
 #include <fgimpact/input_file.h>
 #include <fgimpact/logger.h>
@@ -103,6 +104,25 @@ namespace
     fgimpact::write_file_atomically(output.directory + "/input.prm",
                                     input.original());
   }
+
+
+
+  /// Rank 0, resuming: log.txt continued, the provenance for summary.txt,
+  /// parameters.prm rewritten (an extended End time); nothing removed.
+  void
+  resume_run_files(const fgimpact::OutputParameters &output,
+                   const int                         argc,
+                   const char *const                *argv,
+                   fgimpact::Logger                 &logger,
+                   const std::string                &parameters)
+  {
+    const std::string provenance = fgimpact::CommandLine::provenance(
+      argc, argv, dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+    logger.open(output.directory + "/log.txt", provenance, true);
+    fgimpact::SummaryWriter::set_preamble(provenance);
+    fgimpact::write_file_atomically(output.directory + "/parameters.prm",
+                                    parameters);
+  }
 } // namespace
 
 
@@ -151,9 +171,34 @@ main(int argc, char *argv[])
                                              prm_file));
     }
 
+  // Checkpoints store the parameters; a resume refuses changed ones.
+  CheckpointSettings checkpoint;
+  checkpoint.resume_directory = options.resume_directory;
+  {
+    std::ostringstream text;
+    prm.print_parameters(text,
+                         ParameterHandler::OutputStyle(
+                           ParameterHandler::PRM | ParameterHandler::Short));
+    checkpoint.parameters_text = text.str();
+  }
+  if (!options.resume_directory.empty())
+    try
+      {
+        run_on_root(MPI_COMM_WORLD, [&]() {
+          check_resume(options.resume_directory,
+                       checkpoint.parameters_text,
+                       Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+        });
+      }
+    catch (...)
+      {
+        return report_failure(std::current_exception(), root, 1);
+      }
+
   try
     {
       Simulator simulator(parameters, MPI_COMM_WORLD);
+      simulator.set_checkpointing(checkpoint);
       // Everything that can fail on bad input is checked before any file
       // is written: setup() writes nothing.  Rank 0 prepares the directory
       // and writes the start files; every rank learns the outcome, so that
@@ -170,7 +215,16 @@ main(int argc, char *argv[])
               return 0;
             }
           run_on_root(MPI_COMM_WORLD, [&]() {
-            start_run_files(parameters.output, argc, argv, logger, prm, *input);
+            if (options.resume_directory.empty())
+              start_run_files(
+                parameters.output, argc, argv, logger, prm, *input);
+            else
+              {
+                std::ostringstream full;
+                prm.print_parameters(full, ParameterHandler::PRM);
+                resume_run_files(
+                  parameters.output, argc, argv, logger, full.str());
+              }
           });
         }
       catch (...)

@@ -30,7 +30,10 @@ namespace fgimpact
       std::string              prm_file;  // "-": standard input
       std::vector<std::string> overrides; // "Section/Entry=value", in order
       std::string              error;
-      bool show_usage = false; // no argument at all: print the usage
+      /// --resume DIR: prm_file is DIR/parameters.prm and the first
+      /// override sets Output/Directory = DIR.
+      std::string resume_directory;
+      bool        show_usage = false; // no argument at all: print the usage
     };
 
     /// The options of argv; no argument at all is an error (usage, exit 1).
