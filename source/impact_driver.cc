@@ -27,6 +27,48 @@ namespace fgimpact
       archive(state.max_pressure);
       archive(state.candidates_exhausted);
     }
+
+    /// The message of a failed output write in f ("" if none).
+    template <typename F>
+    std::string
+    failure_of(const F &f)
+    {
+      try
+        {
+          f();
+        }
+      catch (const ExcOutputFailure &e)
+        {
+          return one_line(message_of(e));
+        }
+      return "";
+    }
+
+    /// The one line after SIGINT/SIGTERM, with how to resume.
+    std::string
+    interruption_message(const int          stop,
+                         const unsigned int steps_done,
+                         const unsigned int n_steps,
+                         const double       dt,
+                         const std::string &directory,
+                         const std::string &checkpoint_failure)
+    {
+      char text[400];
+      std::snprintf(text,
+                    sizeof(text),
+                    "interrupted by %s after time step %u of %u (t = %.3f "
+                    "us); history.csv, solution.pvd and summary.txt "
+                    "(status = interrupted) are complete; ",
+                    stop == SIGINT  ? "SIGINT" :
+                    stop == SIGTERM ? "SIGTERM" :
+                                      "a signal",
+                    steps_done,
+                    n_steps,
+                    steps_done * dt * 1e6);
+      return text + (checkpoint_failure.empty() ?
+                       "continue with: fgimpact --resume " + directory :
+                       "no checkpoint (" + checkpoint_failure + ")");
+    }
   } // namespace
 
 
@@ -167,16 +209,8 @@ namespace fgimpact
                                 impactor.radius());
     if (resume)
       monitor->resume_output(resume->step, resume->step * dt, *stepper);
-
-    // Eq. 2.16: plate at rest, alpha(0) = 0, alpha'(0) = V0; a(0) = 0 as
-    // F(0) = 0.  The impactor moves in the impact direction (-z).
-    if (!resume)
-      {
-        ball          = ImpactorState();
-        ball.v        = impactor.initial_velocity();
-        contact_state = ContactState();
-        monitor->record(0, 0., *stepper, ball, contact_state);
-      }
+    else
+      monitor->record(0, 0., *stepper, ball, contact_state);
 
     // Plain timers (not TimerOutput, whose destructor writes to the screen
     // when an exception such as a Newton failure is on its way out).
@@ -203,15 +237,10 @@ namespace fgimpact
         // SIGINT/SIGTERM: a checkpoint at the stop, whatever the interval
         // (a failure to write it does not hide the interruption).
         if (stop > 0)
-          try
-            {
-              if (write_checkpoint(steps_done) < 0)
-                checkpoint_failure = monitor->output_failure();
-            }
-          catch (const ExcOutputFailure &e)
-            {
-              checkpoint_failure = one_line(message_of(e));
-            }
+          checkpoint_failure = failure_of([&]() {
+            AssertThrow(write_checkpoint(steps_done) == 0,
+                        ExcOutputFailure(monitor->output_failure()));
+          });
         monitor->close_output();
         if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
           stop = -1;
@@ -243,25 +272,13 @@ namespace fgimpact
                     total_timer.wall_time());
     report_checkpoints(loop_timer.wall_time());
     if (stop > 0)
-      {
-        char text[400];
-        std::snprintf(text,
-                      sizeof(text),
-                      "interrupted by %s after time step %u of %u (t = %.3f "
-                      "us); history.csv, solution.pvd and summary.txt "
-                      "(status = interrupted) are complete; ",
-                      stop == SIGINT  ? "SIGINT" :
-                      stop == SIGTERM ? "SIGTERM" :
-                                        "a signal",
-                      steps_done,
-                      n_steps,
-                      steps_done * dt * 1e6);
-        const std::string resume_hint =
-          checkpoint_failure.empty() ?
-            "continue with: fgimpact --resume " + parameters.output.directory :
-            "no checkpoint (" + checkpoint_failure + ")";
-        throw RunInterrupted(stop, text + resume_hint);
-      }
+      throw RunInterrupted(stop,
+                           interruption_message(stop,
+                                                steps_done,
+                                                n_steps,
+                                                dt,
+                                                parameters.output.directory,
+                                                checkpoint_failure));
   }
 
 
@@ -303,6 +320,11 @@ namespace fgimpact
   std::unique_ptr<CheckpointReader>
   ImpactDriver::load_checkpoint()
   {
+    // Eq. 2.16: plate at rest, alpha(0) = 0, alpha'(0) = V0; a(0) = 0 as
+    // F(0) = 0.  The impactor moves in the impact direction (-z).
+    ball          = ImpactorState();
+    ball.v        = impactor.initial_velocity();
+    contact_state = ContactState();
     if (checkpoint_settings.resume_directory.empty())
       return nullptr;
     auto in = std::make_unique<CheckpointReader>(

@@ -90,38 +90,49 @@ namespace
                   const char *const                *argv,
                   fgimpact::Logger                 &logger,
                   const dealii::ParameterHandler   &prm,
-                  const fgimpact::InputFile        &input)
+                  const fgimpact::InputFile        &input,
+                  const bool                        resume)
   {
-    fgimpact::prepare_output_directory(output);
+    // Resuming: nothing removed, log.txt continued, input.prm kept.
+    if (!resume)
+      fgimpact::prepare_output_directory(output);
     const std::string provenance = fgimpact::CommandLine::provenance(
       argc, argv, dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
-    logger.open(output.directory + "/log.txt", provenance);
+    logger.open(output.directory + "/log.txt", provenance, resume);
     fgimpact::SummaryWriter::set_preamble(provenance);
     std::ostringstream parameters;
     prm.print_parameters(parameters, dealii::ParameterHandler::PRM);
     fgimpact::write_file_atomically(output.directory + "/parameters.prm",
                                     parameters.str());
-    fgimpact::write_file_atomically(output.directory + "/input.prm",
-                                    input.original());
+    if (!resume)
+      fgimpact::write_file_atomically(output.directory + "/input.prm",
+                                      input.original());
   }
 
 
 
-  /// Rank 0, resuming: log.txt continued, the provenance for summary.txt,
-  /// parameters.prm rewritten (an extended End time); nothing removed.
-  void
-  resume_run_files(const fgimpact::OutputParameters &output,
-                   const int                         argc,
-                   const char *const                *argv,
-                   fgimpact::Logger                 &logger,
-                   const std::string                &parameters)
+  /// The expanded parameters for the checkpoints; with --resume, rank 0
+  /// checks the checkpoint against them (a failure is thrown on every
+  /// rank).
+  fgimpact::CheckpointSettings
+  checkpoint_settings(const fgimpact::CommandLine::Options &options,
+                      const dealii::ParameterHandler       &prm)
   {
-    const std::string provenance = fgimpact::CommandLine::provenance(
-      argc, argv, dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
-    logger.open(output.directory + "/log.txt", provenance, true);
-    fgimpact::SummaryWriter::set_preamble(provenance);
-    fgimpact::write_file_atomically(output.directory + "/parameters.prm",
-                                    parameters);
+    using namespace dealii;
+    fgimpact::CheckpointSettings checkpoint;
+    checkpoint.resume_directory = options.resume_directory;
+    std::ostringstream text;
+    prm.print_parameters(text,
+                         ParameterHandler::OutputStyle(
+                           ParameterHandler::PRM | ParameterHandler::Short));
+    checkpoint.parameters_text = text.str();
+    if (!options.resume_directory.empty())
+      fgimpact::run_on_root(MPI_COMM_WORLD, [&]() {
+        fgimpact::check_resume(options.resume_directory,
+                               checkpoint.parameters_text,
+                               Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+      });
+    return checkpoint;
   }
 } // namespace
 
@@ -173,27 +184,14 @@ main(int argc, char *argv[])
 
   // Checkpoints store the parameters; a resume refuses changed ones.
   CheckpointSettings checkpoint;
-  checkpoint.resume_directory = options.resume_directory;
-  {
-    std::ostringstream text;
-    prm.print_parameters(text,
-                         ParameterHandler::OutputStyle(
-                           ParameterHandler::PRM | ParameterHandler::Short));
-    checkpoint.parameters_text = text.str();
-  }
-  if (!options.resume_directory.empty())
-    try
-      {
-        run_on_root(MPI_COMM_WORLD, [&]() {
-          check_resume(options.resume_directory,
-                       checkpoint.parameters_text,
-                       Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
-        });
-      }
-    catch (...)
-      {
-        return report_failure(std::current_exception(), root, 1);
-      }
+  try
+    {
+      checkpoint = checkpoint_settings(options, prm);
+    }
+  catch (...)
+    {
+      return report_failure(std::current_exception(), root, 1);
+    }
 
   try
     {
@@ -215,16 +213,13 @@ main(int argc, char *argv[])
               return 0;
             }
           run_on_root(MPI_COMM_WORLD, [&]() {
-            if (options.resume_directory.empty())
-              start_run_files(
-                parameters.output, argc, argv, logger, prm, *input);
-            else
-              {
-                std::ostringstream full;
-                prm.print_parameters(full, ParameterHandler::PRM);
-                resume_run_files(
-                  parameters.output, argc, argv, logger, full.str());
-              }
+            start_run_files(parameters.output,
+                            argc,
+                            argv,
+                            logger,
+                            prm,
+                            *input,
+                            !options.resume_directory.empty());
           });
         }
       catch (...)

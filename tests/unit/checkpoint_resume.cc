@@ -108,21 +108,16 @@ main()
   const std::string hertz =
     small_plate + "subsection Time integration\n set End time = 200e-6\nend\n"
                   "subsection Output\n set Checkpoint interval = 15\nend\n";
-  ok = kill_and_resume(
-         "hertz_node", hertz, 1, 20 + random.next(160), random.next(20)) &&
-       ok;
+  ok = kill_and_resume("hertz_node", hertz, 1, random.kill_point(100)) && ok;
 
   const std::string explicit_scheme =
     small_plate +
     "subsection Time integration\n set Scheme = explicit\n set Time step = "
     "0\n set End time = 200e-6\nend\n"
     "subsection Output\n set Checkpoint interval = 25\nend\n";
-  ok = kill_and_resume("explicit",
-                       explicit_scheme,
-                       1,
-                       20 + random.next(180),
-                       random.next(20)) &&
-       ok;
+  ok =
+    kill_and_resume("explicit", explicit_scheme, 1, random.kill_point(120)) &&
+    ok;
 
   // The candidate set (0.6 mm) grows during the run: the resumed run
   // regrows it and factorizes its K_eff again.  VTU on: the PVD files are
@@ -135,11 +130,7 @@ main()
     "subsection Time integration\n set End time = 120e-6\nend\n"
     "subsection Output\n set Checkpoint interval = 10\n set VTU interval = "
     "25\n set Fields = displacement\nend\n";
-  ok = kill_and_resume("resolved_sphere",
-                       resolved,
-                       1,
-                       20 + random.next(90),
-                       random.next(20)) &&
+  ok = kill_and_resume("resolved_sphere", resolved, 1, random.kill_point(60)) &&
        ok;
   // (deal.II's PVD has a comment with the time of day: not compared.)
   const auto pvd_entries = [](const std::string &file) {

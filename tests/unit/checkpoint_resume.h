@@ -13,6 +13,7 @@
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
+#include <utility>
 #include <vector>
 
 namespace checkpoint_test
@@ -48,6 +49,15 @@ namespace checkpoint_test
     {
       state = state * 6364136223846793005ull + 1442695040888963407ull;
       return static_cast<unsigned int>((state >> 33) % n);
+    }
+
+    /// A kill point: at least 20 + [0, range) history rows, then a delay
+    /// of [0, 20) ms (drawn in this order, in separate statements).
+    std::pair<unsigned int, unsigned int>
+    kill_point(const unsigned int range)
+    {
+      const unsigned int rows = 20 + next(range);
+      return {rows, next(20)};
     }
   };
 
@@ -195,16 +205,16 @@ namespace checkpoint_test
 
   /**
    * One case: prm text (without Output/Directory), an uninterrupted run,
-   * then a run killed after about `rows` rows (plus delay_ms) and resumed;
+   * then a run killed at kill_point (Lcg::kill_point()) and resumed;
    * prints the differing lines (must be 0) and returns whether all holds.
    */
   inline bool
-  kill_and_resume(const std::string &name,
-                  const std::string &prm,
-                  const unsigned int n_ranks,
-                  const unsigned int rows,
-                  const unsigned int delay_ms)
+  kill_and_resume(const std::string                           &name,
+                  const std::string                           &prm,
+                  const unsigned int                           n_ranks,
+                  const std::pair<unsigned int, unsigned int> &kill_point)
   {
+    const auto [rows, delay_ms] = kill_point;
     const std::string reference = "ref_" + name, killed = "killed_" + name;
     {
       std::ofstream out(name + ".prm");

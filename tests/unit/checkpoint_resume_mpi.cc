@@ -30,8 +30,7 @@ main()
                     "subsection Linear solver\n set Type = klu\nend\n"
                     "subsection Output\n set Checkpoint interval = 15\nend\n",
       2,
-      20 + random.next(110),
-      random.next(20)) &&
+      random.kill_point(70)) &&
     ok;
 
   ok = kill_and_resume(
@@ -44,8 +43,7 @@ main()
            "subsection Linear solver\n set Type = klu\nend\n"
            "subsection Output\n set Checkpoint interval = 10\nend\n",
          2,
-         20 + random.next(70),
-         random.next(20)) &&
+         random.kill_point(40)) &&
        ok;
 
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
