@@ -97,8 +97,8 @@ namespace fgimpact
     const char *
     take(const std::size_t n);
 
-    std::string  buffer;
-    std::size_t  position = 0;
+    std::string buffer;
+    std::size_t position = 0;
   };
 
 

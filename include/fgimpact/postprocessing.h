@@ -196,7 +196,7 @@ namespace fgimpact
     /// a file (a resumed run) cut to this many bytes, without a header.
     CsvWriter(const std::string                              &filename,
               const std::vector<std::pair<std::string, int>> &columns,
-              const std::uintmax_t                            resume_length = 0);
+              const std::uintmax_t resume_length = 0);
 
     /// Flushes what is left (errors are then ignored: call flush()).
     ~CsvWriter();
