@@ -145,6 +145,20 @@ namespace fgimpact
         return s.str();
       }
 
+      void
+      save(CheckpointWriter &out) const override
+      {
+        TimeStepper::save(out);
+        out.put(a);
+      }
+
+      void
+      load(CheckpointReader &in) override
+      {
+        TimeStepper::load(in);
+        in.get(a);
+      }
+
     private:
       /// Row-sum lumping M_L = M 1 (positive for FE_Q(1) and FE_Q(2));
       /// constrained DoFs stay at rest: zero inverse mass.

@@ -12,6 +12,59 @@ namespace fgimpact
 {
   namespace CommandLine
   {
+    namespace
+    {
+      /// The options followed by a value.
+      bool
+      takes_argument(const std::string &arg)
+      {
+        return arg == "-s" || arg == "--set" || arg == "--resume" ||
+               arg == "--study" || arg == "--study-case";
+      }
+
+      /// What a missing value of the option should have been.
+      std::string
+      argument_description(const std::string &arg)
+      {
+        if (arg == "--resume")
+          return "an output directory";
+        if (arg == "--study" || arg == "--study-case")
+          return "an argument";
+        return "an argument \"Section/Entry=value\"";
+      }
+
+      /// Stores the option's value; false (with the error set) if it is
+      /// not valid.
+      bool
+      take_argument(const std::string &arg,
+                    const std::string &value,
+                    Options           &options)
+      {
+        if (arg == "--resume")
+          options.resume_directory = value;
+        else if (arg == "--study")
+          options.study.push_back(value);
+        else if (arg == "--study-case")
+          {
+            char      *end = nullptr;
+            const long k   = std::strtol(value.c_str(), &end, 10);
+            if (value.empty() || *end != '\0' || k < 0 || k > 99999)
+              {
+                options.action = Action::error;
+                options.error =
+                  "--study-case needs a case number, not '" + value + "'";
+                return false;
+              }
+            options.study_case = static_cast<int>(k);
+          }
+        else
+          options.overrides.emplace_back(value);
+        return true;
+      }
+    } // namespace
+
+
+
     Options
     parse(const int argc, const char *const *argv)
     {
@@ -32,43 +85,17 @@ namespace fgimpact
             options.action = Action::version;
           else if (arg == "-p" || arg == "--print-parameters")
             options.action = Action::print_parameters;
-          else if (arg == "-s" || arg == "--set")
+          else if (takes_argument(arg))
             {
               if (i + 1 == argc)
                 {
                   options.action = Action::error;
-                  options.error  = "option '" + arg +
-                                  "' needs an argument "
-                                  "\"Section/Entry=value\"";
+                  options.error =
+                    "option '" + arg + "' needs " + argument_description(arg);
                   return options;
                 }
-              options.overrides.emplace_back(argv[++i]);
-            }
-          else if (arg == "--study" || arg == "--study-case")
-            {
-              if (i + 1 == argc)
-                {
-                  options.action = Action::error;
-                  options.error  = "option '" + arg + "' needs an argument";
-                  return options;
-                }
-              const std::string value = argv[++i];
-              if (arg == "--study")
-                options.study.push_back(value);
-              else
-                {
-                  char      *end = nullptr;
-                  const long k   = std::strtol(value.c_str(), &end, 10);
-                  if (value.empty() || *end != '\0' || k < 0 || k > 99999)
-                    {
-                      options.action = Action::error;
-                      options.error  = "--study-case needs a case number, "
-                                       "not '" +
-                                      value + "'";
-                      return options;
-                    }
-                  options.study_case = static_cast<int>(k);
-                }
+              if (!take_argument(arg, argv[++i], options))
+                return options;
             }
           else if (arg == "--validate")
             {
@@ -95,6 +122,23 @@ namespace fgimpact
               options.action == Action::version ||
               options.action == Action::print_parameters)
             return options;
+        }
+      if (!options.resume_directory.empty())
+        {
+          // The run's own expanded parameters (Output/Directory is set to
+          // the directory given, wherever the run was started from).
+          if (!options.prm_file.empty())
+            {
+              options.action = Action::error;
+              options.error  = "--resume takes the parameters from " +
+                              options.resume_directory +
+                              "/parameters.prm: give no parameter file";
+              return options;
+            }
+          options.prm_file = options.resume_directory + "/parameters.prm";
+          options.overrides.insert(options.overrides.begin(),
+                                   "Output/Directory=" +
+                                     options.resume_directory);
         }
       if (options.prm_file.empty())
         {
@@ -146,6 +190,10 @@ namespace fgimpact
              "fully (VTU as\n"
              "                          in the input), into "
              "Directory/case_K\n"
+             "  --resume DIR            continue the impact run in DIR "
+             "from its last\n"
+             "                          checkpoint (DIR/parameters.prm; "
+             "same MPI ranks)\n"
              "  --validate              read and check the input (mesh "
              "included),\n"
              "                          print its size, run nothing\n"

@@ -1,33 +1,35 @@
 #include <deal.II/base/exceptions.h>
 
 #include <fgimpact/contact_output.h>
+#include <fgimpact/run_control.h>
 
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 
 namespace fgimpact
 {
   namespace
   {
-    /// A PVD collection of (time in s, file name).
+    /// A PVD collection of (time in s, file name), written through a
+    /// temporary name and a rename like the solution's PVD.
     void
     write_pvd(const std::string                                 &file,
               const std::vector<std::pair<double, std::string>> &entries)
     {
-      std::ofstream out(file);
+      std::ostringstream out;
       out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
              "version=\"0.1\">\n<Collection>\n";
       for (const auto &[t, name] : entries)
         out << "<DataSet timestep=\"" << t << "\" file=\"" << name << "\"/>\n";
       out << "</Collection>\n</VTKFile>\n";
-      AssertThrow(out.good(), ExcMessage("cannot write " + file));
+      write_file_atomically(file, out.str());
     }
 
     /// The header of an ASCII unstructured grid with the given points.
     void
-    begin_grid(std::ofstream               &out,
+    begin_grid(std::ostream                &out,
                const std::vector<Point<3>> &points,
                const unsigned int           n_cells)
     {
@@ -118,7 +120,7 @@ namespace fgimpact
           }
       }
 
-    std::ofstream out(file);
+    std::ostringstream out;
     out.precision(10);
     begin_grid(out, points, triangles.size());
     out << "<Cells>\n<DataArray type=\"Int32\" Name=\"connectivity\" "
@@ -144,7 +146,7 @@ namespace fgimpact
       out << w * 1e6 << '\n';
     out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n"
            "</VTKFile>\n";
-    AssertThrow(out.good(), ExcMessage("cannot write " + file));
+    write_file_atomically(file, out.str());
   }
 
 
@@ -156,7 +158,7 @@ namespace fgimpact
     // Read each time: the candidate set may have grown.
     const std::vector<Point<3>> nodes = contact.contact_points();
     const std::vector<double>   areas = contact.contact_areas();
-    std::ofstream               out(file);
+    std::ostringstream          out;
     out.precision(10);
     begin_grid(out, nodes, nodes.size());
     out << "<Cells>\n<DataArray type=\"Int32\" Name=\"connectivity\" "
@@ -186,7 +188,7 @@ namespace fgimpact
       out << force(k) << '\n';
     out << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"
            "</VTKFile>\n";
-    AssertThrow(out.good(), ExcMessage("cannot write " + file));
+    write_file_atomically(file, out.str());
   }
 
 
@@ -197,5 +199,17 @@ namespace fgimpact
     write_pvd(directory + "/sphere.pvd", spheres);
     if (!contacts.empty())
       write_pvd(directory + "/contact.pvd", contacts);
+  }
+
+
+
+  void
+  ContactVtuWriter::restore(const std::vector<Record> &sphere_records,
+                            const std::vector<Record> &contact_records)
+  {
+    spheres  = sphere_records;
+    contacts = contact_records;
+    if (!spheres.empty())
+      finish();
   }
 } // namespace fgimpact

@@ -10,6 +10,69 @@
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// ContactState field by field (it holds a vector), in a fixed order.
+    template <typename Apply, typename State>
+    void
+    contact_state_fields(const Apply &archive, State &state)
+    {
+      archive(state.alpha);
+      archive(state.force);
+      archive(state.node_displacement);
+      archive(state.newton_iterations);
+      archive(state.forces);
+      archive(state.n_active);
+      archive(state.contact_radius);
+      archive(state.max_pressure);
+      archive(state.candidates_exhausted);
+    }
+
+    /// The message of a failed output write in f ("" if none).
+    template <typename F>
+    std::string
+    failure_of(const F &f)
+    {
+      try
+        {
+          f();
+        }
+      catch (const ExcOutputFailure &e)
+        {
+          return one_line(message_of(e));
+        }
+      return "";
+    }
+
+    /// The one line after SIGINT/SIGTERM, with how to resume.
+    std::string
+    interruption_message(const int          stop,
+                         const unsigned int steps_done,
+                         const unsigned int n_steps,
+                         const double       dt,
+                         const std::string &directory,
+                         const std::string &checkpoint_failure)
+    {
+      char text[400];
+      std::snprintf(text,
+                    sizeof(text),
+                    "interrupted by %s after time step %u of %u (t = %.3f "
+                    "us); history.csv, solution.pvd and summary.txt "
+                    "(status = interrupted) are complete; ",
+                    stop == SIGINT  ? "SIGINT" :
+                    stop == SIGTERM ? "SIGTERM" :
+                                      "a signal",
+                    steps_done,
+                    n_steps,
+                    steps_done * dt * 1e6);
+      return text + (checkpoint_failure.empty() ?
+                       "continue with: fgimpact --resume " + directory :
+                       "no checkpoint (" + checkpoint_failure + ")");
+    }
+  } // namespace
+
+
+
   ImpactDriver::ImpactDriver(const Parameters &parameters,
                              const PlateModel &plate,
                              const Timer      &total_timer)
@@ -125,6 +188,9 @@ namespace fgimpact
     // exists, so that its existence tells a test that the loop can be
     // stopped).
     const SignalGuard signals;
+    // A resumed run restores the state of the checkpoint first (the
+    // monitor reads its part when it reopens the output files).
+    const std::unique_ptr<CheckpointReader> resume = load_checkpoint();
     // The monitor opens the output files: only now, after setup() passed.
     monitor = std::make_unique<ImpactMonitor>(parameters.output,
                                               plate,
@@ -133,29 +199,29 @@ namespace fgimpact
                                               impactor.initial_velocity(),
                                               dt,
                                               n_steps,
-                                              results);
+                                              results,
+                                              resume.get());
     for (const auto &observer : observers)
       monitor->add_row_observer(observer);
     const PlateGeometry &g = plate.get_geometry();
     const Point<2>       p = impactor.impact_point(g.length(), g.width());
     monitor->add_contact_output(Point<3>(p[0], p[1], g.thickness()),
                                 impactor.radius());
-
-    // Eq. 2.16: plate at rest, alpha(0) = 0, alpha'(0) = V0; a(0) = 0 as
-    // F(0) = 0.  The impactor moves in the impact direction (-z).
-    ball          = ImpactorState();
-    ball.v        = impactor.initial_velocity();
-    contact_state = ContactState();
-    monitor->record(0, 0., *stepper, ball, contact_state);
+    if (resume)
+      monitor->resume_output(resume->step, resume->step * dt, *stepper);
+    else
+      monitor->record(0, 0., *stepper, ball, contact_state);
 
     // Plain timers (not TimerOutput, whose destructor writes to the screen
     // when an exception such as a Newton failure is on its way out).
     // SIGINT/SIGTERM and failed writes are looked at once per step, agreed
     // over the ranks (one all-reduce of an int), so all stop together.
-    const MPI_Comm comm = plate.get_mpi_communicator();
-    Timer          loop_timer;
-    unsigned int   steps_done = 0;
-    int            stop       = 0;
+    const MPI_Comm     comm = plate.get_mpi_communicator();
+    Timer              loop_timer;
+    unsigned int       steps_done = resume ? resume->step : 0;
+    int                stop       = 0;
+    const unsigned int interval   = parameters.output.checkpoint_interval;
+    std::string        checkpoint_failure;
     try
       {
         while (steps_done < n_steps && stop == 0)
@@ -164,7 +230,17 @@ namespace fgimpact
             do_timestep();
             steps_done = timestep;
             stop       = agreed_stop(comm, !monitor->output_failure().empty());
+            if (stop == 0 && interval > 0 && steps_done % interval == 0 &&
+                steps_done < n_steps)
+              stop = write_checkpoint(steps_done);
           }
+        // SIGINT/SIGTERM: a checkpoint at the stop, whatever the interval
+        // (a failure to write it does not hide the interruption).
+        if (stop > 0)
+          checkpoint_failure = failure_of([&]() {
+            AssertThrow(write_checkpoint(steps_done) == 0,
+                        ExcOutputFailure(monitor->output_failure()));
+          });
         monitor->close_output();
         if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
           stop = -1;
@@ -194,22 +270,15 @@ namespace fgimpact
                     stop > 0 ? "interrupted" : "completed",
                     loop_timer.wall_time(),
                     total_timer.wall_time());
+    report_checkpoints(loop_timer.wall_time());
     if (stop > 0)
-      {
-        char text[300];
-        std::snprintf(text,
-                      sizeof(text),
-                      "interrupted by %s after time step %u of %u (t = %.3f "
-                      "us); history.csv, solution.pvd and summary.txt "
-                      "(status = interrupted) are complete.",
-                      stop == SIGINT  ? "SIGINT" :
-                      stop == SIGTERM ? "SIGTERM" :
-                                        "a signal",
-                      steps_done,
-                      n_steps,
-                      steps_done * dt * 1e6);
-        throw RunInterrupted(stop, text);
-      }
+      throw RunInterrupted(stop,
+                           interruption_message(stop,
+                                                steps_done,
+                                                n_steps,
+                                                dt,
+                                                parameters.output.directory,
+                                                checkpoint_failure));
   }
 
 
@@ -236,5 +305,92 @@ namespace fgimpact
     const double t = timestep * dt;
     stepper->advance(timestep, t, ball, contact_state);
     monitor->record(timestep, t, *stepper, ball, contact_state);
+  }
+
+
+
+  void
+  ImpactDriver::set_checkpointing(const CheckpointSettings &settings)
+  {
+    checkpoint_settings = settings;
+  }
+
+
+
+  std::unique_ptr<CheckpointReader>
+  ImpactDriver::load_checkpoint()
+  {
+    // Eq. 2.16: plate at rest, alpha(0) = 0, alpha'(0) = V0; a(0) = 0 as
+    // F(0) = 0.  The impactor moves in the impact direction (-z).
+    ball          = ImpactorState();
+    ball.v        = impactor.initial_velocity();
+    contact_state = ContactState();
+    if (checkpoint_settings.resume_directory.empty())
+      return nullptr;
+    auto in = std::make_unique<CheckpointReader>(
+      read_checkpoint(parameters.output.directory,
+                      plate.get_mpi_communicator()));
+    AssertThrow(in->step <= n_steps,
+                ExcMessage("--resume: the checkpoint is at time step " +
+                           std::to_string(in->step) +
+                           ", after Time integration/End time (" +
+                           std::to_string(n_steps) + " steps)"));
+    // The order of write_checkpoint(); the stepper regrows the contact
+    // set before the contact model reads its active set.
+    in->get(ball);
+    contact_state_fields([&in](auto &value) { in->get(value); }, contact_state);
+    stepper->load(*in);
+    contact->load(*in);
+    pcout << "  resumed from the checkpoint after "
+          << time_step_label(in->step, in->step * dt) << '\n';
+    return in;
+  }
+
+
+
+  int
+  ImpactDriver::write_checkpoint(const unsigned int step)
+  {
+    Timer            timer;
+    CheckpointWriter out;
+    out.put(ball);
+    contact_state_fields([&out](const auto &value) { out.put(value); },
+                         contact_state);
+    stepper->save(out);
+    contact->save(out);
+    monitor->save(out, step); // flushes history.csv
+    const MPI_Comm comm = plate.get_mpi_communicator();
+    if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
+      return -1;
+    fgimpact::write_checkpoint(parameters.output.directory,
+                               comm,
+                               step,
+                               checkpoint_settings.parameters_text,
+                               out.data());
+    ++n_checkpoints;
+    checkpoint_bytes = out.data().size();
+    checkpoint_time += timer.wall_time();
+    return 0;
+  }
+
+
+
+  void
+  ImpactDriver::report_checkpoints(const double loop_time) const
+  {
+    if (n_checkpoints == 0 || !parameters.output.print_timing)
+      return;
+    const double per_step = loop_time / std::max(results.n_time_steps, 1u);
+    const double each     = checkpoint_time / n_checkpoints;
+    char         line[200];
+    std::snprintf(line,
+                  sizeof(line),
+                  "  checkpoints: %u written, %.3f MB per rank, %.2f ms each "
+                  "(%.2f time steps)\n",
+                  n_checkpoints,
+                  checkpoint_bytes * 1e-6,
+                  each * 1e3,
+                  each / per_step);
+    pcout << line;
   }
 } // namespace fgimpact

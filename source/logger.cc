@@ -86,11 +86,14 @@ namespace fgimpact
 
 
   void
-  Logger::open(const std::string &filename, const std::string &header)
+  Logger::open(const std::string &filename,
+               const std::string &header,
+               const bool         append)
   {
     if (!active)
       return;
-    sink.file.open(filename);
+    // append: a resumed run continues the log of the run it continues.
+    sink.file.open(filename, append ? std::ios::app : std::ios::out);
     sink.file << header << sink.pending << std::flush;
     sink.pending.clear();
   }

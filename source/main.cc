@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
+#include <fgimpact/checkpoint.h>
 #include <fgimpact/command_line.h>
 #include <fgimpact/input_file.h>
 #include <fgimpact/logger.h>
@@ -77,6 +78,36 @@ namespace
     return input;
   }
 
+
+  /**
+   * Declares, reads and checks every parameter (the -s overrides applied
+   * before validate(), --study lists appended to Study/Entries) and prints
+   * the warnings; throws on bad input, before any file is written.
+   */
+  void
+  read_parameters(const fgimpact::CommandLine::Options &options,
+                  dealii::ParameterHandler             &prm,
+                  fgimpact::Parameters                 &parameters,
+                  std::unique_ptr<fgimpact::InputFile> &input,
+                  fgimpact::StudyParameters            &study,
+                  const bool                            root)
+  {
+    using namespace fgimpact;
+    Parameters::declare_parameters(prm);
+    input = read_input(options.prm_file, MPI_COMM_WORLD);
+    input->parse_into(prm, options.overrides);
+    parameters.parse_parameters(prm);
+    parameters.material.resolve_relative_paths(options.prm_file);
+    parameters.validate();
+    study.parse_parameters(prm);
+    study.entries.insert(study.entries.end(),
+                         options.study.begin(),
+                         options.study.end());
+    for (const auto &warning : parameters.warnings())
+      if (root)
+        std::cerr << "fgimpact: warning: " << warning << std::endl;
+  }
+
   /**
    * Rank 0, before the run: clean the output directory (Output/Overwrite;
    * before log.txt is opened, so that the earlier run's log goes and this
@@ -90,19 +121,49 @@ namespace
                   const char *const                *argv,
                   fgimpact::Logger                 &logger,
                   const dealii::ParameterHandler   &prm,
-                  const fgimpact::InputFile        &input)
+                  const fgimpact::InputFile        &input,
+                  const bool                        resume)
   {
-    fgimpact::prepare_output_directory(output);
+    // Resuming: nothing removed, log.txt continued, input.prm kept.
+    if (!resume)
+      fgimpact::prepare_output_directory(output);
     const std::string provenance = fgimpact::CommandLine::provenance(
       argc, argv, dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
-    logger.open(output.directory + "/log.txt", provenance);
+    logger.open(output.directory + "/log.txt", provenance, resume);
     fgimpact::SummaryWriter::set_preamble(provenance);
     std::ostringstream parameters;
     prm.print_parameters(parameters, dealii::ParameterHandler::PRM);
     fgimpact::write_file_atomically(output.directory + "/parameters.prm",
                                     parameters.str());
-    fgimpact::write_file_atomically(output.directory + "/input.prm",
-                                    input.original());
+    if (!resume)
+      fgimpact::write_file_atomically(output.directory + "/input.prm",
+                                      input.original());
+  }
+
+
+
+  /// The expanded parameters for the checkpoints; with --resume, rank 0
+  /// checks the checkpoint against them (a failure is thrown on every
+  /// rank).
+  fgimpact::CheckpointSettings
+  checkpoint_settings(const fgimpact::CommandLine::Options &options,
+                      const dealii::ParameterHandler       &prm)
+  {
+    using namespace dealii;
+    fgimpact::CheckpointSettings checkpoint;
+    checkpoint.resume_directory = options.resume_directory;
+    std::ostringstream text;
+    prm.print_parameters(text,
+                         ParameterHandler::OutputStyle(
+                           ParameterHandler::PRM | ParameterHandler::Short));
+    checkpoint.parameters_text = text.str();
+    if (!options.resume_directory.empty())
+      fgimpact::run_on_root(MPI_COMM_WORLD, [&]() {
+        fgimpact::check_resume(options.resume_directory,
+                               checkpoint.parameters_text,
+                               Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+      });
+    return checkpoint;
   }
 } // namespace
 
@@ -123,56 +184,52 @@ main(int argc, char *argv[])
   const int                  exit_code = handle_informational(options, root);
   if (exit_code >= 0)
     return exit_code;
-  const std::string &prm_file = options.prm_file;
 
   ParameterHandler           prm;
   fgimpact::Parameters       parameters;
   std::unique_ptr<InputFile> input;
   StudyParameters            study;
-  // Input errors: everything is checked before any file is written; the
-  // -s overrides are applied before validate().  Failures are reported in
-  // one line with their exit code by report_failure() (run_control.cc).
+  // Input errors: checked before any file is written, reported in one line
+  // with their exit code by report_failure() (run_control.cc).
   try
     {
-      Parameters::declare_parameters(prm);
-      input = read_input(prm_file, MPI_COMM_WORLD);
-      input->parse_into(prm, options.overrides);
-      parameters.parse_parameters(prm);
-      parameters.material.resolve_relative_paths(prm_file);
-      parameters.validate();
-      study.parse_parameters(prm);
-      study.entries.insert(study.entries.end(),
-                           options.study.begin(),
-                           options.study.end());
-      for (const auto &warning : parameters.warnings())
-        if (root)
-          std::cerr << "fgimpact: warning: " << warning << std::endl;
+      read_parameters(options, prm, parameters, input, study, root);
     }
   catch (...)
     {
+      const std::string &file = options.prm_file;
       return report_failure(std::current_exception(),
                             root,
                             1,
-                            "error in " + (prm_file == "-" ?
-                                             std::string("standard input") :
-                                             prm_file));
+                            "error in " +
+                              (file == "-" ? "standard input" : file));
     }
 
   // A study (Study/Entries or --study): its own cases and outputs.
+  const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
   if (!study.entries.empty() && options.action == CommandLine::Action::run)
     return run_study(study,
                      *input,
                      options.overrides,
                      options.study_case,
-                     CommandLine::provenance(argc,
-                                             argv,
-                                             Utilities::MPI::n_mpi_processes(
-                                               MPI_COMM_WORLD)),
+                     CommandLine::provenance(argc, argv, n_ranks),
                      logger);
+
+  // Checkpoints store the parameters; a resume refuses changed ones.
+  CheckpointSettings checkpoint;
+  try
+    {
+      checkpoint = checkpoint_settings(options, prm);
+    }
+  catch (...)
+    {
+      return report_failure(std::current_exception(), root, 1);
+    }
 
   try
     {
       Simulator simulator(parameters, MPI_COMM_WORLD);
+      simulator.set_checkpointing(checkpoint);
       // Everything that can fail on bad input is checked before any file
       // is written: setup() writes nothing.  Rank 0 prepares the directory
       // and writes the start files; every rank learns the outcome, so that
@@ -189,7 +246,13 @@ main(int argc, char *argv[])
               return 0;
             }
           run_on_root(MPI_COMM_WORLD, [&]() {
-            start_run_files(parameters.output, argc, argv, logger, prm, *input);
+            start_run_files(parameters.output,
+                            argc,
+                            argv,
+                            logger,
+                            prm,
+                            *input,
+                            !options.resume_directory.empty());
           });
         }
       catch (...)

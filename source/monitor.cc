@@ -62,9 +62,17 @@ namespace fgimpact
         "summary.txt, parameters.prm, input.prm, log.txt, "
         "frequencies.csv, solution.pvd, solution_*.vtu/"
         ".pvtu, sphere and contact series, peak_fields, "
-        "contact_pressure.csv), so that no file of an earlier run is mixed "
+        "contact_pressure.csv, checkpoint/), so that no file of an earlier run is mixed "
         "with the new ones. false: refuse a Directory that "
         "is not empty.");
+      prm.declare_entry(
+        "Checkpoint interval",
+        "200",
+        Patterns::Integer(0, 100000000),
+        "Write a checkpoint (Directory/checkpoint/, the complete state, "
+        "replacing the last one only when complete) every this many time "
+        "steps, and when SIGINT or SIGTERM stops the run; 0 = only then. "
+        "`fgimpact --resume Directory` continues the run bit for bit.");
       VtuFields::declare_parameters(prm);
       ProbePoints::declare_parameters(prm);
     }
@@ -89,7 +97,8 @@ namespace fgimpact
       level == "default" ? DataOutBase::VtkFlags::default_compression :
       level == "best"    ? DataOutBase::VtkFlags::best_compression :
                            DataOutBase::VtkFlags::best_speed;
-    overwrite = prm.get_bool("Overwrite");
+    overwrite           = prm.get_bool("Overwrite");
+    checkpoint_interval = prm.get_integer("Checkpoint interval");
     vtu_fields.parse_parameters(prm);
     probe_points.parse_parameters(prm);
     prm.leave_subsection();
@@ -104,7 +113,8 @@ namespace fgimpact
                                const double            impact_velocity,
                                const double            dt,
                                const unsigned int      n_steps,
-                               ImpactResults          &results)
+                               ImpactResults          &results,
+                               CheckpointReader       *resume)
     : parameters(parameters)
     , contact_model(contact)
     , m_i(impactor_mass)
@@ -141,6 +151,8 @@ namespace fgimpact
       columns.insert(columns.end(),
                      contact_area_columns().begin(),
                      contact_area_columns().end());
+    if (resume)
+      load(*resume);
     if (root)
       {
         std::vector<std::pair<std::string, int>> header;
@@ -148,7 +160,8 @@ namespace fgimpact
           header.emplace_back(column.name, column.decimals);
         history =
           std::make_unique<CsvWriter>(parameters.directory + "/history.csv",
-                                      header);
+                                      header,
+                                      history_length);
       }
     if (!parameters.probe_points.points.empty())
       {
@@ -164,6 +177,8 @@ namespace fgimpact
                                         parameters.directory,
                                         parameters.vtu_compression,
                                         parameters.vtu_fields);
+    if (vtu && resume)
+      vtu->restore(vtu_records);
   }
 
 
@@ -173,10 +188,14 @@ namespace fgimpact
                                     const double    sphere_radius)
   {
     if (parameters.vtu_interval > 0 && root)
-      contact_vtu = std::make_unique<ContactVtuWriter>(parameters.directory,
-                                                       impact_point,
-                                                       sphere_radius,
-                                                       contact_model);
+      {
+        contact_vtu = std::make_unique<ContactVtuWriter>(parameters.directory,
+                                                         impact_point,
+                                                         sphere_radius,
+                                                         contact_model);
+        if (!sphere_records.empty())
+          contact_vtu->restore(sphere_records, contact_records);
+      }
   }
 
 

@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 
 namespace fgimpact
@@ -200,6 +201,32 @@ namespace fgimpact
 
 
 
+  std::vector<std::pair<double, std::string>>
+  VtuWriter::records(const unsigned int step, bool &in_flight)
+  {
+    in_flight = any_written && pending_step == step && pending.valid();
+    if (!in_flight)
+      finish();
+    return times_and_names;
+  }
+
+
+
+  void
+  VtuWriter::restore(const std::vector<std::pair<double, std::string>> &records)
+  {
+    times_and_names = records;
+    any_written     = true; // every rank: a snapshot at step 0 at least
+    if (!times_and_names.empty())
+      {
+        std::ostringstream pvd;
+        DataOutBase::write_pvd_record(pvd, times_and_names);
+        write_file_atomically(directory + "/solution.pvd", pvd.str());
+      }
+  }
+
+
+
   void
   VtuWriter::write(const unsigned int                    step,
                    const double                          t,
@@ -305,6 +332,7 @@ namespace fgimpact
 
     // Listed in the PVD by finish(), once the files are complete.
     pending_record = {t, record};
+    pending_step   = step;
     record_pending = (rank == 0);
     if (n_ranks > 1)
       finish();
@@ -388,18 +416,46 @@ namespace fgimpact
 
 
   CsvWriter::CsvWriter(const std::string                              &filename,
-                       const std::vector<std::pair<std::string, int>> &columns)
+                       const std::vector<std::pair<std::string, int>> &columns,
+                       const std::uintmax_t resume_length)
     : filename(filename)
-    , out(filename, std::ios::binary)
+    , written(resume_length)
   {
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      decimals.push_back(columns[i].second);
+    if (resume_length > 0)
+      {
+        // Rows past the checkpoint (a run killed later) are dropped.
+        std::error_code error;
+        AssertThrow(std::filesystem::file_size(filename, error) >=
+                        resume_length &&
+                      !error,
+                    ExcMessage(filename +
+                               " is shorter than at the checkpoint "
+                               "(" +
+                               std::to_string(resume_length) +
+                               " bytes): it cannot be continued"));
+        std::filesystem::resize_file(filename, resume_length, error);
+        out.open(filename, std::ios::binary | std::ios::app);
+        AssertThrow(out && !error,
+                    ExcOutputFailure("cannot write " + filename + "."));
+        return;
+      }
+    out.open(filename, std::ios::binary);
     AssertThrow(out, ExcOutputFailure("cannot write " + filename + "."));
     for (unsigned int i = 0; i < columns.size(); ++i)
-      {
-        buffer += (i ? ", " : "") + columns[i].first;
-        decimals.push_back(columns[i].second);
-      }
+      buffer += (i ? ", " : "") + columns[i].first;
     buffer += '\n';
     flush();
+  }
+
+
+
+  std::uintmax_t
+  CsvWriter::length()
+  {
+    flush();
+    return written;
   }
 
 
@@ -453,6 +509,7 @@ namespace fgimpact
       }
     out.write(buffer.data(), buffer.size());
     out.flush();
+    written += buffer.size();
     buffer.clear();
     AssertThrow(out.good(),
                 ExcOutputFailure("cannot write " + filename +

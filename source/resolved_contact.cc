@@ -53,6 +53,31 @@ namespace fgimpact
 
 
   void
+  ResolvedSphereContact::save(CheckpointWriter &out) const
+  {
+    out.put(candidate_radius);
+    out.put(active);
+  }
+
+
+
+  void
+  ResolvedSphereContact::load(CheckpointReader &in)
+  {
+    double            radius = 0;
+    std::vector<bool> stored_active;
+    in.get(radius);
+    in.get(stored_active);
+    AssertThrow(radius == candidate_radius &&
+                  stored_active.size() == active.size(),
+                ExcMessage("the checkpoint's contact candidate set does not "
+                           "match this set-up"));
+    active = stored_active;
+  }
+
+
+
+  void
   ResolvedSphereContact::build_candidates()
   {
     dofs.clear();

@@ -2,6 +2,7 @@
 
 #include <deal.II/lac/solver_control.h>
 
+#include <fgimpact/checkpoint.h>
 #include <fgimpact/monitor.h>
 #include <fgimpact/run_control.h>
 
@@ -286,8 +287,10 @@ namespace fgimpact
 
     std::vector<fs::path> own, foreign;
     for (const auto &entry : fs::directory_iterator(directory, error))
-      (entry.is_regular_file() &&
-           is_own_output(entry.path().filename().string()) ?
+      ((entry.is_regular_file() &&
+        is_own_output(entry.path().filename().string())) ||
+           (entry.is_directory() &&
+            is_checkpoint_directory(entry.path().filename().string())) ?
          own :
          foreign)
         .push_back(entry.path());
@@ -301,7 +304,7 @@ namespace fgimpact
     // earlier run survives next to the new ones.
     for (const auto &file : own)
       {
-        fs::remove(file, error);
+        fs::remove_all(file, error); // checkpoint/ is a directory
         AssertThrow(!error,
                     ExcMessage("Output/Directory: cannot remove the earlier "
                                "run's " +

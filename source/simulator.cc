@@ -174,6 +174,7 @@ namespace fgimpact
               std::make_unique<ImpactDriver>(parameters, *plate, total_timer);
             for (const auto &observer : observers)
               impact->add_row_observer(observer);
+            impact->set_checkpointing(checkpoint_settings);
             driver = std::move(impact);
             break;
           }
@@ -298,5 +299,13 @@ namespace fgimpact
     AssertThrow(!driver,
                 ExcMessage("add_history_observer() must precede setup()."));
     observers.push_back(observer);
+  }
+
+
+
+  void
+  Simulator::set_checkpointing(const CheckpointSettings &settings)
+  {
+    checkpoint_settings = settings;
   }
 } // namespace fgimpact

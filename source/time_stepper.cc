@@ -120,10 +120,32 @@ namespace fgimpact
 
 
 
+  void
+  TimeStepper::save(CheckpointWriter &out) const
+  {
+    out.put(u);
+    out.put(v);
+    out.put(kinetic);
+    out.put(strain);
+    out.put(last_linear_iterations);
+  }
+
+
+
+  void
+  TimeStepper::load(CheckpointReader &in)
+  {
+    in.get(u);
+    in.get(v);
+    in.get(kinetic);
+    in.get(strain);
+    in.get(last_linear_iterations);
+  }
+
+
+
   namespace
   {
-
-
 
     /**
      * Implicit Newmark.  The plate is linear and K_eff = K + a0 M constant,
@@ -296,6 +318,38 @@ namespace fgimpact
         return s.str();
       }
 
+      void
+      save(CheckpointWriter &out) const override
+      {
+        TimeStepper::save(out);
+        out.put<std::uint64_t>(dofs.size());
+        for (const auto *vector : {&a, &Mu, &Mv, &Ma})
+          out.put(*vector);
+      }
+
+      void
+      load(CheckpointReader &in) override
+      {
+        TimeStepper::load(in);
+        std::uint64_t n_contact_dofs = 0;
+        in.get(n_contact_dofs);
+        if (n_contact_dofs != dofs.size())
+          {
+            // The candidate set had grown: grow it alike (M u, M v, M a
+            // come from the checkpoint below).
+            while (contact_model.contact_dofs().size() < n_contact_dofs)
+              AssertThrow(contact_model.grow_candidates(),
+                          ExcMessage("the checkpoint's contact candidate "
+                                     "set cannot be rebuilt"));
+            rebuild_for_contact_dofs();
+          }
+        AssertThrow(dofs.size() == n_contact_dofs,
+                    ExcMessage("the checkpoint's contact candidate set "
+                               "does not match this set-up"));
+        for (auto *vector : {&a, &Mu, &Mv, &Ma})
+          in.get(*vector);
+      }
+
     private:
       /**
        * The plate's consistent mass matrix, or for a contact model with
@@ -352,6 +406,20 @@ namespace fgimpact
                                time_step_label(step, t) +
                                ", which cannot grow beyond the sphere's "
                                "radius."));
+        rebuild_for_contact_dofs();
+        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+          std::cout << "  " << time_step_label(step, t)
+                    << ": the contact reached the edge of the candidate "
+                       "set; grown to "
+                    << dofs.size() << " candidates" << std::endl;
+      }
+
+      /// After the contact set grew: its massless DoFs (a new K_eff,
+      /// factorized again, and the carried products M u, M v, M a) and
+      /// its compliance.
+      void
+      rebuild_for_contact_dofs()
+      {
         dofs = contact_model.contact_dofs();
         if (mass != &plate.mass_matrix())
           {
@@ -364,11 +432,6 @@ namespace fgimpact
             mass->vmult(Ma, a);
           }
         compute_compliance();
-        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
-          std::cout << "  " << time_step_label(step, t)
-                    << ": the contact reached the edge of the candidate "
-                       "set; grown to "
-                    << dofs.size() << " candidates" << std::endl;
       }
 
       /// c_j = K_eff^{-1} g_j and the dense compliance C (m/N).

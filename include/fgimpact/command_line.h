@@ -35,7 +35,10 @@ namespace fgimpact
       std::vector<std::string> study;     // "Section/Entry=v1,v2,...", --study
       int                      study_case = -1; // --study-case K
       std::string              error;
-      bool show_usage = false; // no argument at all: print the usage
+      /// --resume DIR: prm_file is DIR/parameters.prm and the first
+      /// override sets Output/Directory = DIR.
+      std::string resume_directory;
+      bool        show_usage = false; // no argument at all: print the usage
     };
 
     /// The options of argv; no argument at all is an error (usage, exit 1).

@@ -7,6 +7,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <fgimpact/checkpoint.h>
 #include <fgimpact/contact_law.h>
 #include <fgimpact/impactor.h>
 #include <fgimpact/plate_model.h>
@@ -164,6 +165,16 @@ namespace fgimpact
     {
       return {};
     }
+
+    /// A model's own state between steps (the resolved contact's active
+    /// set), for a checkpoint; restored after the stepper's load(), which
+    /// regrows the candidate set.
+    virtual void
+    save(CheckpointWriter &) const
+    {}
+    virtual void
+    load(CheckpointReader &)
+    {}
 
     /// Whether the state's n_active, contact_radius and max_pressure are
     /// meaningful (history columns are added for them).

@@ -21,7 +21,8 @@ namespace fgimpact
    * those nodes as points with their force and nodal pressure
    * (contact_NNNNN.vtu); each series has its PVD file (sphere.pvd,
    * contact.pvd) with the simulation time.  Everything is replicated on
-   * the MPI ranks: rank 0 alone writes.
+   * the MPI ranks: rank 0 alone writes.  Every file is written to a
+   * temporary name and renamed.
    */
   class ContactVtuWriter
   {
@@ -40,9 +41,30 @@ namespace fgimpact
           const double        w,
           const ContactState &state);
 
-    /// Write the PVD files.
+    /// Write the PVD files (through a temporary name and a rename).
     void
     finish() const;
+
+    /// (time in s, file name) of a PVD entry.
+    using Record = std::pair<double, std::string>;
+
+    /// The PVD entries so far (for a checkpoint).
+    const std::vector<Record> &
+    sphere_records() const
+    {
+      return spheres;
+    }
+    const std::vector<Record> &
+    contact_records() const
+    {
+      return contacts;
+    }
+
+    /// On resume: the checkpoint's entries; the PVD files are rewritten
+    /// with them (dropping snapshots written after the checkpoint).
+    void
+    restore(const std::vector<Record> &sphere_records,
+            const std::vector<Record> &contact_records);
 
   private:
     void

@@ -4,6 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <fgimpact/checkpoint.h>
 #include <fgimpact/contact_law.h>
 #include <fgimpact/contact_model.h>
 #include <fgimpact/impactor.h>
@@ -62,6 +63,11 @@ namespace fgimpact
     void
     add_row_observer(const ImpactMonitor::RowObserver &observer);
 
+    /// Checkpoints: the parameters' text to store, and whether to resume
+    /// (before run()).
+    void
+    set_checkpointing(const CheckpointSettings &settings);
+
     const ImpactResults &
     get_results() const
     {
@@ -71,6 +77,20 @@ namespace fgimpact
   private:
     void
     do_timestep();
+
+    /// Restore the state of the checkpoint in the output directory (the
+    /// driver's part; the monitor reads the rest); returns its reader.
+    std::unique_ptr<CheckpointReader>
+    load_checkpoint();
+
+    /// Write a checkpoint after step `step` (collective): -1 if an output
+    /// write failed on some rank (kept in the monitor), else 0.
+    int
+    write_checkpoint(const unsigned int step);
+
+    /// At the end: one line on the checkpoints written (with timing).
+    void
+    report_checkpoints(const double loop_time) const;
 
     /// After a failure in the time loop: summary.txt with status = failed
     /// (best effort: errors here are swallowed, the first one counts).
@@ -89,6 +109,11 @@ namespace fgimpact
     std::unique_ptr<TimeStepper>            stepper;
     std::unique_ptr<ImpactMonitor>          monitor;
     std::vector<ImpactMonitor::RowObserver> observers;
+
+    CheckpointSettings checkpoint_settings;
+    unsigned int       n_checkpoints    = 0;
+    double             checkpoint_time  = 0; // s, all checkpoints
+    std::size_t        checkpoint_bytes = 0; // of rank 0's last one
 
     ImpactorState ball;
     ContactState  contact_state;

@@ -28,7 +28,9 @@ namespace fgimpact
 
     /// Start log.txt: `header` first, then everything printed so far.
     void
-    open(const std::string &filename, const std::string &header);
+    open(const std::string &filename,
+         const std::string &header,
+         const bool         append = false);
 
   private:
     /// Where both streams' copies go: a file once open, a string before.

@@ -6,6 +6,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/timer.h>
 
+#include <fgimpact/checkpoint.h>
 #include <fgimpact/contact_model.h>
 #include <fgimpact/contact_output.h>
 #include <fgimpact/logger.h>
@@ -35,6 +36,8 @@ namespace fgimpact
     bool         print_timing    = true;
     bool         instrumentation = false;
     bool         overwrite       = true;
+    /// Entry "Checkpoint interval" (steps; 0 = none).
+    unsigned int checkpoint_interval = 200;
 
     /// Entry "VTU compression" (zlib level of the VTU data).
     DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression =
@@ -139,7 +142,8 @@ namespace fgimpact
                   const double            impact_velocity,
                   const double            dt,
                   const unsigned int      n_steps,
-                  ImpactResults          &results);
+                  ImpactResults          &results,
+                  CheckpointReader       *resume = nullptr);
 
     /// Receive every history row (the CSV's columns and units, before
     /// rounding) on every rank.
@@ -170,6 +174,22 @@ namespace fgimpact
            const ImpactorState &ball,
            const ContactState  &contact,
            const TimeStepper   *stepper = nullptr);
+    /**
+     * For a checkpoint: the monitor's state (the time history's results,
+     * peak detection, episodes, the contact work, the watchdog), the
+     * length of history.csv (flushed) and the PVD entries so far.  A
+     * failed write is kept in output_failure() as in record().
+     */
+    void
+    save(CheckpointWriter &out, const unsigned int step);
+
+    /// A resumed run, once the state is restored: write the VTU snapshot
+    /// of the checkpoint's step again if it was still being written when
+    /// the checkpoint was taken.
+    void
+    resume_output(const unsigned int step,
+                  const double       t,
+                  const TimeStepper &stepper);
 
     /// Wait for the last VTU snapshot and flush history.csv (timed as
     /// output).
@@ -196,6 +216,12 @@ namespace fgimpact
            const double         wall_time);
 
   private:
+    /// The constructor's part of a resume: save()'s state, the history
+    /// length in history_length; the PVD entries are restored by the
+    /// writers.
+    void
+    load(CheckpointReader &in);
+
     void
     update_episodes(const double t, const ContactState &contact);
     void
@@ -249,6 +275,12 @@ namespace fgimpact
     // The energy watchdog has warned; an output write failed on this rank.
     bool        drift_warned = false;
     std::string output_failure_message;
+    /// A resumed run: history.csv's length and the PVD entries at the
+    /// checkpoint.
+    std::uintmax_t                              history_length = 0;
+    std::vector<std::pair<double, std::string>> vtu_records, sphere_records,
+      contact_records;
+    bool rewrite_snapshot = false;
   };
 } // namespace fgimpact
 

@@ -13,6 +13,7 @@
 #include <fgimpact/stress_recovery.h>
 
 #include <chrono>
+#include <cstdint>
 #include <fstream>
 #include <future>
 #include <memory>
@@ -144,6 +145,21 @@ namespace fgimpact
     void
     write_peak_fields();
 
+    /**
+     * For a checkpoint after step `step`: the PVD entries (time in s,
+     * .pvtu name; rank 0 only, empty elsewhere).  A snapshot of this very
+     * step still being written is not waited for (that would cost the
+     * background write's time): it is left out and in_flight set, and the
+     * resumed run writes it again from the restored state.
+     */
+    std::vector<std::pair<double, std::string>>
+    records(const unsigned int step, bool &in_flight);
+
+    /// On resume: the checkpoint's entries; rank 0 rewrites the PVD with
+    /// them (dropping snapshots written after the checkpoint).
+    void
+    restore(const std::vector<std::pair<double, std::string>> &records);
+
   private:
     void
     add_recovered_fields(DataOut<3> &data_out);
@@ -157,6 +173,7 @@ namespace fgimpact
     std::vector<std::pair<double, std::string>> times_and_names;
     std::pair<double, std::string>              pending_record;
     bool                                        record_pending = false;
+    unsigned int                                pending_step   = 0;
     std::future<void>                           pending;
     bool                                        any_written = false;
 
@@ -175,9 +192,11 @@ namespace fgimpact
   class CsvWriter
   {
   public:
-    /// columns: name and number of decimals.
+    /// columns: name and number of decimals.  resume_length > 0: continue
+    /// a file (a resumed run) cut to this many bytes, without a header.
     CsvWriter(const std::string                              &filename,
-              const std::vector<std::pair<std::string, int>> &columns);
+              const std::vector<std::pair<std::string, int>> &columns,
+              const std::uintmax_t resume_length = 0);
 
     /// Flushes what is left (errors are then ignored: call flush()).
     ~CsvWriter();
@@ -189,12 +208,17 @@ namespace fgimpact
     void
     flush();
 
+    /// flush() and return the file's length in bytes (for a checkpoint).
+    std::uintmax_t
+    length();
+
   private:
     const std::string                     filename;
     std::ofstream                         out;
     std::vector<int>                      decimals;
     std::string                           buffer;
     std::chrono::steady_clock::time_point last_flush;
+    std::uintmax_t                        written = 0; // bytes on disk
   };
 
 

@@ -127,6 +127,12 @@ namespace fgimpact
       return true;
     }
 
+    /// The candidate radius and the active set (the warm start).
+    void
+    save(CheckpointWriter &out) const override;
+    void
+    load(CheckpointReader &in) override;
+
     /// Enlarge the candidate radius 1.5 times (at most to R) and collect
     /// the candidates anew.  Collective.
     bool

@@ -132,8 +132,8 @@ namespace fgimpact
    * Create the output directory, check that a byte can be written there,
    * and clean it: with Output/Overwrite remove exactly the files this
    * program writes (history.csv, summary.txt, parameters.prm, input.prm,
-   * log.txt, frequencies.csv, solution.pvd, solution_*.vtu/.pvtu and
-   * leftover *.tmp), otherwise refuse a non-empty directory.  Call on one
+   * log.txt, frequencies.csv, solution.pvd, solution_*.vtu/.pvtu,
+   * leftover *.tmp and the checkpoint directories), otherwise refuse a non-empty directory.  Call on one
    * rank, before the run opens its log.txt there; throws ExcMessage naming
    * Output/Directory or Output/Overwrite.
    */

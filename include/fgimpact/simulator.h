@@ -68,6 +68,11 @@ namespace fgimpact
     void
     add_history_observer(const ImpactMonitor::RowObserver &observer);
 
+    /// Checkpoints of an impact run: the parameters' text to store in
+    /// them, and whether to resume; before setup().
+    void
+    set_checkpointing(const CheckpointSettings &settings);
+
   private:
     /// Geometry/Contact refinement *: centre, radius (automatic from
     /// expected_contact_radius()) and levels.
@@ -84,6 +89,7 @@ namespace fgimpact
     std::unique_ptr<PlateModel>                 plate;
     std::unique_ptr<ProblemDriver>              driver;
     std::vector<ImpactMonitor::RowObserver>     observers;
+    CheckpointSettings                          checkpoint_settings;
   };
 } // namespace fgimpact
 

@@ -5,6 +5,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/checkpoint.h>
 #include <fgimpact/contact_model.h>
 #include <fgimpact/linear_solver.h>
 #include <fgimpact/newmark.h>
@@ -179,6 +180,17 @@ namespace fgimpact
     /// Name of the scheme and linear solver, for the log.
     virtual std::string
     description() const = 0;
+
+    /// The state after a time step, for a checkpoint: u, v, the energies
+    /// and what the scheme carries (a; M u, M v, M a; the contact set's
+    /// size after growth).  The factorization is not stored.
+    virtual void
+    save(CheckpointWriter &out) const;
+
+    /// Restore save()'s state after initialize() (grows the contact set
+    /// and factorizes again if it had grown).  Collective.
+    virtual void
+    load(CheckpointReader &in);
 
   protected:
     /// The state every scheme keeps and advance() updates.

@@ -1,0 +1,185 @@
+// Checkpoint and resume on one MPI rank, running the executable as a
+// process: an uninterrupted run against a run killed with SIGKILL at a
+// pseudo-random step (fixed seed) and continued with `fgimpact --resume`;
+// history.csv must be identical byte for byte and summary.txt line for
+// line (except the provenance comments and the wall-clock timings), and
+// the PVD files identical.  Cases: Hertz node (implicit and explicit), a
+// resolved sphere whose candidate set grows during the run, and SIGTERM
+// (a checkpoint at the stop only).  Also: resume with a changed parameter,
+// on a different number of MPI ranks, or without a checkpoint is refused
+// with one line naming the cause, exit code 1, nothing changed.
+
+#include "checkpoint_resume.h"
+
+using namespace checkpoint_test;
+
+namespace
+{
+  const std::string small_plate =
+    "subsection Geometry\n set Subdivisions x = 20\n set Subdivisions y = "
+    "10\n set Subdivisions z = 2\nend\n";
+
+  /// SIGTERM once history.csv exists plus delay_ms; a checkpoint is
+  /// written at the stop although the interval is 0.
+  bool
+  terminate_and_resume(const std::string &prm, const unsigned int delay_ms)
+  {
+    const std::string name = "sigterm", reference = "ref_" + name,
+                      stopped = "stopped_" + name;
+    {
+      std::ofstream out(name + ".prm");
+      out << prm << "subsection Output\n set Directory = " << reference
+          << "\n set Checkpoint interval = 0\n set Log interval = 0\n set "
+             "Print timing = false\nend\n";
+    }
+    fs::remove_all(reference);
+    fs::remove_all(stopped);
+    const int   reference_exit = run({name + ".prm"}, 1, reference + ".log");
+    const pid_t pid =
+      start({name + ".prm", "-s", "Output/Directory=" + stopped},
+            1,
+            stopped + ".log");
+    for (unsigned int i = 0; i < 6000 && !fs::exists(stopped + "/history.csv");
+         ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+    kill(pid, SIGTERM);
+    const int         stop_exit = wait_for(pid);
+    const std::string message   = read(stopped + ".log");
+    const bool        hint = message.find("continue with: fgimpact --resume " +
+                                   stopped) != std::string::npos;
+    const int         resume_exit =
+      run({"--resume", stopped}, 1, stopped + ".resume.log");
+    const Comparison c = compare(reference, stopped);
+    std::printf("SIGTERM, checkpoint interval 0: exit %d, resume hint on "
+                "stderr %s, resumed (exit %d); history.csv %u lines, %u "
+                "differing; summary.txt %u lines compared, %u differing\n",
+                stop_exit,
+                hint ? "yes" : "NO",
+                resume_exit,
+                c.history_lines,
+                c.history_differing,
+                c.summary_lines,
+                c.summary_differing);
+    return reference_exit == 0 && stop_exit == 128 + SIGTERM && hint &&
+           resume_exit == 0 && c.same_length && c.history_differing == 0 &&
+           c.summary_differing == 0;
+  }
+
+  /// A refused resume: exit code 1, one line naming `expected`, the
+  /// directory's history.csv untouched.
+  bool
+  refused(const std::string              &what,
+          const std::vector<std::string> &args,
+          const unsigned int              n_ranks,
+          const std::string              &directory,
+          const std::string              &expected)
+  {
+    const std::string before = read(directory + "/history.csv");
+    const int         code   = run(args, n_ranks, "refused.log");
+    const std::string log    = read("refused.log");
+    unsigned int      ours   = 0;
+    for (const auto &line : lines_of(log))
+      ours += (line.rfind("fgimpact: error", 0) == 0);
+    const bool named     = log.find(expected) != std::string::npos;
+    const bool untouched = read(directory + "/history.csv") == before;
+    std::printf("resume %s: exit code %d, one error line %s, names '%s' "
+                "%s, history.csv untouched %s\n",
+                what.c_str(),
+                code,
+                ours == 1 ? "yes" : "NO",
+                expected.c_str(),
+                named ? "yes" : "NO",
+                untouched ? "yes" : "NO");
+    if (!(code == 1 && ours == 1 && named && untouched))
+      std::printf("  %s\n", log.c_str());
+    return code == 1 && ours == 1 && named && untouched;
+  }
+} // namespace
+
+
+
+int
+main()
+{
+  Lcg  random{20261123};
+  bool ok = true;
+
+  const std::string hertz =
+    small_plate + "subsection Time integration\n set End time = 200e-6\nend\n"
+                  "subsection Output\n set Checkpoint interval = 15\nend\n";
+  ok = kill_and_resume("hertz_node", hertz, 1, random.kill_point(100)) && ok;
+
+  const std::string explicit_scheme =
+    small_plate +
+    "subsection Time integration\n set Scheme = explicit\n set Time step = "
+    "0\n set End time = 200e-6\nend\n"
+    "subsection Output\n set Checkpoint interval = 25\nend\n";
+  ok =
+    kill_and_resume("explicit", explicit_scheme, 1, random.kill_point(120)) &&
+    ok;
+
+  // The candidate set (0.6 mm) grows during the run: the resumed run
+  // regrows it and factorizes its K_eff again.  VTU on: the PVD files are
+  // cut back to the checkpoint's entries.
+  const std::string resolved =
+    small_plate +
+    "subsection Geometry\n set Contact refinement levels = 1\nend\n"
+    "subsection Contact\n set Model = resolved sphere\n set Candidate "
+    "radius = 0.0006\nend\n"
+    "subsection Time integration\n set End time = 120e-6\nend\n"
+    "subsection Output\n set Checkpoint interval = 10\n set VTU interval = "
+    "25\n set Fields = displacement\nend\n";
+  ok = kill_and_resume("resolved_sphere", resolved, 1, random.kill_point(60)) &&
+       ok;
+  // (deal.II's PVD has a comment with the time of day: not compared.)
+  const auto pvd_entries = [](const std::string &file) {
+    std::string entries;
+    for (const auto &line : lines_of(read(file)))
+      if (line.find("generated by the deal.II library") == std::string::npos)
+        entries += line + '\n';
+    return entries;
+  };
+  bool same_pvd = true;
+  for (const std::string pvd : {"solution.pvd", "sphere.pvd", "contact.pvd"})
+    same_pvd = same_pvd && fs::exists("ref_resolved_sphere/" + pvd) &&
+               pvd_entries("ref_resolved_sphere/" + pvd) ==
+                 pvd_entries("killed_resolved_sphere/" + pvd);
+  std::printf("resolved sphere: solution.pvd, sphere.pvd, contact.pvd "
+              "identical (but deal.II's date comment) %s\n",
+              same_pvd ? "yes" : "NO");
+  ok = ok && same_pvd;
+
+  ok = terminate_and_resume(small_plate + "subsection Time integration\n set "
+                                          "End time = 800e-6\nend\n",
+                            100 + random.next(200)) &&
+       ok;
+
+  // Refusals, on the killed Hertz node run's directory.
+  ok = refused(
+         "with Impactor/Initial velocity changed",
+         {"--resume", "killed_hertz_node", "-s", "Impactor/Initial velocity=2"},
+         1,
+         "killed_hertz_node",
+         "Impactor/Initial velocity (1 -> 2)") &&
+       ok;
+  ok = refused("on 2 MPI ranks (written on 1)",
+               {"--resume", "killed_hertz_node"},
+               2,
+               "killed_hertz_node",
+               "written by 1 MPI ranks") &&
+       ok;
+  fs::remove_all("no_checkpoint");
+  fs::create_directory("no_checkpoint");
+  fs::copy_file("killed_hertz_node/parameters.prm",
+                "no_checkpoint/parameters.prm");
+  ok = refused("without a checkpoint",
+               {"--resume", "no_checkpoint"},
+               1,
+               "no_checkpoint",
+               "no checkpoint") &&
+       ok;
+
+  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+  return ok ? 0 : 1;
+}

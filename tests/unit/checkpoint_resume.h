@@ -1,0 +1,259 @@
+// Shared by the kill-and-resume tests (checkpoint_resume.cc on one MPI
+// rank, checkpoint_resume_mpi.cc on two): run the executable as a process,
+// kill it with SIGKILL at a pseudo-random step, resume it, and compare its
+// history.csv and summary.txt with an uninterrupted run's.
+
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+#include <utility>
+#include <vector>
+
+namespace checkpoint_test
+{
+  namespace fs = std::filesystem;
+
+  inline std::string
+  read(const std::string &filename)
+  {
+    std::ifstream     in(filename, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+  }
+
+  inline std::vector<std::string>
+  lines_of(const std::string &text)
+  {
+    std::vector<std::string> lines;
+    std::istringstream       in(text);
+    std::string              line;
+    while (std::getline(in, line))
+      lines.push_back(line);
+    return lines;
+  }
+
+  /// A fixed-seed generator (the same kill points on every machine).
+  struct Lcg
+  {
+    unsigned long long state;
+    unsigned int
+    next(const unsigned int n)
+    {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      return static_cast<unsigned int>((state >> 33) % n);
+    }
+
+    /// A kill point: at least 20 + [0, range) history rows, then a delay
+    /// of [0, 20) ms (drawn in this order, in separate statements).
+    std::pair<unsigned int, unsigned int>
+    kill_point(const unsigned int range)
+    {
+      const unsigned int rows = 20 + next(range);
+      return {rows, next(20)};
+    }
+  };
+
+  /// Start fgimpact (on n_ranks ranks through mpiexec if > 1) with args;
+  /// stdout and stderr to log_file.
+  inline pid_t
+  start(const std::vector<std::string> &args,
+        const unsigned int              n_ranks,
+        const std::string              &log_file)
+  {
+    std::vector<std::string> command;
+    if (n_ranks > 1)
+      command = {"mpiexec", "-n", std::to_string(n_ranks)};
+    command.push_back(FGIMPACT_EXECUTABLE);
+    command.insert(command.end(), args.begin(), args.end());
+    std::fflush(stdout);
+    const pid_t pid = fork();
+    if (pid == 0)
+      {
+        if (!std::freopen(log_file.c_str(), "w", stdout) ||
+            !std::freopen(log_file.c_str(), "a", stderr))
+          _exit(127);
+        std::vector<char *> argv;
+        for (auto &arg : command)
+          argv.push_back(arg.data());
+        argv.push_back(nullptr);
+        execvp(argv[0], argv.data());
+        _exit(127);
+      }
+    return pid;
+  }
+
+  /// The exit status of a finished run (-signal if killed).
+  inline int
+  wait_for(const pid_t pid)
+  {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+  }
+
+  inline int
+  run(const std::vector<std::string> &args,
+      const unsigned int              n_ranks,
+      const std::string              &log_file)
+  {
+    return wait_for(start(args, n_ranks, log_file));
+  }
+
+  /// Rows of history.csv on disk (without the header).
+  inline unsigned int
+  history_rows(const std::string &directory)
+  {
+    const std::string text = read(directory + "/history.csv");
+    unsigned int      n    = 0;
+    for (const char c : text)
+      n += (c == '\n');
+    return n > 0 ? n - 1 : 0;
+  }
+
+  /**
+   * Kill the run (mpiexec and its ranks: the process group) with SIGKILL
+   * once history.csv holds at least `rows` rows, plus `delay_ms`, so that
+   * the kill falls anywhere between two checkpoints.  Returns whether the
+   * run was killed before it finished.
+   */
+  inline bool
+  run_and_kill(const std::vector<std::string> &args,
+               const unsigned int              n_ranks,
+               const std::string              &directory,
+               const unsigned int              rows,
+               const unsigned int              delay_ms)
+  {
+    fs::remove_all(directory);
+    std::fflush(stdout);
+    const pid_t pid = start(args, n_ranks, directory + ".log");
+    setpgid(pid, pid); // also from the parent: no race with exec
+    for (unsigned int i = 0; i < 60000 && history_rows(directory) < rows; ++i)
+      {
+        int status = 0;
+        if (waitpid(pid, &status, WNOHANG) == pid)
+          return false; // finished (or failed) before the kill
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+    kill(-pid, SIGKILL);
+    kill(pid, SIGKILL);
+    return wait_for(pid) == -SIGKILL && !fs::exists(directory + "/summary.txt");
+  }
+
+  /// Lines of summary.txt that depend on the wall clock (or are the
+  /// provenance comments): not compared.
+  inline bool
+  clock_dependent(const std::string &line)
+  {
+    for (const std::string key : {"#",
+                                  "setup_s ",
+                                  "factorization_s ",
+                                  "time_loop_s ",
+                                  "time_per_step_ms ",
+                                  "output_s ",
+                                  "wall_time_s "})
+      if (line.rfind(key, 0) == 0)
+        return true;
+    return false;
+  }
+
+  struct Comparison
+  {
+    unsigned int history_lines = 0, history_differing = 0;
+    unsigned int summary_lines = 0, summary_differing = 0;
+    bool         same_length = false;
+  };
+
+  /// Compare history.csv byte for byte (as lines) and summary.txt except
+  /// its clock-dependent lines.
+  inline Comparison
+  compare(const std::string &reference, const std::string &resumed)
+  {
+    Comparison c;
+    const auto h1 = lines_of(read(reference + "/history.csv"));
+    const auto h2 = lines_of(read(resumed + "/history.csv"));
+    c.same_length = read(reference + "/history.csv").size() ==
+                      read(resumed + "/history.csv").size() &&
+                    h1.size() == h2.size();
+    c.history_lines = h1.size();
+    for (std::size_t i = 0; i < std::max(h1.size(), h2.size()); ++i)
+      c.history_differing +=
+        (i >= h1.size() || i >= h2.size() || h1[i] != h2[i]);
+    std::vector<std::string> s1, s2;
+    for (const auto &line : lines_of(read(reference + "/summary.txt")))
+      if (!clock_dependent(line))
+        s1.push_back(line);
+    for (const auto &line : lines_of(read(resumed + "/summary.txt")))
+      if (!clock_dependent(line))
+        s2.push_back(line);
+    c.summary_lines = s1.size();
+    for (std::size_t i = 0; i < std::max(s1.size(), s2.size()); ++i)
+      c.summary_differing +=
+        (i >= s1.size() || i >= s2.size() || s1[i] != s2[i]);
+    c.same_length = c.same_length && s1.size() == s2.size() && s1.size() > 20 &&
+                    h1.size() > 50;
+    return c;
+  }
+
+  /**
+   * One case: prm text (without Output/Directory), an uninterrupted run,
+   * then a run killed at kill_point (Lcg::kill_point()) and resumed;
+   * prints the differing lines (must be 0) and returns whether all holds.
+   */
+  inline bool
+  kill_and_resume(const std::string                           &name,
+                  const std::string                           &prm,
+                  const unsigned int                           n_ranks,
+                  const std::pair<unsigned int, unsigned int> &kill_point)
+  {
+    const auto [rows, delay_ms] = kill_point;
+    const std::string reference = "ref_" + name, killed = "killed_" + name;
+    {
+      std::ofstream out(name + ".prm");
+      out << prm << "subsection Output\n set Directory = " << reference
+          << "\n set Log interval = 0\n set Print timing = false\nend\n";
+    }
+    fs::remove_all(reference);
+    const int reference_exit =
+      run({name + ".prm"}, n_ranks, reference + ".log");
+    const bool was_killed =
+      run_and_kill({name + ".prm", "-s", "Output/Directory=" + killed},
+                   n_ranks,
+                   killed,
+                   rows,
+                   delay_ms);
+    const int resume_exit =
+      run({"--resume", killed}, n_ranks, killed + ".resume.log");
+    const Comparison c = compare(reference, killed);
+    std::printf("%s on %u MPI rank%s, SIGKILL after >= %u history rows: "
+                "killed before the end %s, resumed (exit %d); history.csv "
+                "%u lines, %u differing; summary.txt %u lines compared, %u "
+                "differing\n",
+                name.c_str(),
+                n_ranks,
+                n_ranks > 1 ? "s" : "",
+                rows,
+                was_killed ? "yes" : "NO",
+                resume_exit,
+                c.history_lines,
+                c.history_differing,
+                c.summary_lines,
+                c.summary_differing);
+    const bool ok = reference_exit == 0 && was_killed && resume_exit == 0 &&
+                    c.same_length && c.history_differing == 0 &&
+                    c.summary_differing == 0;
+    if (!ok)
+      std::printf("  reference exit %d; resume log:\n%s\n",
+                  reference_exit,
+                  read(killed + ".resume.log").c_str());
+    return ok;
+  }
+} // namespace checkpoint_test
