@@ -111,6 +111,7 @@ namespace fgimpact
     , dt(dt)
     , n_steps(n_steps)
     , root(Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+    , whole(1. / plate.get_geometry().share())
 
     , pcout(std::cout, root)
     , impact_results(results)
@@ -186,8 +187,16 @@ namespace fgimpact
                         const double         t,
                         const TimeStepper   &stepper,
                         const ImpactorState &ball,
-                        const ContactState  &contact)
+                        const ContactState  &part_contact)
   {
+    // A symmetric part: the whole plate's contact force is the part's
+    // times 1/share; everything below is the whole plate's.
+    if (whole != 1.)
+      {
+        whole_contact = part_contact;
+        whole_contact.force *= whole;
+      }
+    const ContactState &contact = (whole != 1. ? whole_contact : part_contact);
     if (step > 0)
       {
         // Trapezoidal impulse: consistent with both schemes' impactor
@@ -205,8 +214,8 @@ namespace fgimpact
     sample.W_top      = -top_probe.displacement(u)[2];
     sample.sigma_mid  = mid_probe.stress(u);
     sample.E_impactor = 0.5 * m_i * ball.v * ball.v;
-    sample.E_kinetic  = stepper.kinetic_energy();
-    sample.E_strain   = stepper.strain_energy();
+    sample.E_kinetic  = whole * stepper.kinetic_energy();
+    sample.E_strain   = whole * stepper.strain_energy();
     // A model without a potential (hertz midplane: the force acts at the
     // top node, alpha is measured at the mid-plane) stores the work of the
     // contact force on the approach at the top node, int F d(w + u_top)
@@ -216,7 +225,7 @@ namespace fgimpact
       contact_work +=
         0.5 * (last_force + contact.force) * (approach - last_approach);
     sample.E_contact = contact_model.has_potential() ?
-                         contact_model.potential(contact) :
+                         whole * contact_model.potential(part_contact) :
                          contact_work;
     sample.E_total =
       sample.E_impactor + sample.E_kinetic + sample.E_strain + sample.E_contact;
@@ -442,6 +451,9 @@ namespace fgimpact
     r.n_time_steps   = steps_done;
     // The candidate set may have grown during the run.
     r.n_contact_candidates = contact_model.contact_dofs().size();
+    // A symmetric part: the model counts the whole plate's candidates.
+    if (whole != 1.)
+      contact_model.fill_results(r);
     r.departure_velocity =
       in_contact ? std::numeric_limits<double>::quiet_NaN() : -ball.v;
     // int F dt = m (V0 + V_departure), with the ball's current velocity.

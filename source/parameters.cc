@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <fgimpact/parameters.h>
+#include <fgimpact/symmetry.h>
 
 #include <algorithm>
 #include <array>
@@ -194,6 +195,7 @@ namespace fgimpact
     static_analysis.parse_parameters(prm);
     modal.parse_parameters(prm);
     output.parse_parameters(prm);
+    geometry.symmetry_note = resolve_symmetry(*this);
   }
 
   void
