@@ -71,7 +71,8 @@ namespace fgimpact
         "allows (none, with a log line, if none). A plane is a symmetry "
         "plane if the impact point lies on it, the supports of the two "
         "faces parallel to it are equal and the subdivisions across it are "
-        "even; modal problems are never cut. history.csv and summary.txt "
+        "even; modal problems and explicit runs are never cut. history.csv "
+        "and summary.txt "
         "report the whole plate; the VTU files hold the part.");
     }
     prm.leave_subsection();
