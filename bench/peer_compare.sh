@@ -4,9 +4,15 @@
 # bricks, dt = 1 us, 300 steps, V0 = 1 m/s, K_h = 9.421114e9 N/m^1.5, ball
 # 0.110 kg; see ../shared/peers/README.md) in the FEniCSx script and in
 # fgimpact, alternating, N times each (default 5), whole process wall time.
-# Prints both medians, their ratio and both peak forces.
+# Prints the medians, their ratios and the peak forces.
 #
 #   bench/peer_compare.sh [--runs N] [--out DIR] [--scheme implicit|explicit]
+#                         [--symmetry "auto none"]
+#
+# --symmetry: the Geometry/Symmetry values to time in fgimpact, each in
+# every round (default "auto none": the quarter model the central impact
+# allows, and the whole plate); the first is the one the ratio is quoted
+# for.
 #
 # Environment: FGIMPACT (default build/fgimpact; copied to DIR first),
 # PEER (default /work/shared/peers/fenicsx/plate_fenicsx.py, or
@@ -16,13 +22,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/fgimpact_lib.sh
 
-runs=5 out=output/peer_compare scheme=implicit
+runs=5 out=output/peer_compare scheme=implicit symmetries="auto none"
 while [ $# -gt 0 ]; do
   case $1 in
     --runs) runs=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --scheme) scheme=$2; shift 2 ;;
-    -h|--help) sed -n '2,14p' "$0"; exit 0 ;;
+    --symmetry) symmetries=$2; shift 2 ;;
+    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
     *) echo "unknown option $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -47,8 +54,7 @@ peer=$(cd "$(dirname "$peer")" && pwd)/$(basename "$peer")
 fg_args=(prm/default.prm
   -s "Material/Power-law index=0" -s "Contact/Contact stiffness=9.421114e9"
   -s "Impactor/Mass=0.110" -s "Time integration/End time=300e-6"
-  -s "Output/VTU interval=0" -s "Output/Log interval=0"
-  -s "Output/Directory=$out/fgimpact")
+  -s "Output/VTU interval=0" -s "Output/Log interval=0")
 if [ "$scheme" = explicit ]; then
   fg_args+=(-s "Time integration/Scheme=explicit" -s "Time integration/Time step=0")
 fi
@@ -58,25 +64,35 @@ median() { sort -g | awk '{v[NR] = $1} END {print (NR % 2) ? v[(NR + 1) / 2] : (
 
 # The script writes its history CSV into its working directory: run it in
 # DIR.  One untimed run each: the script compiles its forms on the first run.
+run_fg() { # symmetry
+  "$exe" "${fg_args[@]}" -s "Geometry/Symmetry=$1" \
+    -s "Output/Directory=$out/fgimpact_$1" > "$out/fgimpact_$1.log" 2>&1
+}
 (cd "$out" && /usr/bin/python3 "$peer" impact 1 --solver mumps) > "$out/peer.log" 2>&1
-"$exe" "${fg_args[@]}" > "$out/fgimpact.log" 2>&1
+for sym in $symmetries; do run_fg "$sym"; done
 
-: > "$out/times_peer.txt"; : > "$out/times_fgimpact.txt"
+: > "$out/times_peer.txt"
+for sym in $symmetries; do : > "$out/times_fgimpact_$sym.txt"; done
 for i in $(seq "$runs"); do
   t0=$(now); (cd "$out" && /usr/bin/python3 "$peer" impact 1 --solver mumps) > "$out/peer.log" 2>&1; t1=$(now)
   echo "$t1 - $t0" | bc -l >> "$out/times_peer.txt"
-  t0=$(now); "$exe" "${fg_args[@]}" > "$out/fgimpact.log" 2>&1; t1=$(now)
-  echo "$t1 - $t0" | bc -l >> "$out/times_fgimpact.txt"
+  for sym in $symmetries; do
+    t0=$(now); run_fg "$sym"; t1=$(now)
+    echo "$t1 - $t0" | bc -l >> "$out/times_fgimpact_$sym.txt"
+  done
 done
 
 peer_median=$(median < "$out/times_peer.txt")
-fg_median=$(median < "$out/times_fgimpact.txt")
 peer_F=$(sed -n 's/.*Fmax=\([0-9.eE+-]*\) N.*/\1/p' "$out/peer.log")
-fg_F=$(summary_value "$out/fgimpact" peak_contact_force_N)
-fg_F_sampled=$(summary_value "$out/fgimpact" max_sampled_contact_force_N)
-printf '%-28s %10s %10s\n' "" "FEniCSx" "fgimpact"
-printf '%-28s %10.3f %10.3f\n' "median wall time (s), $runs runs" "$peer_median" "$fg_median"
-printf '%-28s %10s %10s\n' "peak force (N), sampled" "$peer_F" "$fg_F_sampled"
-printf '%-28s %10s %10s\n' "peak force (N), interpolated" "-" "$fg_F"
-awk -v p="$peer_median" -v f="$fg_median" 'BEGIN {printf "ratio FEniCSx / fgimpact: %.2f\n", p / f}'
-awk -v p="$peer_F" -v f="$fg_F_sampled" 'BEGIN {printf "sampled peak force, relative difference: %.2e\n", (f - p) / p}'
+printf '%-34s %10s %10s %12s %14s\n' "" "median (s)" "ratio" "F sampled" "F interpolated"
+printf '%-34s %10.3f %10s %12s %14s\n' "FEniCSx script ($runs runs)" "$peer_median" "1.00" "$peer_F" "-"
+for sym in $symmetries; do
+  fg_median=$(median < "$out/times_fgimpact_$sym.txt")
+  fg_F=$(summary_value "$out/fgimpact_$sym" peak_contact_force_N)
+  fg_F_sampled=$(summary_value "$out/fgimpact_$sym" max_sampled_contact_force_N)
+  part=$(sed -n 's/^  symmetry: \([a-z]*\) .*/\1/p' "$out/fgimpact_$sym.log")
+  printf '%-34s %10.3f %10.2f %12s %14s\n' "fgimpact, Symmetry = $sym (${part:-whole})" \
+    "$fg_median" "$(echo "$peer_median / $fg_median" | bc -l)" "$fg_F_sampled" "$fg_F"
+  awk -v p="$peer_F" -v f="$fg_F_sampled" -v s="$sym" \
+    'BEGIN {printf "  sampled peak force, Symmetry = %s, relative to the script: %.2e\n", s, (f - p) / p}'
+done

@@ -167,6 +167,10 @@ namespace fgimpact
       {
         x = 1.;
         plate.mass_matrix().vmult(inverse_mass, x);
+        // A symmetric part: the couplings to the cut's constrained DoFs
+        // too, so the part's lumped mass is the whole plate's.
+        if (plate.cut_mass_coupling().size() > 0)
+          inverse_mass += plate.cut_mass_coupling();
         const auto &constraints = plate.get_constraints();
         for (const auto i : inverse_mass.locally_owned_elements())
           {

@@ -66,6 +66,7 @@ namespace fgimpact
                            "point inside the plate."));
     node_owner  = plate.dof_owner(dof);
     node_offset = Point<2>(node[0], node[1]).distance(impact_point);
+    share       = plate.get_geometry().share();
     if (node_offset <= 1e-9 * plate.get_geometry().length())
       node_offset_note_needed = false;
   }
@@ -80,12 +81,12 @@ namespace fgimpact
                                    const NewtonControl      &newton,
                                    ContactState             &state) const
   {
-    const double W_star = -u_free[0];
-    const double chi    = C(0, 0);
-    const double s      = c_b + chi;
-    state.newton_iterations =
-      solve_contact_newton(law, s, w_free - W_star, newton, state.alpha);
-    state.force             = law.force(state.alpha);
+    const double W_star     = -u_free[0];
+    const double chi        = C(0, 0);
+    const double s          = c_b + chi;
+    state.newton_iterations = solve_contact_newton(
+      law, share * s, w_free - W_star, newton, state.alpha);
+    state.force             = share * law.force(state.alpha);
     state.forces            = {state.force};
     state.node_displacement = -W_star - state.force * chi;
   }
@@ -99,7 +100,7 @@ namespace fgimpact
   {
     state.node_displacement = u_c[0];
     state.alpha             = w + state.node_displacement;
-    state.force             = law.force(state.alpha);
+    state.force             = share * law.force(state.alpha);
     state.forces            = {state.force};
     state.newton_iterations = 0;
   }
@@ -109,7 +110,7 @@ namespace fgimpact
   double
   HertzNodeContact::potential(const ContactState &state) const
   {
-    return law.potential(state.alpha);
+    return share * law.potential(state.alpha);
   }
 
 
@@ -119,9 +120,11 @@ namespace fgimpact
   {
     // dF/dalpha at the half-space maximum indentation (closed form): the
     // plate only lowers the indentation.
-    const double K_hertz   = law.force(1.);
-    const double alpha_max = std::pow(1.25 * mass * V0 * V0 / K_hertz, 0.4);
-    return law.force_derivative(alpha_max);
+    // mass is the part's share of the ball's (the stepper's).
+    const double K_hertz = law.force(1.);
+    const double alpha_max =
+      std::pow(1.25 * (mass / share) * V0 * V0 / K_hertz, 0.4);
+    return share * law.force_derivative(alpha_max);
   }
 
 
@@ -181,6 +184,7 @@ namespace fgimpact
                            "even."));
     mid_node = vertex;
     dofs     = {node_contact.contact_dofs()[0], dof};
+    share    = plate.get_geometry().share();
   }
 
 
@@ -194,10 +198,10 @@ namespace fgimpact
                                        ContactState             &state) const
   {
     // alpha = w + u_mid = (w_free - c_b F) + (u_free_mid - C_mt F).
-    const double s = c_b + C(1, 0);
-    state.newton_iterations =
-      solve_contact_newton(law, s, w_free + u_free[1], newton, state.alpha);
-    state.force             = law.force(state.alpha);
+    const double s          = c_b + C(1, 0);
+    state.newton_iterations = solve_contact_newton(
+      law, share * s, w_free + u_free[1], newton, state.alpha);
+    state.force             = share * law.force(state.alpha);
     state.forces            = {state.force, 0.};
     state.node_displacement = u_free[0] - C(0, 0) * state.force;
   }
@@ -211,7 +215,7 @@ namespace fgimpact
   {
     state.node_displacement = u_c[0];
     state.alpha             = w + u_c[1];
-    state.force             = law.force(state.alpha);
+    state.force             = share * law.force(state.alpha);
     state.forces            = {state.force, 0.};
     state.newton_iterations = 0;
   }
@@ -221,7 +225,7 @@ namespace fgimpact
   double
   HertzMidplaneContact::potential(const ContactState &state) const
   {
-    return law.potential(state.alpha);
+    return share * law.potential(state.alpha);
   }
 
 

@@ -60,6 +60,20 @@ namespace fgimpact
         "cells; each coarser level reaches two of its cells further. 0 = "
         "automatic: 1.5 times the largest contact radius of the ball on a "
         "half-space of the top face's modulus. Unit: m.");
+      prm.declare_entry(
+        "Symmetry",
+        "none",
+        Patterns::Selection("auto|none|half|quarter"),
+        "Model a part of a symmetric scene: quarter = the part x <= a/2, "
+        "y <= b/2 with u_x = 0 on x = a/2 and u_y = 0 on y = b/2; half = "
+        "the part x <= a/2 (or y <= b/2 if only that plane is a symmetry "
+        "plane); none = the whole plate; auto = the smallest part the scene "
+        "allows (none, with a log line, if none). A plane is a symmetry "
+        "plane if the impact point lies on it, the supports of the two "
+        "faces parallel to it are equal and the subdivisions across it are "
+        "even; modal problems and explicit runs are never cut. history.csv "
+        "and summary.txt "
+        "report the whole plate; the VTU files hold the part.");
     }
     prm.leave_subsection();
 
@@ -103,6 +117,11 @@ namespace fgimpact
       subdivisions_z            = prm.get_integer("Subdivisions z");
       contact_refinement_levels = prm.get_integer("Contact refinement levels");
       contact_refinement_radius = prm.get_double("Contact refinement radius");
+      const std::string s       = prm.get("Symmetry");
+      symmetry                  = (s == "auto"    ? Symmetry::automatic :
+                                   s == "half"    ? Symmetry::half :
+                                   s == "quarter" ? Symmetry::quarter :
+                                                    Symmetry::none);
     }
     prm.leave_subsection();
 
@@ -131,9 +150,14 @@ namespace fgimpact
   void
   PlateGeometry::create_triangulation(Triangulation<3> &triangulation) const
   {
-    unsigned int              k = 0;
-    std::vector<unsigned int> coarse{parameters.subdivisions_x,
-                                     parameters.subdivisions_y,
+    unsigned int k = 0;
+    // The part modelled: the cut directions have half the extent and half
+    // the (even) subdivisions, the same cells as the whole plate's there.
+    const bool cut_x = parameters.cut[0], cut_y = parameters.cut[1];
+    std::vector<unsigned int> coarse{parameters.subdivisions_x /
+                                       (cut_x ? 2 : 1),
+                                     parameters.subdivisions_y /
+                                       (cut_y ? 2 : 1),
                                      parameters.subdivisions_z};
     while (coarse[0] % 2 == 0 && coarse[1] % 2 == 0 && coarse[2] % 2 == 0)
       {
@@ -142,13 +166,14 @@ namespace fgimpact
         ++k;
       }
     // Boundary ids (colorize) pass to the children of refined faces.
-    GridGenerator::subdivided_hyper_rectangle(triangulation,
-                                              coarse,
-                                              Point<3>(),
-                                              Point<3>(parameters.length,
-                                                       parameters.width,
-                                                       parameters.thickness),
-                                              /*colorize=*/true);
+    GridGenerator::subdivided_hyper_rectangle(
+      triangulation,
+      coarse,
+      Point<3>(),
+      Point<3>(cut_x ? 0.5 * parameters.length : parameters.length,
+               cut_y ? 0.5 * parameters.width : parameters.width,
+               parameters.thickness),
+      /*colorize=*/true);
     triangulation.refine_global(k);
   }
 
@@ -189,6 +214,20 @@ namespace fgimpact
   PlateGeometry::centre(const double z) const
   {
     return Point<3>(parameters.length / 2, parameters.width / 2, z);
+  }
+
+
+
+  unsigned int
+  PlateGeometry::multiplicity(const Point<3> &p) const
+  {
+    const double centre[2] = {0.5 * parameters.length, 0.5 * parameters.width};
+    unsigned int n         = 1;
+    for (unsigned int d = 0; d < 2; ++d)
+      if (parameters.cut[d] &&
+          std::abs(p[d] - centre[d]) > 1e-9 * parameters.length)
+        n *= 2;
+    return n;
   }
 
 

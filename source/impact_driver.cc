@@ -110,18 +110,21 @@ namespace fgimpact
     results.n_mpi_ranks =
       Utilities::MPI::n_mpi_processes(plate.get_mpi_communicator());
     results.impactor_mass = impactor.mass();
-    results.plate_mass    = plate.total_mass();
+    // A symmetric part: its mass is share() of the plate's.
+    const double share = geometry.share();
+    results.plate_mass = plate.total_mass() / share;
     contact->fill_results(results);
     results.setup_time = total_timer.wall_time();
 
     // The time stepper (implicit Newmark or explicit central difference)
-    // builds its matrices and fixes the time step.
+    // builds its matrices and fixes the time step.  On a symmetric part
+    // the ball's share of the mass meets the part's share of the force.
     Timer factorization_timer;
     stepper = create_time_stepper(parameters.time_integration,
                                   parameters.linear_solver,
                                   plate,
                                   *contact,
-                                  impactor.mass(),
+                                  share * impactor.mass(),
                                   impactor.initial_velocity());
     try
       {

@@ -63,6 +63,9 @@ namespace fgimpact
              "holds for the average acceleration rule only)";
     if (p.output.vtu_interval > 0)
       return "Output/VTU interval > 0 (VTU needs the fields)";
+    if (p.geometry.cut[0] || p.geometry.cut[1])
+      return "Geometry/Symmetry models a part (the engine convolves the "
+             "whole plate's response)";
     const double bytes =
       16. * ti.n_steps(ti.time_step) * plate.locally_owned_dofs().n_elements();
     if (bytes > memory_limit)

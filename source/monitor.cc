@@ -123,6 +123,7 @@ namespace fgimpact
     , dt(dt)
     , n_steps(n_steps)
     , root(Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+    , whole(1. / plate.get_geometry().share())
 
     , pcout(std::cout, root)
     , impact_results(results)
@@ -213,14 +214,14 @@ namespace fgimpact
                         const double         t,
                         const TimeStepper   &stepper,
                         const ImpactorState &ball,
-                        const ContactState  &contact)
+                        const ContactState  &part_contact)
   {
     PlateSample plate =
       probe_plate(mid_probe, top_probe, stepper.displacement());
     plate.E_kinetic         = stepper.kinetic_energy();
     plate.E_strain          = stepper.strain_energy();
     plate.linear_iterations = stepper.linear_iterations();
-    record(step, t, plate, ball, contact, &stepper);
+    record(step, t, plate, ball, part_contact, &stepper);
   }
 
 
@@ -230,9 +231,17 @@ namespace fgimpact
                         const double         t,
                         const PlateSample   &plate,
                         const ImpactorState &ball,
-                        const ContactState  &contact,
+                        const ContactState  &part_contact,
                         const TimeStepper   *stepper)
   {
+    // A symmetric part: the whole plate's contact force is the part's
+    // times 1/share; everything below is the whole plate's.
+    if (whole != 1.)
+      {
+        whole_contact = part_contact;
+        whole_contact.force *= whole;
+      }
+    const ContactState &contact = (whole != 1. ? whole_contact : part_contact);
     if (step > 0)
       {
         // Trapezoidal impulse: consistent with both schemes' impactor
@@ -249,8 +258,8 @@ namespace fgimpact
     sample.W_top      = plate.W_top;
     sample.sigma_mid  = plate.sigma_mid;
     sample.E_impactor = 0.5 * m_i * ball.v * ball.v;
-    sample.E_kinetic  = plate.E_kinetic;
-    sample.E_strain   = plate.E_strain;
+    sample.E_kinetic  = whole * plate.E_kinetic;
+    sample.E_strain   = whole * plate.E_strain;
     // A model without a potential (hertz midplane: the force acts at the
     // top node, alpha is measured at the mid-plane) stores the work of the
     // contact force on the approach at the top node, int F d(w + u_top)
@@ -260,7 +269,7 @@ namespace fgimpact
       contact_work +=
         0.5 * (last_force + contact.force) * (approach - last_approach);
     sample.E_contact = contact_model.has_potential() ?
-                         contact_model.potential(contact) :
+                         whole * contact_model.potential(part_contact) :
                          contact_work;
     sample.E_total =
       sample.E_impactor + sample.E_kinetic + sample.E_strain + sample.E_contact;
@@ -268,12 +277,14 @@ namespace fgimpact
     // The convolution engine of a study has no fields: it clears the
     // probe points (probes.csv comes from --study-case K).
     if (probe_set && stepper)
-      probe_row =
-        probe_set->row(t,
-                       probe_set->evaluate(stepper->displacement(),
-                                           stepper->velocity(),
-                                           stepper->acceleration(),
-                                           stepper->has_lumped_mass()));
+      {
+        ProbeValues values = probe_set->evaluate(stepper->displacement(),
+                                                 stepper->velocity(),
+                                                 stepper->acceleration(),
+                                                 stepper->has_lumped_mass());
+        values.support_reaction_z *= whole; // a part's supports: scaled up
+        probe_row = probe_set->row(t, values);
+      }
     update_extremes(t, sample);
     watch_energy(step, t, std::abs(sample.E_total - E0) / E0);
     impact_results.linear_iterations += plate.linear_iterations;
@@ -499,6 +510,9 @@ namespace fgimpact
     r.n_time_steps   = steps_done;
     // The candidate set may have grown during the run.
     r.n_contact_candidates = contact_model.contact_dofs().size();
+    // A symmetric part: the model counts the whole plate's candidates.
+    if (whole != 1.)
+      contact_model.fill_results(r);
     r.departure_velocity =
       in_contact ? std::numeric_limits<double>::quiet_NaN() : -ball.v;
     // int F dt = m (V0 + V_departure), with the ball's current velocity.

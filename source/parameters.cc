@@ -2,6 +2,7 @@
 
 #include <fgimpact/parameters.h>
 #include <fgimpact/study.h>
+#include <fgimpact/symmetry.h>
 
 #include <algorithm>
 #include <array>
@@ -196,6 +197,7 @@ namespace fgimpact
     static_analysis.parse_parameters(prm);
     modal.parse_parameters(prm);
     output.parse_parameters(prm);
+    geometry.symmetry_note = resolve_symmetry(*this);
   }
 
   void

@@ -104,6 +104,68 @@ namespace fgimpact
     stiffness.reinit(sparsity);
     mass.reinit(sparsity);
     assemble();
+    if (geometry.is_cut(0) || geometry.is_cut(1))
+      assemble_cut_mass_coupling();
+  }
+
+
+
+  void
+  PlateModel::assemble_cut_mass_coupling()
+  {
+    // The consistent mass couples equal components only; on a cut face
+    // (id 1: x = a/2, id 3: y = b/2) the normal component's DoFs are the
+    // constrained ones.  Hanging nodes on a cut count like the others: in
+    // the whole plate their coupling reaches their masters with weights
+    // summing to 1.
+    const QGauss<3>                      quadrature(fe.degree + 1);
+    FEValues<3>                          fe_values(mapping,
+                          fe,
+                          quadrature,
+                          update_values | update_JxW_values);
+    PropertyInterpolator                 properties(fe.base_element(0),
+                                    quadrature.get_points(),
+                                    material);
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+    Vector<double>                       cell_r(dofs_per_cell);
+    std::vector<bool>                    on_cut(dofs_per_cell);
+    std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
+    std::vector<double>                  E, rho;
+    initialize_vector(cut_coupling);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        {
+          std::fill(on_cut.begin(), on_cut.end(), false);
+          for (const auto f : cell->face_indices())
+            if (cell->face(f)->at_boundary())
+              {
+                const auto id = cell->face(f)->boundary_id();
+                if ((id == 1 && geometry.is_cut(0)) ||
+                    (id == 3 && geometry.is_cut(1)))
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    if (fe.system_to_component_index(j).first ==
+                          (id == 1 ? 0u : 1u) &&
+                        fe.has_support_on_face(j, f))
+                      on_cut[j] = true;
+              }
+          if (std::find(on_cut.begin(), on_cut.end(), true) == on_cut.end())
+            continue;
+          fe_values.reinit(cell);
+          properties.values(cell, E, rho);
+          cell_r = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                if (on_cut[j] && fe.system_to_component_index(i).first ==
+                                   fe.system_to_component_index(j).first)
+                  cell_r[i] += rho[q] * fe_values.shape_value(i, q) *
+                               fe_values.shape_value(j, q) * fe_values.JxW(q);
+          cell->get_dof_indices(local_dofs);
+          constraints.distribute_local_to_global(cell_r,
+                                                 local_dofs,
+                                                 cut_coupling);
+        }
+    cut_coupling.compress(VectorOperation::add);
   }
 
 
@@ -126,6 +188,21 @@ namespace fgimpact
           (face < 4 ? supports[face] :
                       geometry.get_parameters().bottom_support);
         ComponentMask mask(3, false);
+        // A symmetry cut (x = a/2 is id 1, y = b/2 id 3 of the part): the
+        // normal displacement vanishes, the tangential ones are free.
+        if ((face == 1 && geometry.is_cut(0)) ||
+            (face == 3 && geometry.is_cut(1)))
+          {
+            mask.set(face == 1 ? 0 : 1, true);
+            VectorTools::interpolate_boundary_values(mapping,
+                                                     dof_handler,
+                                                     face,
+                                                     Functions::ZeroFunction<3>(
+                                                       3),
+                                                     constraints,
+                                                     mask);
+            continue;
+          }
         switch (support)
           {
             case SideSupport::free:

@@ -34,6 +34,7 @@ namespace fgimpact
     , reference_modulus(reference_modulus)
     , massless_candidates(massless_candidates)
     , candidate_radius(std::min(candidate_radius, sphere_radius))
+    , share(plate.get_geometry().share())
   {
     build_candidates();
   }
@@ -91,6 +92,9 @@ namespace fgimpact
                       R - std::sqrt(R * R - radii[j] * radii[j]) :
                       radii[j] * radii[j] / (2. * R));
     active.assign(dofs.size(), false);
+    multiplicity.resize(points.size());
+    for (unsigned int j = 0; j < points.size(); ++j)
+      multiplicity[j] = plate.get_geometry().multiplicity(points[j]);
   }
 
 
@@ -229,7 +233,7 @@ namespace fgimpact
         smallest_gap = std::min(smallest_gap, g[j]);
         if (lambda[j] > 0.)
           {
-            ++state.n_active;
+            state.n_active += multiplicity[j];
             state.max_pressure =
               std::max(state.max_pressure, lambda[j] / areas[j]);
           }
@@ -253,10 +257,12 @@ namespace fgimpact
     // The indentation column: while in contact the half-space Hertz
     // approach (F/K)^{2/3}, K = 4/3 Q_ref sqrt(R), after separation minus
     // the smallest gap; continuous through 0, so the monitor's zero
-    // crossing gives the separation time.
+    // crossing gives the separation time.  F is the whole plate's force
+    // (the forces here are the symmetric part's share of it).
     const double K = 4. / 3. * reference_modulus * std::sqrt(R);
-    state.alpha    = (state.force > 0. ? std::pow(state.force / K, 2. / 3.) :
-                                         -std::max(smallest_gap, 0.));
+    state.alpha =
+      (state.force > 0. ? std::pow(state.force / share / K, 2. / 3.) :
+                          -std::max(smallest_gap, 0.));
   }
 
 
@@ -310,10 +316,11 @@ namespace fgimpact
   void
   ResolvedSphereContact::fill_results(ImpactResults &results) const
   {
-    results.contact_modulus      = reference_modulus;
-    results.contact_stiffness    = 4. / 3. * reference_modulus * std::sqrt(R);
-    results.contact_node_offset  = radii.front();
-    results.contact_node_owner   = 0;
-    results.n_contact_candidates = dofs.size();
+    results.contact_modulus     = reference_modulus;
+    results.contact_stiffness   = 4. / 3. * reference_modulus * std::sqrt(R);
+    results.contact_node_offset = radii.front();
+    results.contact_node_owner  = 0;
+    results.n_contact_candidates =
+      std::accumulate(multiplicity.begin(), multiplicity.end(), 0u);
   }
 } // namespace fgimpact

@@ -225,6 +225,8 @@ namespace fgimpact
           << static_cast<types::global_dof_index>(owned.max) << '\n';
     if (!parameters.accuracy.log_message.empty())
       pcout << "  " << parameters.accuracy.log_message << '\n';
+    if (!parameters.geometry.symmetry_note.empty())
+      pcout << "  " << parameters.geometry.symmetry_note << '\n';
     if (parameters.geometry.contact_refinement_levels > 0)
       pcout << "  contact refinement: "
             << parameters.geometry.contact_refinement_levels

@@ -94,7 +94,8 @@ namespace fgimpact
       {
         const auto dof = plate.nearest_top_vertex_dof(load_point, 2).first;
         if (plate.locally_owned_dofs().is_element(dof))
-          f(dof) = -parameters.point_force;
+          f(dof) = -parameters.point_force *
+                   plate.get_geometry().share(); // a symmetric part's share
         f.compress(VectorOperation::insert);
         return;
       }
@@ -175,7 +176,7 @@ namespace fgimpact
                                "sphere's radius; reduce the indentation."));
       }
     const auto &dofs        = contact.contact_dofs();
-    results.contact_force   = state.force;
+    results.contact_force   = state.force / plate.get_geometry().share();
     results.contact_radius  = state.contact_radius;
     results.max_pressure    = state.max_pressure;
     results.n_contact_nodes = state.n_active;

@@ -297,6 +297,9 @@ namespace fgimpact
     double                               node_offset = 0; // m
     unsigned int                         node_owner  = 0; // MPI rank
     bool                                 node_offset_note_needed = true;
+    /// The modelled part's share of the plate (PlateGeometry::share()):
+    /// the node carries this share of the whole plate's Hertz force.
+    double share = 1;
   };
 
 
@@ -366,6 +369,7 @@ namespace fgimpact
     const HertzNodeContact               node_contact; // the top node
     std::vector<types::global_dof_index> dofs;
     Point<3>                             mid_node;
+    double                               share = 1; // of the whole force
   };
 } // namespace fgimpact
 

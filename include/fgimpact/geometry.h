@@ -25,6 +25,19 @@ namespace fgimpact
     free
   };
 
+  /// Geometry/Symmetry: how much of the plate is modelled.
+  enum class Symmetry
+  {
+    /// The smallest part the scene allows (quarter, half or none).
+    automatic,
+    /// The whole plate.
+    none,
+    /// One half: cut at x = a/2 if the scene allows it, else y = b/2.
+    half,
+    /// One quarter: cuts at x = a/2 and y = b/2.
+    quarter
+  };
+
   /// Where and how much to refine the mesh under the impact point.
   struct LocalRefinement
   {
@@ -65,6 +78,13 @@ namespace fgimpact
       /// Contact refinement: levels and the core radius (m, 0: automatic).
       unsigned int contact_refinement_levels = 0;
       double       contact_refinement_radius = 0;
+      /// Geometry/Symmetry as requested.
+      Symmetry symmetry = Symmetry::none;
+      /// The symmetry planes actually cut (x = a/2, y = b/2), set by
+      /// resolve_symmetry() (symmetry.cc) once the whole scene is known.
+      std::array<bool, 2> cut = {{false, false}};
+      /// resolve_symmetry()'s line for the log ("" if none).
+      std::string symmetry_note;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -112,6 +132,29 @@ namespace fgimpact
     {
       return parameters.thickness;
     }
+
+    /// Whether the model is cut at the symmetry plane x = a/2 (d = 0) or
+    /// y = b/2 (d = 1): the part modelled is then x <= a/2 (y <= b/2), and
+    /// the cut face (boundary id 1 or 3) carries u_x = 0 (u_y = 0).
+    bool
+    is_cut(const unsigned int d) const
+    {
+      return parameters.cut[d];
+    }
+
+    /// The modelled part's share of the whole plate: 1, 1/2 or 1/4.  Sums
+    /// over the part (forces, masses, energies) times 1/share() are the
+    /// whole plate's.
+    double
+    share() const
+    {
+      return (parameters.cut[0] ? 0.5 : 1.) * (parameters.cut[1] ? 0.5 : 1.);
+    }
+
+    /// How many points of the whole plate the part's point p stands for:
+    /// 1 on every cut plane it lies on, 2 for every cut it lies off.
+    unsigned int
+    multiplicity(const Point<3> &p) const;
 
     /// Centre of the plate at height z (m).
     Point<3>

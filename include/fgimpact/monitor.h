@@ -243,8 +243,12 @@ namespace fgimpact
     const double           m_i, V0, E0, dt;
     const unsigned int     n_steps;
     const bool             root;
-    ConditionalOStream     pcout;
-    ImpactResults         &impact_results;
+    /// 1 / PlateGeometry::share(): the whole plate's sums per part sum.
+    const double whole;
+    /// The contact of the current step with the whole plate's force.
+    ContactState       whole_contact;
+    ConditionalOStream pcout;
+    ImpactResults     &impact_results;
 
     PointProbe                 mid_probe, top_probe;
     std::unique_ptr<CsvWriter> history;

@@ -80,6 +80,19 @@ namespace fgimpact
       return mass;
     }
 
+    /**
+     * On a symmetric part (Geometry/Symmetry): row sums of the mass
+     * couplings to the DoFs the cuts constrain (u_x on x = a/2, u_y on
+     * y = b/2), which the condensed mass_matrix() drops and the whole
+     * plate's keeps; mass_matrix() 1 plus this vector is the whole plate's
+     * row-sum lumped mass restricted to the part.  Empty without cuts.
+     */
+    const TrilinosWrappers::MPI::Vector &
+    cut_mass_coupling() const
+    {
+      return cut_coupling;
+    }
+
     /// Reinit v as a (non-ghosted) vector of locally owned DoFs.
     void
     initialize_vector(TrilinosWrappers::MPI::Vector &v) const;
@@ -194,6 +207,10 @@ namespace fgimpact
     IndexSet                                locally_owned, locally_relevant;
     AffineConstraints<double>               constraints;
     TrilinosWrappers::SparseMatrix          stiffness, mass;
+    TrilinosWrappers::MPI::Vector           cut_coupling;
+
+    void
+    assemble_cut_mass_coupling();
   };
 } // namespace fgimpact
 

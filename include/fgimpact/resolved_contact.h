@@ -189,8 +189,12 @@ namespace fgimpact
     double                               candidate_radius; // m
     std::vector<types::global_dof_index> dofs;
     std::vector<double>                  radii, areas, profile;
-    std::vector<Point<3>>                points;               // undeformed, m
-    double                               smallest_spacing = 0; // m
+    std::vector<Point<3>>                points; // undeformed, m
+    /// Symmetric part (Geometry/Symmetry): the part's share of the plate
+    /// and how many nodes of the whole plate each candidate stands for.
+    double                    share = 1;
+    std::vector<unsigned int> multiplicity;
+    double                    smallest_spacing = 0; // m
     /// The active set of the last solve (warm start).
     mutable std::vector<bool> active;
   };
