@@ -267,6 +267,12 @@ namespace fgimpact
         return s.str();
       }
 
+      std::string
+      solver_log() const override
+      {
+        return solver.memory_log();
+      }
+
     private:
       /**
        * The plate's consistent mass matrix, or for a contact model with

@@ -138,6 +138,13 @@ namespace fgimpact
     virtual std::string
     description() const = 0;
 
+    /// The linear solver's memory report (may be empty), for the log.
+    virtual std::string
+    solver_log() const
+    {
+      return "";
+    }
+
   protected:
     /// The state every scheme keeps and advance() updates.
     TrilinosWrappers::MPI::Vector u, v;
