@@ -149,6 +149,9 @@ namespace fgimpact
     n_steps = parameters.time_integration.n_steps(dt);
     pcout << "  " << stepper->description() << "; dt = " << dt * 1e6 << " us, "
           << n_steps << " steps\n";
+    // Machine-dependent (the memory available): with the timings.
+    if (parameters.output.print_timing && !stepper->solver_log().empty())
+      pcout << "  " << stepper->solver_log() << '\n';
 
     // Can dt resolve the contact?  Hertz's duration on a rigid half-space,
     // T = 2.943 alpha_max / V0 with alpha_max = (5 m V0^2 / (4 K))^(2/5),

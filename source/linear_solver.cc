@@ -4,10 +4,14 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <fgimpact/linear_solver.h>
+#include <fgimpact/resources.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
 #include <cholmod.h>
+#include <cstdio>
+#include <iomanip>
+#include <sstream>
 #include <vector>
 
 namespace fgimpact
@@ -36,6 +40,7 @@ namespace fgimpact
 
     ~Cholmod()
     {
+      cholmod_free_sparse(&A, &common);
       cholmod_free_factor(&factor, &common);
       cholmod_free_dense(&X, &common);
       cholmod_free_dense(&Y, &common);
@@ -43,22 +48,55 @@ namespace fgimpact
       cholmod_finish(&common);
     }
 
-    /// Factorize the symmetric matrix given by its lower triangle.
+    /// Symbolic analysis (ordering, supernodes, nnz(L)) of the symmetric
+    /// matrix given by its lower triangle; the triplets are released.
     void
-    factorize(const size_t               n,
-              const std::vector<int>    &rows,
-              const std::vector<int>    &columns,
-              const std::vector<double> &values)
+    analyze(const size_t         n,
+            std::vector<int>    &rows,
+            std::vector<int>    &columns,
+            std::vector<double> &values)
     {
       cholmod_triplet *T = cholmod_allocate_triplet(
         n, n, values.size(), /*stype: lower*/ -1, CHOLMOD_REAL, &common);
       std::copy(rows.begin(), rows.end(), static_cast<int *>(T->i));
       std::copy(columns.begin(), columns.end(), static_cast<int *>(T->j));
       std::copy(values.begin(), values.end(), static_cast<double *>(T->x));
-      T->nnz            = values.size();
-      cholmod_sparse *A = cholmod_triplet_to_sparse(T, values.size(), &common);
+      T->nnz = values.size();
+      for (auto *v : {&rows, &columns})
+        std::vector<int>().swap(*v);
+      std::vector<double>().swap(values);
+      A = cholmod_triplet_to_sparse(T, T->nnz, &common);
       cholmod_free_triplet(&T, &common);
       factor = cholmod_analyze(A, &common);
+      AssertThrow(common.status == CHOLMOD_OK && factor != nullptr,
+                  ExcMessage("CHOLMOD's symbolic analysis of the effective "
+                             "matrix failed (status " +
+                             std::to_string(common.status) + ")."));
+    }
+
+    /// Entries of L (CHOLMOD's count after the symbolic analysis).
+    double
+    factor_nnz() const
+    {
+      return common.lnz;
+    }
+
+    /// Bytes the numeric factor will hold: the supernodes' dense values
+    /// (zeros included) and their row indices.
+    double
+    factor_bytes() const
+    {
+      if (factor->is_super)
+        return 8. * factor->xsize +
+               sizeof(int) * (factor->ssize + 4. * factor->n);
+      return 12. * common.lnz + 4. * sizeof(int) * factor->n;
+    }
+
+    /// The numeric factorization of the analyzed matrix.
+    void
+    factorize()
+    {
+      const size_t n = A->nrow;
       cholmod_factorize(A, factor, &common);
       cholmod_free_sparse(&A, &common);
       AssertThrow(common.status == CHOLMOD_OK && factor->minor == n,
@@ -86,6 +124,7 @@ namespace fgimpact
     }
 
     cholmod_common  common;
+    cholmod_sparse *A      = nullptr;
     cholmod_factor *factor = nullptr;
     cholmod_dense  *X = nullptr, *Y = nullptr, *E = nullptr;
   };
@@ -104,9 +143,11 @@ namespace fgimpact
         "Solver for the constant effective matrix K + M/(beta dt^2). "
         "cholmod: supernodal Cholesky (SuiteSparse), factorized once. klu, "
         "mumps: Trilinos Amesos direct solvers. cg: preconditioned conjugate "
-        "gradients warm-started from the previous step. auto: up to "
-        "'Auto direct limit' DoFs cholmod on one MPI rank and mumps on "
-        "several; cg above (doc/performance.md).");
+        "gradients warm-started from the previous step. auto: on one MPI "
+        "rank cholmod if its factor (nnz(L) from CHOLMOD's symbolic "
+        "analysis) fits in the memory available, else cg; on several "
+        "ranks mumps up to 'Auto direct limit' DoFs, cg above "
+        "(doc/performance.md).");
       prm.declare_entry("Preconditioner",
                         "jacobi",
                         Patterns::Selection("jacobi|ssor|amg"),
@@ -117,7 +158,8 @@ namespace fgimpact
                         "700000",
                         Patterns::Integer(0, 1000000000),
                         "Largest number of DoFs for which 'auto' factorizes "
-                        "(cholmod); above it 'auto' uses cg. cholmod was "
+                        "on several MPI ranks (mumps); above it 'auto' uses "
+                        "cg. On one rank the memory decides. cholmod was "
                         "faster than cg at every size measured (up to "
                         "665,091 DoFs, where its factor needs ~10 GB); the "
                         "limit is set by memory (doc/performance.md).");
@@ -172,6 +214,54 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The lower triangle of A as triplets, straight from the Epetra rows
+    /// (deal.II's entry iterators are much slower for this).
+    void
+    lower_triangle(const TrilinosWrappers::SparseMatrix &A,
+                   std::vector<int>                     &rows,
+                   std::vector<int>                     &columns,
+                   std::vector<double>                  &values)
+    {
+      const Epetra_CrsMatrix &epetra = A.trilinos_matrix();
+      rows.reserve(epetra.NumMyNonzeros() / 2 + A.m());
+      columns.reserve(rows.capacity());
+      values.reserve(rows.capacity());
+      for (int local_row = 0; local_row < epetra.NumMyRows(); ++local_row)
+        {
+          int     n_entries;
+          double *row_values;
+          int    *row_columns;
+          epetra.ExtractMyRowView(local_row,
+                                  n_entries,
+                                  row_values,
+                                  row_columns);
+          const int row = epetra.RowMap().GID(local_row);
+          for (int k = 0; k < n_entries; ++k)
+            {
+              const int column = epetra.ColMap().GID(row_columns[k]);
+              if (column <= row)
+                {
+                  rows.push_back(row);
+                  columns.push_back(column);
+                  values.push_back(row_values[k]);
+                }
+            }
+        }
+    }
+
+    std::string
+    gigabytes(const double bytes)
+    {
+      char text[32];
+      std::snprintf(text, sizeof(text), "%.3g GB", bytes * 1e-9);
+      return text;
+    }
+  } // namespace
+
+
+
   void
   EffectiveMatrixSolver::initialize(const TrilinosWrappers::SparseMatrix &A,
                                     const DoFHandler<3> *dof_handler)
@@ -180,52 +270,58 @@ namespace fgimpact
     resolved_type = parameters.type;
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(A.get_mpi_communicator());
-    // On one rank CHOLMOD; on several the distributed MUMPS, while the
-    // factor fits (the same limit); CG above.
-    if (resolved_type == "auto")
-      resolved_type = (A.m() > parameters.auto_limit ? "cg" :
-                       n_ranks == 1                  ? "cholmod" :
-                                                       "mumps");
+    // On several ranks the distributed MUMPS up to the DoF limit (no
+    // symbolic analysis before its factorization), CG above.  On one rank
+    // CHOLMOD's symbolic analysis decides below.
+    if (resolved_type == "auto" && n_ranks > 1)
+      resolved_type = (A.m() > parameters.auto_limit ? "cg" : "mumps");
 
-    if (resolved_type == "cholmod")
+    if (resolved_type == "cholmod" || resolved_type == "auto")
       {
         AssertThrow(n_ranks == 1,
                     ExcMessage("Linear solver/Type = cholmod runs on one MPI "
                                "rank only; use mumps, cg or auto on " +
                                std::to_string(n_ranks) + " ranks."));
-        // The lower triangle, straight from the Epetra rows (deal.II's
-        // entry iterators are much slower for this).
-        const Epetra_CrsMatrix &epetra = A.trilinos_matrix();
-        std::vector<int>        rows, columns;
-        std::vector<double>     values;
-        rows.reserve(epetra.NumMyNonzeros() / 2 + A.m());
-        columns.reserve(rows.capacity());
-        values.reserve(rows.capacity());
-        for (int local_row = 0; local_row < epetra.NumMyRows(); ++local_row)
-          {
-            int     n_entries;
-            double *row_values;
-            int    *row_columns;
-            epetra.ExtractMyRowView(local_row,
-                                    n_entries,
-                                    row_values,
-                                    row_columns);
-            const int row = epetra.RowMap().GID(local_row);
-            for (int k = 0; k < n_entries; ++k)
-              {
-                const int column = epetra.ColMap().GID(row_columns[k]);
-                if (column <= row)
-                  {
-                    rows.push_back(row);
-                    columns.push_back(column);
-                    values.push_back(row_values[k]);
-                  }
-              }
-          }
+        std::vector<int>    rows, columns;
+        std::vector<double> values;
+        lower_triangle(A, rows, columns, values);
         cholmod = std::make_unique<Cholmod>(parameters.cholmod_ordering);
-        cholmod->factorize(A.m(), rows, columns, values);
+        cholmod->analyze(A.m(), rows, columns, values);
+        // The factor against what is left now (mesh, matrices and vectors
+        // are allocated): CHOLMOD's numeric factorization needs the factor
+        // plus a small workspace.
+        const double          need      = cholmod->factor_bytes();
+        const AvailableMemory available = available_memory();
+        const bool            fits      = 1.1 * need < available.bytes;
+        std::ostringstream    report;
+        report << "CHOLMOD symbolic analysis: nnz(L) = " << std::setprecision(4)
+               << cholmod->factor_nnz() << ", factor " << gigabytes(need)
+               << ", " << gigabytes(available.bytes) << " available ("
+               << available.source << ")";
+        if (resolved_type == "auto")
+          {
+            resolved_type = fits ? "cholmod" : "cg";
+            report << (fits ? "; auto: cholmod" :
+                              "; auto: cg (the factor does not fit)");
+          }
+        else
+          AssertThrow(fits,
+                      ExcMessage("Linear solver/Type = cholmod: the factor "
+                                 "needs " +
+                                 gigabytes(1.1 * need) + " (nnz(L) = " +
+                                 std::to_string(static_cast<long long>(
+                                   cholmod->factor_nnz())) +
+                                 ") but " + gigabytes(available.bytes) +
+                                 " are available (" + available.source +
+                                 "); use Linear solver/Type = cg or auto, or "
+                                 "fewer Geometry/Subdivisions."));
+        memory_report = report.str();
+        if (resolved_type == "cholmod")
+          cholmod->factorize();
+        else
+          cholmod.reset();
       }
-    else if (resolved_type == "klu" || resolved_type == "mumps")
+    if (resolved_type == "klu" || resolved_type == "mumps")
       {
         amesos = std::make_unique<TrilinosWrappers::SolverDirect>(
           amesos_control,
@@ -233,7 +329,7 @@ namespace fgimpact
             false, resolved_type == "klu" ? "Amesos_Klu" : "Amesos_Mumps"));
         amesos->initialize(A);
       }
-    else
+    else if (resolved_type == "cg")
       {
         if (parameters.preconditioner == "jacobi")
           {

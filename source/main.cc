@@ -242,7 +242,10 @@ main(int argc, char *argv[])
               if (root)
                 std::cout << "fgimpact: " << input->input_name()
                           << " is valid (checked and set up; nothing run, "
-                             "nothing written)\n";
+                             "nothing written)\n"
+                          << "  "
+                          << simulator.get_resource_estimate().describe()
+                          << '\n';
               return 0;
             }
           run_on_root(MPI_COMM_WORLD, [&]() {

@@ -194,6 +194,9 @@ namespace fgimpact
   Simulator::setup_plate()
   {
     total_timer.restart();
+    // Refuse a run that cannot fit before the long set-up.
+    resource_estimate = estimate_resources(parameters);
+    check_memory(parameters, resource_estimate, mpi_communicator);
     geometry = std::make_unique<PlateGeometry>(parameters.geometry);
     material =
       std::make_unique<FunctionallyGradedMaterial>(parameters.material,
@@ -223,6 +226,9 @@ namespace fgimpact
           << ", DoFs per rank min "
           << static_cast<types::global_dof_index>(owned.min) << " / max "
           << static_cast<types::global_dof_index>(owned.max) << '\n';
+    // Machine-dependent timings: only with them.
+    if (parameters.output.print_timing)
+      pcout << "  " << resource_estimate.describe() << '\n';
     if (!parameters.accuracy.log_message.empty())
       pcout << "  " << parameters.accuracy.log_message << '\n';
     if (!parameters.geometry.symmetry_note.empty())

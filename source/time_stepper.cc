@@ -350,6 +350,12 @@ namespace fgimpact
           in.get(*vector);
       }
 
+      std::string
+      solver_log() const override
+      {
+        return solver.memory_log();
+      }
+
     private:
       /**
        * The plate's consistent mass matrix, or for a contact model with

@@ -28,8 +28,9 @@ namespace fgimpact
    *  - cg: conjugate gradients started from the caller's initial guess (the
    *    previous step), with a Jacobi, SSOR or algebraic multigrid (Trilinos
    *    ML) preconditioner; for meshes too large to factorize.
-   *  - auto: up to `Auto direct limit` DoFs cholmod on one MPI rank, mumps
-   *    on several; cg above.
+   *  - auto: on one MPI rank cholmod if CHOLMOD's symbolic analysis says
+   *    its factor fits in the memory available (resources.h), else cg; on
+   *    several ranks mumps up to `Auto direct limit` DoFs, cg above.
    */
   class EffectiveMatrixSolver
   {
@@ -91,6 +92,14 @@ namespace fgimpact
       return resolved_type;
     }
 
+    /// The factor's size against the memory available (cholmod and auto
+    /// on one rank; empty otherwise), for the log.
+    const std::string &
+    memory_log() const
+    {
+      return memory_report;
+    }
+
     /// CG iterations of the last solve (0 for direct solvers).
     unsigned int
     last_iterations() const
@@ -103,6 +112,7 @@ namespace fgimpact
 
     const Parameters                      parameters;
     std::string                           resolved_type;
+    std::string                           memory_report;
     const TrilinosWrappers::SparseMatrix *matrix = nullptr;
     /// Amesos keeps a reference to a SolverControl it does not use.
     SolverControl                                       amesos_control;

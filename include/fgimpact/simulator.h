@@ -10,6 +10,7 @@
 #include <fgimpact/material.h>
 #include <fgimpact/parameters.h>
 #include <fgimpact/plate_model.h>
+#include <fgimpact/resources.h>
 #include <fgimpact/results.h>
 
 #include <memory>
@@ -63,6 +64,13 @@ namespace fgimpact
     const ImpactResults &
     get_results() const;
 
+    /// The memory and time estimated before the mesh was built (setup()).
+    const ResourceEstimate &
+    get_resource_estimate() const
+    {
+      return resource_estimate;
+    }
+
     /// Receive every row of history.csv (its columns and units, before
     /// rounding) on every rank; impact only, before run().
     void
@@ -83,6 +91,7 @@ namespace fgimpact
     const MPI_Comm     mpi_communicator;
     ConditionalOStream pcout;
     Timer              total_timer;
+    ResourceEstimate   resource_estimate;
 
     std::unique_ptr<PlateGeometry>              geometry;
     std::unique_ptr<FunctionallyGradedMaterial> material;

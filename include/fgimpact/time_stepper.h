@@ -192,6 +192,13 @@ namespace fgimpact
     virtual void
     load(CheckpointReader &in);
 
+    /// The linear solver's memory report (may be empty), for the log.
+    virtual std::string
+    solver_log() const
+    {
+      return "";
+    }
+
   protected:
     /// The state every scheme keeps and advance() updates.
     TrilinosWrappers::MPI::Vector u, v, a;

@@ -311,6 +311,10 @@ namespace
        "set Problem type = modal\n" + small + all_free,
        1,
        "Boundary conditions/Face x min"},
+      {"mesh far too large for the memory",
+       "subsection Geometry\n set Subdivisions x = 400\n set Subdivisions y = 200\n set Subdivisions z = 40\nend\n",
+       1,
+       "Geometry/Subdivisions"},
       {"static, only x faces supported",
        "set Problem type = static\n" + small +
          "subsection Boundary conditions\n set Face y min = free\n set Face y max = free\nend\n",
@@ -426,6 +430,16 @@ namespace
        0,
        "Subdivisions"},
       {"ball still in contact at the end time", small + short_run, 0, ""},
+      {"impact point between nodes",
+       small + short_run +
+         "subsection Impactor\n set Impact point x = 0.0537\nend\n",
+       0,
+       "Impactor/Impact point"},
+      {"time step of 1/8 of the contact",
+       small +
+         "subsection Time integration\n set Time step = 12e-6\n set End time = 400e-6\nend\n",
+       0,
+       ""},
       {"Overwrite = true removes stale files",
        small + short_run,
        0,
@@ -485,7 +499,8 @@ namespace
             summary.find("departure_velocity_m_s = none") != std::string::npos;
       }
     // The log warned that the step cannot resolve the contact.
-    if (c.name == std::string("time step longer than the contact"))
+    if (c.name == std::string("time step longer than the contact") ||
+        c.name == std::string("time step of 1/8 of the contact"))
       clean = clean &&
               read("case.stdout").find("WARNING: Time integration/Time step") !=
                 std::string::npos;
