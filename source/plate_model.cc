@@ -130,7 +130,7 @@ namespace fgimpact
     Vector<double>                       cell_r(dofs_per_cell);
     std::vector<bool>                    on_cut(dofs_per_cell);
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
-    std::vector<double>                  E, rho;
+    std::vector<double>                  E, nu, rho;
     initialize_vector(cut_coupling);
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned() && cell->at_boundary())
@@ -151,7 +151,7 @@ namespace fgimpact
           if (std::find(on_cut.begin(), on_cut.end(), true) == on_cut.end())
             continue;
           fe_values.reinit(cell);
-          properties.values(cell, E, rho);
+          properties.values(cell, E, nu, rho);
           cell_r = 0;
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             for (unsigned int i = 0; i < dofs_per_cell; ++i)

@@ -313,7 +313,7 @@ namespace fgimpact
                                     support.get_points(),
                                     plate.get_material());
     const HookeLaw                       hooke(plate.get_material());
-    std::vector<double>                  E, rho;
+    std::vector<double>                  E, nu, rho;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>> w(n_points);
     for (auto &list : w)
@@ -334,7 +334,7 @@ namespace fgimpact
           if (!needed)
             continue;
           fe_values.reinit(cell);
-          properties.values(cell, E, rho);
+          properties.values(cell, E, nu, rho);
           cell->get_dof_indices(dofs);
           for (unsigned int q = 0; q < sdofs.size(); ++q)
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
@@ -344,7 +344,7 @@ namespace fgimpact
                 SymmetricTensor<2, 3> eps;
                 for (unsigned int d = 0; d < 3; ++d)
                   eps[c][d] += (c == d ? 1. : 0.5) * g[d];
-                const SymmetricTensor<2, 3> sigma = hooke.stress(E[q], eps);
+                const SymmetricTensor<2, 3> sigma = hooke.stress(E[q], nu[q], eps);
                 for (unsigned int p = 0; p < n_points; ++p)
                   {
                     const double factor =
@@ -384,7 +384,7 @@ namespace fgimpact
                                     quadrature.get_points(),
                                     plate.get_material());
     const HookeLaw                       hooke(plate.get_material());
-    std::vector<double>                  E, rho;
+    std::vector<double>                  E, nu, rho;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     std::array<TrilinosWrappers::MPI::Vector, 2> w;
     for (auto &vector : w)
@@ -410,7 +410,7 @@ namespace fgimpact
           if (!any)
             continue;
           fe_values.reinit(cell);
-          properties.values(cell, E, rho);
+          properties.values(cell, E, nu, rho);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               // z_S and its strain at q.
@@ -424,7 +424,7 @@ namespace fgimpact
                     for (unsigned int d = 0; d < 3; ++d)
                       eps_s[2][d] += (d == 2 ? 1. : 0.5) * g[d];
                   }
-              const SymmetricTensor<2, 3> sigma_s = hooke.stress(E[q], eps_s);
+              const SymmetricTensor<2, 3> sigma_s = hooke.stress(E[q], nu[q], eps_s);
               const double                JxW     = fe_values.JxW(q);
               for (unsigned int j = 0; j < dofs.size(); ++j)
                 {
