@@ -261,14 +261,14 @@ namespace
     PropertyInterpolator        properties(plate.get_fe().base_element(0),
                                     quadrature.get_points(),
                                     plate.get_material());
-    std::vector<double>         E, rho;
+    std::vector<double>         E, nu, rho;
     std::vector<Vector<double>> values(quadrature.size(), Vector<double>(3));
     double                      sum = 0;
     for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          properties.values(cell, E, rho);
+          properties.values(cell, E, nu, rho);
           fe_values.get_function_values(a_ghosted, values);
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             sum += rho[q] * values[q][2] * fe_values.JxW(q);
