@@ -146,25 +146,28 @@ namespace fgimpact
 
 
   ResourceEstimate
-  estimate_resources(const Parameters &parameters)
+  estimate_resources(const Parameters &parameters, const double core_radius)
   {
     const auto        &g = parameters.geometry;
     const unsigned int p = parameters.finite_element.degree;
     ResourceEstimate   e;
-    // Cells: the brick grid plus, per contact refinement level, the cells
-    // of that level's size in the refined half-ball (an upper bound's
-    // shape; the core radius is a few contact radii).
+    // Cells: the brick grid plus, per contact refinement pass k, 7 new
+    // cells for every cell of size h_k = hx/2^k that refine_locally()
+    // refines: those within core_radius + 2 h_k of the impact point (box
+    // distance, so one more h_k), counted in a half-ball clipped to the
+    // thickness (a cylinder once the ball is deeper than the plate).
     const double hx = g.length / g.subdivisions_x,
                  hy = g.width / g.subdivisions_y,
                  hz = g.thickness / g.subdivisions_z;
     e.n_cells = double(g.subdivisions_x) * g.subdivisions_y * g.subdivisions_z;
-    const double radius =
-      g.contact_refinement_radius > 0 ? g.contact_refinement_radius : 2 * hx;
-    for (unsigned int level = 1; level <= g.contact_refinement_levels; ++level)
+    for (unsigned int k = 0; k < g.contact_refinement_levels; ++k)
       {
-        const double cell = hx * hy * hz / std::pow(8., level);
-        e.n_cells += std::min(2. / 3. * M_PI * std::pow(radius + hx, 3) / cell,
-                              7. * e.n_cells);
+        const double h_k    = hx / std::pow(2., k);
+        const double cell   = hx * hy * hz / std::pow(8., k);
+        const double d      = core_radius + 3. * h_k;
+        const double volume = d <= g.thickness ? 2. / 3. * M_PI * d * d * d :
+                                                 M_PI * d * d * g.thickness;
+        e.n_cells += 7. * std::min(volume / cell, e.n_cells);
       }
     const double scale =
       std::cbrt(e.n_cells / (double(g.subdivisions_x) * g.subdivisions_y *

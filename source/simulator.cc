@@ -194,13 +194,14 @@ namespace fgimpact
   Simulator::setup_plate()
   {
     total_timer.restart();
-    // Refuse a run that cannot fit before the long set-up.
-    resource_estimate = estimate_resources(parameters);
-    check_memory(parameters, resource_estimate, mpi_communicator);
     geometry = std::make_unique<PlateGeometry>(parameters.geometry);
     material =
       std::make_unique<FunctionallyGradedMaterial>(parameters.material,
                                                    geometry->thickness());
+    // Refuse a run that cannot fit before the long set-up (the mesh).
+    resource_estimate =
+      estimate_resources(parameters, contact_refinement().radius);
+    check_memory(parameters, resource_estimate, mpi_communicator);
     plate = std::make_unique<PlateModel>(parameters.finite_element,
                                          *geometry,
                                          *material,

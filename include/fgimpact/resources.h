@@ -67,8 +67,10 @@ namespace fgimpact
                                double       nz,
                                unsigned int components = 3);
 
+  /// The estimate for these parameters; core_radius (m): the radius of
+  /// the contact refinement's finest core (Simulator::contact_refinement()).
   ResourceEstimate
-  estimate_resources(const Parameters &parameters);
+  estimate_resources(const Parameters &parameters, const double core_radius);
 
   /**
    * Refuse (ExcMessage, one line with both numbers and what to change) a
