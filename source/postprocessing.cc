@@ -5,6 +5,7 @@
 
 #include <deal.II/numerics/data_out.h>
 
+#include <fgimpact/mirrored_data_out.h>
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/run_control.h>
 
@@ -127,6 +128,16 @@ namespace fgimpact
       "(impact runs: peak_fields.vtu at the end, the nodal maxima over the "
       "VTU snapshots of the recovered von Mises stress and |sigma_zz|, "
       "MPa).");
+    prm.declare_entry(
+      "Mirror symmetric part",
+      "true",
+      Patterns::Bool(),
+      "With Geometry/Symmetry modelling a half or a quarter of the plate: "
+      "true writes the VTU files of the whole plate (the part and its "
+      "reflections across the cut planes x = a/2, y = b/2, with the signs of "
+      "the odd vector and tensor components changed); false writes the "
+      "modelled part only (mirror it in ParaView with the Reflect filter). "
+      "No effect on a whole plate.");
   }
 
 
@@ -147,6 +158,7 @@ namespace fgimpact
     cell_stress  = has("cell_stress");
     material     = has("material");
     peak         = has("peak");
+    mirror       = prm.get_bool("Mirror symmetric part");
   }
 
 
@@ -259,9 +271,9 @@ namespace fgimpact
                         constant_field]() {
       const std::vector<
         DataComponentInterpretation::DataComponentInterpretation>
-                 vector_field(3,
+                      vector_field(3,
                      DataComponentInterpretation::component_is_part_of_vector);
-      DataOut<3> data_out;
+      MirroredDataOut data_out(plate.get_geometry());
       data_out.attach_dof_handler(plate.get_dof_handler());
       if (fields.displacement)
         data_out.add_data_vector(u_ghosted,
@@ -287,6 +299,8 @@ namespace fgimpact
                                    DataOut<3>::type_cell_data);
         }
       data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
+      if (fields.mirror)
+        data_out.mirror();
 
       DataOutBase::VtkFlags flags;
       flags.time  = t;
@@ -388,12 +402,14 @@ namespace fgimpact
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
 
-    DataOut<3> data_out;
+    MirroredDataOut data_out(plate.get_geometry());
     data_out.attach_dof_handler(recovery->get_dof_handler());
     for (const auto f :
          {StressRecovery::peak_von_mises, StressRecovery::peak_abs_stress_zz})
       data_out.add_data_vector(recovery->field(f), StressRecovery::name(f));
     data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
+    if (fields.mirror)
+      data_out.mirror();
     DataOutBase::VtkFlags flags;
     flags.compression_level = compression;
     data_out.set_flags(flags);

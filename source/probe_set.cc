@@ -9,6 +9,7 @@
 #include <fgimpact/constitutive_law.h>
 #include <fgimpact/probe_set.h>
 #include <fgimpact/probes.h>
+#include <fgimpact/stress_recovery.h>
 
 #include <cctype>
 #include <set>
@@ -302,6 +303,8 @@ namespace fgimpact
     const FiniteElement<3> &scalar_fe = scalar_dofs.get_fe();
     const unsigned int      n_points  = points.size();
     const auto ghosted = recovery_coefficients(plate, scalar_dofs, points);
+    const auto cut_planes =
+      dofs_on_cut_planes(plate.get_geometry(), scalar_dofs);
     std::vector<types::global_dof_index> sdofs(scalar_fe.n_dofs_per_cell());
 
     // Each cell's stress at its scalar support points, as in
@@ -344,15 +347,22 @@ namespace fgimpact
                 SymmetricTensor<2, 3> eps;
                 for (unsigned int d = 0; d < 3; ++d)
                   eps[c][d] += (c == d ? 1. : 0.5) * g[d];
-                const SymmetricTensor<2, 3> sigma = hooke.stress(E[q], nu[q], eps);
+                const SymmetricTensor<2, 3> sigma =
+                  hooke.stress(E[q], nu[q], eps);
+                // A node on a cut plane: the odd shear components of
+                // its (whole-plate) average are zero.
+                const auto cut = cut_planes.find(sdofs[q]);
+                const auto planes =
+                  (cut == cut_planes.end() ? 0u : cut->second);
                 for (unsigned int p = 0; p < n_points; ++p)
                   {
                     const double factor =
                       ghosted[1 + p](sdofs[q]) / ghosted[0](sdofs[q]);
                     if (factor != 0.)
                       for (unsigned int s = 0; s < 6; ++s)
-                        w[p][s](dofs[i]) +=
-                          factor * sigma[component[s][0]][component[s][1]];
+                        if (!odd_under_reflection(s, planes))
+                          w[p][s](dofs[i]) +=
+                            factor * sigma[component[s][0]][component[s][1]];
                   }
               }
         }
@@ -424,8 +434,9 @@ namespace fgimpact
                     for (unsigned int d = 0; d < 3; ++d)
                       eps_s[2][d] += (d == 2 ? 1. : 0.5) * g[d];
                   }
-              const SymmetricTensor<2, 3> sigma_s = hooke.stress(E[q], nu[q], eps_s);
-              const double                JxW     = fe_values.JxW(q);
+              const SymmetricTensor<2, 3> sigma_s =
+                hooke.stress(E[q], nu[q], eps_s);
+              const double JxW = fe_values.JxW(q);
               for (unsigned int j = 0; j < dofs.size(); ++j)
                 {
                   const unsigned int c = fe.system_to_component_index(j).first;

@@ -21,6 +21,44 @@ namespace fgimpact
 
 
 
+  bool
+  odd_under_reflection(const unsigned int s, const unsigned int planes)
+  {
+    for (unsigned int d = 0; d < 2; ++d)
+      if ((planes & (1u << d)) &&
+          ((component[s][0] == d) != (component[s][1] == d)))
+        return true;
+    return false;
+  }
+
+
+
+  std::map<types::global_dof_index, unsigned int>
+  dofs_on_cut_planes(const PlateGeometry &geometry,
+                     const DoFHandler<3> &scalar_dofs)
+  {
+    std::map<types::global_dof_index, unsigned int> planes;
+    if (!geometry.is_cut(0) && !geometry.is_cut(1))
+      return planes;
+    // The cut face x = a/2 has boundary id 1, y = b/2 id 3 (colorized).
+    std::vector<types::global_dof_index> dofs(
+      scalar_dofs.get_fe().n_dofs_per_face());
+    for (const auto &cell : scalar_dofs.active_cell_iterators())
+      if (cell->is_locally_owned() || cell->is_ghost())
+        for (const auto &face : cell->face_iterators())
+          for (unsigned int d = 0; d < 2; ++d)
+            if (geometry.is_cut(d) && face->at_boundary() &&
+                face->boundary_id() == 2 * d + 1)
+              {
+                face->get_dof_indices(dofs);
+                for (const auto dof : dofs)
+                  planes[dof] |= 1u << d;
+              }
+    return planes;
+  }
+
+
+
   StressRecovery::StressRecovery(const PlateModel &plate)
     : plate(plate)
     , dof_handler(plate.get_dof_handler().get_triangulation())
@@ -54,6 +92,7 @@ namespace fgimpact
     inverse_count.reinit(owned, comm);
     for (const auto dof : owned)
       inverse_count(dof) = 1. / count(dof);
+    cut_planes = dofs_on_cut_planes(plate.get_geometry(), dof_handler);
   }
 
 
@@ -147,13 +186,19 @@ namespace fgimpact
       sums[s].compress(VectorOperation::add);
     for (const auto dof : owned)
       {
-        const double          w = inverse_count(dof);
+        const double w      = inverse_count(dof);
+        const auto   it     = cut_planes.find(dof);
+        const auto   planes = (it == cut_planes.end() ? 0u : it->second);
         SymmetricTensor<2, 3> sigma;
         for (unsigned int s = 0; s < 6; ++s)
           {
-            const double value                      = sums[s](dof) * w;
-            owned_values[stress_xx + s](dof)        = value;
-            owned_values[strain_xx + s](dof)        = sums[6 + s](dof) * w;
+            // On a cut plane the whole plate's average also holds the
+            // mirrored cells, whose shear components normal to the plane
+            // have the opposite sign: they average to zero there.
+            const double odd   = odd_under_reflection(s, planes) ? 0. : 1.;
+            const double value = odd * sums[s](dof) * w;
+            owned_values[stress_xx + s](dof) = value;
+            owned_values[strain_xx + s](dof) = odd * sums[6 + s](dof) * w;
             sigma[component[s][0]][component[s][1]] = value;
           }
         const SymmetricTensor<2, 3> s  = deviator(sigma);

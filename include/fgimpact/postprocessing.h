@@ -78,11 +78,16 @@ namespace fgimpact
     bool cell_stress  = false; // per-cell stress_MPa tensor, von Mises
     bool material     = true;  // youngs_modulus_GPa, density_kg_m3
     bool peak         = true;  // peak_fields.vtu at the end of an impact
+    /// Entry "Mirror symmetric part": a half or quarter model's VTU files
+    /// show the whole plate (MirroredDataOut).
+    bool mirror = true;
 
-    /// Declare "Fields" in the current subsection.
+    /// Declare "Fields" and "Mirror symmetric part" in the current
+    /// subsection.
     static void
     declare_parameters(ParameterHandler &prm);
-    /// Parse "Fields" of the current subsection.
+    /// Parse "Fields" and "Mirror symmetric part" of the current
+    /// subsection.
     void
     parse_parameters(ParameterHandler &prm);
 

@@ -10,11 +10,33 @@
 #include <fgimpact/plate_model.h>
 
 #include <array>
+#include <map>
 #include <string>
 
 namespace fgimpact
 {
   using namespace dealii;
+
+  /**
+   * Whether the stress or strain component s (order xx, yy, zz, xy, xz,
+   * yz) changes sign under the reflections across the cut planes in
+   * `planes` (bit d: the plane normal to axis d): exactly one of its
+   * indices is such a d.  On a cut plane such a component of a nodal
+   * average is zero, as the whole plate's average of both sides gives.
+   */
+  bool
+  odd_under_reflection(const unsigned int s, const unsigned int planes);
+
+  /**
+   * The scalar DoFs (of the locally owned and ghost cells) on the cut
+   * planes of Geometry/Symmetry, each with its bit mask of planes (bit 0:
+   * x = a/2, bit 1: y = b/2); empty for a whole plate.
+   */
+  std::map<types::global_dof_index, unsigned int>
+  dofs_on_cut_planes(const PlateGeometry &geometry,
+                     const DoFHandler<3> &scalar_dofs);
+
+
 
   /**
    * Continuous (recovered) stress and strain by nodal averaging: at every
@@ -31,6 +53,11 @@ namespace fgimpact
    * sigma_1 >= sigma_2 >= sigma_3 (MPa), the strain components xx, yy, zz,
    * xy, xz, yz (tensor components, dimensionless), and the peak over the
    * recover() calls so far of von Mises and of |sigma_zz| (MPa).
+   *
+   * On a symmetric part (Geometry/Symmetry) the cut planes are inner
+   * planes of the whole plate: there the shear components that change sign
+   * under the reflection (xy, xz on x = a/2; xy, yz on y = b/2) are zero,
+   * as the whole plate's average over both sides gives.
    *
    * recover() is collective under MPI.
    */
@@ -100,6 +127,8 @@ namespace fgimpact
     std::array<TrilinosWrappers::MPI::Vector, n_fields> owned_values;
     std::array<TrilinosWrappers::MPI::Vector, n_fields> ghosted;
     unsigned int                                        n_recovered = 0;
+    /// dofs_on_cut_planes() of the scalar DoFHandler.
+    std::map<types::global_dof_index, unsigned int> cut_planes;
   };
 } // namespace fgimpact
 
