@@ -66,6 +66,7 @@ for c in "${cases[@]}"; do
   dir=$root/$label
   mkdir -p "$dir"
   write_prm "$dir/run.prm" prm/default.prm "Accuracy=${preset:-custom}" \
+    "Geometry/Symmetry=none" \
     "Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny" \
     "Geometry/Subdivisions z=$nz" "Finite element/Degree=$degree" \
     "Material/Property mode=$mode" "Time integration/Time step=$dt" \

@@ -87,7 +87,7 @@ for case in "40 20 4 400" "80 40 8 20"; do
     mesh=${nx}x${ny}x${nz}
     dir=$out/${method}_${blas}_${mesh}
     mkdir -p "$dir"
-    write_prm "$dir/run.prm" prm/default.prm \
+    write_prm "$dir/run.prm" prm/default.prm "Geometry/Symmetry=none" \
       "Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny" \
       "Geometry/Subdivisions z=$nz" "Time integration/End time=${T}e-6" \
       "Linear solver/Type=cholmod" \

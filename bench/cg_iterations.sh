@@ -47,6 +47,7 @@ for c in "${cases[@]}"; do
   IFS=: read -r nx ny nz pc n <<< "$c"
   for steps in 1 "$n"; do
     write_prm "$out/${nx}x${ny}x${nz}_${pc}_$steps.prm" prm/default.prm \
+      "Geometry/Symmetry=none" \
       "Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny" \
       "Geometry/Subdivisions z=$nz" "Time integration/End time=${steps}e-6" \
       "Linear solver/Type=cg" "Linear solver/Preconditioner=$pc" \

@@ -27,7 +27,7 @@ for c in "${cases[@]}"; do
   for ordering in amd metis nesdis auto; do
     dir=$out/${nx}x${ny}x${nz}_$ordering
     mkdir -p "$dir"
-    write_prm "$dir/run.prm" prm/default.prm \
+    write_prm "$dir/run.prm" prm/default.prm "Geometry/Symmetry=none" \
       "Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny" \
       "Geometry/Subdivisions z=$nz" "Time integration/End time=${T}e-6" \
       "Linear solver/Type=cholmod" "Linear solver/CHOLMOD ordering=$ordering" \

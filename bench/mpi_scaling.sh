@@ -44,7 +44,7 @@ run() { # id study path ranks nx ny nz end_us
   esac
   # mpirun starts the ranks in this directory (the repository root), where
   # the relative include of prm/default.prm is opened.
-  write_prm "$dir/run.prm" prm/default.prm "${overrides[@]}" \
+  write_prm "$dir/run.prm" prm/default.prm "Geometry/Symmetry=none" "${overrides[@]}" \
     "Output/Directory=$dir" "Output/VTU interval=0" "Output/Log interval=0"
   printf '%-28s ranks %s %-11s ... ' "$id" "$ranks" "${nx}x${ny}x${nz}"
   local status=0

@@ -129,7 +129,7 @@ run_case() { # id group scheme solver precond nx ny nz end_us [Section/Entry=val
     overrides+=("Linear solver/Type=$solver")
     [ "$precond" != - ] && overrides+=("Linear solver/Preconditioner=$precond")
   fi
-  write_prm "$dir/run.prm" prm/default.prm "${overrides[@]}" "$@" \
+  write_prm "$dir/run.prm" prm/default.prm "Geometry/Symmetry=none" "${overrides[@]}" "$@" \
     "Output/Instrumentation=true" "Output/Directory=$dir" "Output/VTU interval=0" "Output/Log interval=0"
 
   printf '%-34s %-11s %7s us ... ' "$id" "$mesh" "$T"

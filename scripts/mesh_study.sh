@@ -17,7 +17,7 @@ for m in "${meshes[@]}"; do
   IFS=: read -r nx ny nz <<< "$m"
   dir=$root/${nx}x${ny}x${nz}
   prm=$root/${nx}x${ny}x${nz}.prm
-  write_prm "$prm" prm/default.prm \
+  write_prm "$prm" prm/default.prm "Geometry/Symmetry=none" \
     "Geometry/Subdivisions x=$nx" "Geometry/Subdivisions y=$ny" \
     "Geometry/Subdivisions z=$nz" \
     "Output/Directory=$dir" "Output/VTU interval=0" "Output/Log interval=0"

@@ -156,10 +156,17 @@ namespace fgimpact
     // refines: those within core_radius + 2 h_k of the impact point (box
     // distance, so one more h_k), counted in a half-ball clipped to the
     // thickness (a cylinder once the ball is deeper than the plate).
-    const double hx = g.length / g.subdivisions_x,
-                 hy = g.width / g.subdivisions_y,
-                 hz = g.thickness / g.subdivisions_z;
-    e.n_cells = double(g.subdivisions_x) * g.subdivisions_y * g.subdivisions_z;
+    // A symmetric part (Geometry/Symmetry, resolved with the parameters):
+    // half the subdivisions across each cut, and the cut share of the
+    // refined half-ball.
+    const double share = (g.cut[0] ? 0.5 : 1.) * (g.cut[1] ? 0.5 : 1.);
+    const double sx    = g.subdivisions_x * (g.cut[0] ? 0.5 : 1.),
+                 sy    = g.subdivisions_y * (g.cut[1] ? 0.5 : 1.),
+                 sz    = g.subdivisions_z;
+    const double hx    = g.length / g.subdivisions_x,
+                 hy    = g.width / g.subdivisions_y,
+                 hz    = g.thickness / g.subdivisions_z;
+    e.n_cells          = sx * sy * sz;
     for (unsigned int k = 0; k < g.contact_refinement_levels; ++k)
       {
         const double h_k    = hx / std::pow(2., k);
@@ -167,17 +174,13 @@ namespace fgimpact
         const double d      = core_radius + 3. * h_k;
         const double volume = d <= g.thickness ? 2. / 3. * M_PI * d * d * d :
                                                  M_PI * d * d * g.thickness;
-        e.n_cells += 7. * std::min(volume / cell, e.n_cells);
+        e.n_cells += 7. * std::min(share * volume / cell, e.n_cells);
       }
-    const double scale =
-      std::cbrt(e.n_cells / (double(g.subdivisions_x) * g.subdivisions_y *
-                             g.subdivisions_z));
+    const double scale = std::cbrt(e.n_cells / (sx * sy * sz));
     // Nodes per direction and the 1D coupling count: a node couples with
     // 3 (Q1) or 8 (Q2, averaged) nodes per direction.
     double       nodes[3], couplings = 9;
-    const double n[3] = {g.subdivisions_x * scale,
-                         g.subdivisions_y * scale,
-                         g.subdivisions_z * scale};
+    const double n[3] = {sx * scale, sy * scale, sz * scale};
     for (unsigned int d = 0; d < 3; ++d)
       {
         nodes[d] = p * n[d] + 1;
@@ -197,9 +200,12 @@ namespace fgimpact
     e.matrices   = bytes_per_entry * e.matrix_nnz;
     e.vectors    = bytes_per_dof * e.n_dofs;
     e.factor     = e.factorizes ? 8. * supernode_padding * e.factor_nnz : 0.;
-    e.output     = parameters.output.vtu_interval > 0 ?
-                     bytes_per_output_cell * e.n_cells :
-                     0.;
+    // A mirrored part's VTU holds the whole plate's cells.
+    const double output_cells =
+      parameters.output.vtu_fields.mirror ? e.n_cells / share : e.n_cells;
+    e.output             = parameters.output.vtu_interval > 0 ?
+                             bytes_per_output_cell * output_cells :
+                             0.;
     e.factorization_time = e.factorizes ? flops / flop_rate : 0.;
     // A step: two passes over the factor (implicit) or over the matrix
     // (explicit, cg per iteration), plus a few matrix-vector products.

@@ -47,7 +47,8 @@ namespace
       std::string(FGIMPACT_SOURCE_DIR) + "/prm/default.prm",
       "subsection Output\n set Directory = " + directory +
         "\n set VTU interval = 0\n"
-        " set Log interval = 0\nend\n" +
+        " set Log interval = 0\nend\n"
+        "subsection Geometry\n set Symmetry = none\nend\n" +
         overrides,
       communicator,
       /*keep_history=*/true);

@@ -22,7 +22,8 @@ namespace
   {
     return fgimpact_tests::run_quietly(
       std::string(FGIMPACT_SOURCE_DIR) + "/prm/default.prm",
-      "subsection Geometry\n set Contact refinement levels = 2\nend\n"
+      "subsection Geometry\n set Contact refinement levels = 2\n"
+      " set Symmetry = none\nend\n"
       "subsection Contact\n set Model = resolved sphere\nend\n"
       "subsection Time integration\n set End time = 100e-6\nend\n"
       "subsection Output\n set Directory = " +

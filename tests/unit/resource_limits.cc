@@ -53,6 +53,7 @@ namespace
     const std::string command =
       "sh -c '" + limit + " exec " + FGIMPACT_EXECUTABLE + " " +
       FGIMPACT_SOURCE_DIR + "/prm/default.prm -s \"Output/VTU interval=0\" " +
+      "-s \"Geometry/Symmetry=none\" " +
       "-s \"Output/Directory=resource_out\" " + overrides +
       "' > case.stdout 2> case.stderr";
     const auto start  = std::chrono::steady_clock::now();
