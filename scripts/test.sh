@@ -13,11 +13,8 @@ allow_local_mpirun
 # The plotting script (skips the drawing without matplotlib, as in CI).
 scripts/check_plot_histories.sh build
 
-# The unit tests on small meshes again against deal.II's debug library
-# (libdeal.ii.g.so), so that its Assert checks (index ranges, dimensions,
-# ghost access) run in CI.  Whole-program and slow tests stay Release-only.
-debug_tests='^unit/(material_gradation|turner_modulus|newmark_oscillator|parameters_defaults|vtu_stress|plate_mass|patch_test|monolithic_newton)$'
-cmake -S . -B build-debug -DCMAKE_BUILD_TYPE=Debug \
-  -DTEST_PICKUP_REGEX="$debug_tests"
-cmake --build build-debug -j2 --target fgimpact_lib
-(cd build-debug && ctest -j2 --output-on-failure)
+# The small unit tests, the run tests and the bad-input suite again,
+# against deal.II's debug library (its Assert checks) and with
+# AddressSanitizer + UndefinedBehaviorSanitizer on our code.
+# Whole-program and slow tests stay Release-only.
+scripts/sanitize.sh
