@@ -25,7 +25,7 @@ study_args=(prm/default.prm -s "Output/Directory=$out/study"
   -s "Output/VTU interval=0" -s "Study/Combination=zip"
   --study "Impactor/Initial velocity=1,2,3,4,1,1,1,1"
   --study "Impactor/Density=7800,7800,7800,7800,7800,8900,9850,11300")
-one_args=(prm/velocity_v1.prm -s "Output/Directory=$out/one")
+one_args=(prm/velocity_v1.prm -s "Output/Directory=$out/one" -s "Output/VTU interval=0")
 
 # Wall time (s) and peak RSS (MB) of one command, from /usr/bin/time -v.
 measure() {

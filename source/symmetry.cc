@@ -38,8 +38,8 @@ namespace fgimpact
       for (const auto &p : parameters.output.probe_points.points)
         if (p.location(g.length, g.width, g.thickness)[d] >
             0.5 * extent * (1. + 1e-9))
-          return "Output/Probe points: '" + p.name + "' lies beyond " +
-                 plane + " (outside the modelled part)";
+          return "Output/Probe points: '" + p.name + "' lies beyond " + plane +
+                 " (outside the modelled part)";
       const unsigned int n = (d == 0 ? g.subdivisions_x : g.subdivisions_y);
       if (n % 2 != 0)
         return std::string("Geometry/Subdivisions ") + axis + " = " +
@@ -71,16 +71,18 @@ namespace fgimpact
           g.cut = {{true, true}};
           break;
         case Symmetry::half:
-          AssertThrow(ok[0] || ok[1],
-                      ExcMessage("Geometry/Symmetry = half: " + breaker[0] +
-                                 ", and " + breaker[1] + "."));
+          AssertThrow(
+            ok[0] || ok[1],
+            ExcMessage("Geometry/Symmetry = half: " + breaker[0] +
+                       (breaker[1] == breaker[0] ? "" : ", and " + breaker[1]) +
+                       "."));
           g.cut = {{ok[0], !ok[0]}};
           break;
         case Symmetry::automatic:
           g.cut = {{ok[0], ok[1]}};
           if (!ok[0] && !ok[1])
             return "symmetry: none (Geometry/Symmetry = auto: " + breaker[0] +
-                   "; " + breaker[1] + ")";
+                   (breaker[1] == breaker[0] ? "" : "; " + breaker[1]) + ")";
           break;
         case Symmetry::none:
           break;
