@@ -13,10 +13,37 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <sstream>
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// Write `filename` with writer(stream); deal.II's own I/O error is
+    /// several paragraphs: ExcOutputFailure with one line instead.
+    void
+    write_checked(const std::string                         &filename,
+                  const std::function<void(std::ostream &)> &writer)
+    {
+      std::ofstream out(filename);
+      try
+        {
+          writer(out);
+        }
+      catch (const ExceptionBase &)
+        {
+          out.setstate(std::ios::badbit);
+        }
+      out.close();
+      AssertThrow(!out.fail(),
+                  ExcOutputFailure("cannot write " + filename +
+                                   " (disk full or I/O error)."));
+    }
+  } // namespace
+
+
+
   StressPostprocessor::StressPostprocessor(const PlateModel &plate,
                                            const bool        with_stress,
                                            const bool        with_material)
@@ -309,23 +336,6 @@ namespace fgimpact
       flags.compression_level = compression;
       data_out.set_flags(flags);
 
-      // deal.II's own I/O error is several paragraphs: one line instead.
-      const auto write_checked = [](const std::string &filename,
-                                    const auto        &writer) {
-        std::ofstream out(filename);
-        try
-          {
-            writer(out);
-          }
-        catch (const ExceptionBase &)
-          {
-            out.setstate(std::ios::badbit);
-          }
-        out.close();
-        AssertThrow(!out.fail(),
-                    ExcOutputFailure("cannot write " + filename +
-                                     " (disk full or I/O error)."));
-      };
       write_checked(directory + "/" + base + "." +
                       Utilities::int_to_string(rank) + ".vtu",
                     [&](std::ostream &out) { data_out.write_vtu(out); });
@@ -415,17 +425,17 @@ namespace fgimpact
     data_out.set_flags(flags);
 
     const std::string base = "peak_fields";
-    std::ofstream     piece(directory + "/" + base + "." +
-                        Utilities::int_to_string(rank) + ".vtu");
-    data_out.write_vtu(piece);
-    AssertThrow(piece, ExcMessage("cannot write " + base + ".vtu"));
+    write_checked(directory + "/" + base + "." +
+                    Utilities::int_to_string(rank) + ".vtu",
+                  [&](std::ostream &out) { data_out.write_vtu(out); });
     if (rank == 0)
       {
         std::vector<std::string> pieces;
         for (unsigned int r = 0; r < n_ranks; ++r)
           pieces.push_back(base + "." + Utilities::int_to_string(r) + ".vtu");
-        std::ofstream pvtu(directory + "/" + base + ".pvtu");
-        data_out.write_pvtu_record(pvtu, pieces);
+        write_checked(directory + "/" + base + ".pvtu", [&](std::ostream &out) {
+          data_out.write_pvtu_record(out, pieces);
+        });
       }
   }
 
