@@ -427,7 +427,12 @@ namespace fgimpact
         if (vtu && stepper && step % parameters.vtu_interval == 0)
           {
             output_timer.start();
-            vtu->write(step, t, stepper->displacement(), stepper->velocity());
+            vtu->write(step,
+                       t,
+                       stepper->displacement(),
+                       stepper->velocity(),
+                       {},
+                       &stepper->acceleration());
             if (contact_vtu)
               contact_vtu->write(step, t, sample.ball->w, *sample.contact);
             output_timer.stop();

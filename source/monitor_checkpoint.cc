@@ -133,6 +133,11 @@ namespace fgimpact
     // one rank, and the same on every rank under MPI (written at once).
     if (vtu &&
         Utilities::MPI::max(rewrite_snapshot ? 1 : 0, plate_communicator) == 1)
-      vtu->write(step, t, stepper.displacement(), stepper.velocity());
+      vtu->write(step,
+                 t,
+                 stepper.displacement(),
+                 stepper.velocity(),
+                 {},
+                 &stepper.acceleration());
   }
 } // namespace fgimpact

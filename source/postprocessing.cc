@@ -139,10 +139,12 @@ namespace fgimpact
     prm.declare_entry(
       "Fields",
       "displacement, velocity, stress, von_mises, principal, material, peak",
-      Patterns::MultipleSelection("displacement|velocity|stress|von_mises|"
-                                  "principal|strain|cell_stress|material|peak"),
+      Patterns::MultipleSelection("displacement|velocity|acceleration|stress|"
+                                  "von_mises|principal|strain|cell_stress|"
+                                  "material|peak"),
       "The fields of the VTU files, a comma-separated list of: "
       "displacement (displacement_m, m), velocity (velocity_m_s, m/s), "
+      "acceleration (impact runs: acceleration_m_s2, m/s^2), "
       "stress (the recovered, continuous stress by nodal averaging: "
       "sigma_xx_MPa, sigma_yy_MPa, sigma_zz_MPa, sigma_xy_MPa, sigma_xz_MPa, "
       "sigma_yz_MPa, MPa), von_mises (recovered von_mises_MPa, MPa), "
@@ -178,6 +180,7 @@ namespace fgimpact
     };
     displacement = has("displacement");
     velocity     = has("velocity");
+    acceleration = has("acceleration");
     stress       = has("stress");
     von_mises    = has("von_mises");
     principal    = has("principal");
@@ -210,6 +213,7 @@ namespace fgimpact
                      relevant,
                      plate.get_mpi_communicator());
     v_ghosted.reinit(u_ghosted);
+    a_ghosted.reinit(u_ghosted);
   }
 
 
@@ -271,12 +275,16 @@ namespace fgimpact
                    const double                          t,
                    const TrilinosWrappers::MPI::Vector  &u,
                    const TrilinosWrappers::MPI::Vector  &v,
-                   const std::pair<std::string, double> &constant_field)
+                   const std::pair<std::string, double> &constant_field,
+                   const TrilinosWrappers::MPI::Vector  *a)
   {
     finish(); // the previous snapshot still reads u_ghosted, v_ghosted
-    any_written = true;
-    u_ghosted   = u;
-    v_ghosted   = v;
+    any_written                  = true;
+    u_ghosted                    = u;
+    v_ghosted                    = v;
+    const bool with_acceleration = fields.acceleration && a != nullptr;
+    if (with_acceleration)
+      a_ghosted = *a;
 
     const MPI_Comm     comm    = plate.get_mpi_communicator();
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
@@ -295,7 +303,8 @@ namespace fgimpact
                         n_ranks,
                         base,
                         record,
-                        constant_field]() {
+                        constant_field,
+                        with_acceleration]() {
       const std::vector<
         DataComponentInterpretation::DataComponentInterpretation>
                       vector_field(3,
@@ -310,6 +319,12 @@ namespace fgimpact
       if (fields.velocity)
         data_out.add_data_vector(v_ghosted,
                                  std::vector<std::string>(3, "velocity_m_s"),
+                                 DataOut<3>::type_dof_data,
+                                 vector_field);
+      if (with_acceleration)
+        data_out.add_data_vector(a_ghosted,
+                                 std::vector<std::string>(3,
+                                                          "acceleration_m_s2"),
                                  DataOut<3>::type_dof_data,
                                  vector_field);
       if (fields.cell_stress || fields.material)

@@ -71,6 +71,7 @@ namespace fgimpact
   {
     bool displacement = true;  // displacement_m (m)
     bool velocity     = true;  // velocity_m_s (m/s)
+    bool acceleration = false; // acceleration_m_s2 (m/s^2, impact runs)
     bool stress       = true;  // recovered sigma_xx_MPa ... sigma_yz_MPa
     bool von_mises    = true;  // recovered von_mises_MPa
     bool principal    = true;  // recovered sigma_1_MPa >= sigma_2 >= sigma_3
@@ -127,14 +128,16 @@ namespace fgimpact
      * task, off the time loop's critical path; the next call (or the
      * destructor) waits for it.  A non-empty constant_field (name, value)
      * adds a field of that value on every cell (the modal analysis's
-     * frequency_Hz).
+     * frequency_Hz).  The acceleration a (m/s^2; impact runs) is written
+     * if the fields include "acceleration".
      */
     void
     write(const unsigned int                    step,
           const double                          t,
           const TrilinosWrappers::MPI::Vector  &u,
           const TrilinosWrappers::MPI::Vector  &v,
-          const std::pair<std::string, double> &constant_field = {});
+          const std::pair<std::string, double> &constant_field = {},
+          const TrilinosWrappers::MPI::Vector  *a              = nullptr);
 
     /// Wait for the pending snapshot, rethrowing its errors, and list it
     /// in the PVD.
@@ -174,7 +177,7 @@ namespace fgimpact
     const VtuFields                             fields;
     StressPostprocessor                         postprocessor;
     std::unique_ptr<StressRecovery>             recovery;
-    TrilinosWrappers::MPI::Vector               u_ghosted, v_ghosted;
+    TrilinosWrappers::MPI::Vector               u_ghosted, v_ghosted, a_ghosted;
     std::vector<std::pair<double, std::string>> times_and_names;
     std::pair<double, std::string>              pending_record;
     bool                                        record_pending = false;

@@ -1,0 +1,157 @@
+// Output/Fields = acceleration: the VTU field acceleration_m_s2 of an
+// impact run is the time stepper's acceleration.  Read back from the
+// files (base64, zlib stored blocks with Output/VTU compression = none),
+// every snapshot pair n, n+1 (VTU interval 1) must satisfy the average
+// acceleration rule v_{n+1} - v_n = dt/2 (a_n + a_{n+1}) at every output
+// point, with the velocity field velocity_m_s written beside it (float32
+// data: to 1e-5 of the largest velocity change), and the mid-plane
+// centre's a_z must equal probes.csv's mid_az_m_s2.  A wrong vector in the
+// field (the velocity, the displacement, a stale copy) fails both.
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <test_tools.h>
+
+using namespace dealii;
+
+namespace
+{
+  const double dt = 2e-6; // s
+
+  /// The float32 values of the DataArray `name` of a deal.II VTU file
+  /// written without compression (zlib stored blocks).
+  std::vector<float>
+  read_array(const std::string &file, const std::string &name)
+  {
+    std::ifstream     in(file);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string text = buffer.str();
+    const auto        tag  = text.find("Name=\"" + name + "\"");
+    AssertThrow(tag != std::string::npos, ExcMessage(name + " not in " + file));
+    const auto  begin = text.find('>', tag) + 1;
+    const auto  end   = text.find("</DataArray>", begin);
+    std::string body  = text.substr(begin, end - begin);
+    body.erase(std::remove_if(body.begin(), body.end(), ::isspace), body.end());
+    // A 16-byte header (4 uint32, its own base64 group), then the zlib
+    // stream: 2 header bytes, stored blocks (1 flag byte, LEN, NLEN, data).
+    const std::vector<unsigned char> z =
+      Utilities::decode_base64(body.substr(24));
+    std::vector<unsigned char> raw;
+    std::size_t                i = 2;
+    for (bool last = false; !last && i + 5 <= z.size();)
+      {
+        AssertThrow((z[i] & 6) == 0, ExcMessage("not a stored zlib block"));
+        last                  = z[i] & 1;
+        const std::size_t len = z[i + 1] | (z[i + 2] << 8);
+        raw.insert(raw.end(), z.begin() + i + 5, z.begin() + i + 5 + len);
+        i += 5 + len;
+      }
+    std::vector<float> values(raw.size() / sizeof(float));
+    std::memcpy(values.data(), raw.data(), raw.size());
+    return values;
+  }
+
+  std::string
+  snapshot(const unsigned int n)
+  {
+    return "out/solution_" + Utilities::int_to_string(n, 5) + ".0.vtu";
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  fgimpact_tests::run_quietly(
+    "",
+    "subsection Geometry\n set Subdivisions x = 10\n set Subdivisions y = 6\n"
+    " set Subdivisions z = 2\nend\n"
+    "subsection Time integration\n set Time step = 2e-6\n"
+    " set End time = 40e-6\nend\n"
+    "subsection Output\n set Directory = out\n set Log interval = 0\n"
+    " set Print timing = false\n set VTU interval = 1\n"
+    " set VTU compression = none\n"
+    " set Fields = displacement, velocity, acceleration\nend\n");
+
+  // (1) The average acceleration rule between consecutive snapshots.
+  double worst = 0, scale = 0;
+  for (unsigned int n = 0; n < 20; ++n)
+    {
+      const auto v0 = read_array(snapshot(n), "velocity_m_s");
+      const auto v1 = read_array(snapshot(n + 1), "velocity_m_s");
+      const auto a0 = read_array(snapshot(n), "acceleration_m_s2");
+      const auto a1 = read_array(snapshot(n + 1), "acceleration_m_s2");
+      AssertThrow(v0.size() == a0.size() && v1.size() == a1.size() &&
+                    v0.size() == v1.size() && !v0.empty(),
+                  ExcMessage("field sizes differ"));
+      for (std::size_t k = 0; k < v0.size(); ++k)
+        {
+          const double dv = double(v1[k]) - double(v0[k]);
+          scale           = std::max(scale, std::abs(dv));
+          worst =
+            std::max(worst, std::abs(dv - 0.5 * dt * (double(a0[k]) + a1[k])));
+        }
+    }
+  const bool rule = worst < 1e-5 * scale && scale > 0;
+  std::printf("v_{n+1} - v_n = dt/2 (a_n + a_{n+1}) at every point of 20 "
+              "snapshot pairs: largest residual / largest change %.1e: %s\n",
+              worst / scale,
+              rule ? "yes" : "NO");
+
+  // (2) The mid-plane centre (0.1, 0.05, 0.01) m against probes.csv at
+  // t = 20 us (step 10).
+  const auto         points = read_array(snapshot(10), "acceleration_m_s2");
+  const std::string  file   = snapshot(10);
+  std::vector<float> coordinates;
+  {
+    // The Points array has no Name: read it as the first binary DataArray
+    // of <Points>.
+    std::ifstream     in(file);
+    std::stringstream b;
+    b << in.rdbuf();
+    std::string text  = b.str();
+    const auto  start = text.find("<Points>");
+    text.replace(text.find("<DataArray", start),
+                 std::strlen("<DataArray"),
+                 "<DataArray Name=\"points\"");
+    std::ofstream tmp("points.vtu");
+    tmp << text;
+  }
+  coordinates = read_array("points.vtu", "points");
+  double a_z  = std::nan("");
+  for (std::size_t k = 0; 3 * k + 2 < coordinates.size(); ++k)
+    if (std::abs(coordinates[3 * k] - 0.1) < 1e-6 &&
+        std::abs(coordinates[3 * k + 1] - 0.05) < 1e-6 &&
+        std::abs(coordinates[3 * k + 2] - 0.01) < 1e-6)
+      a_z = points[3 * k + 2];
+  std::ifstream probes("out/probes.csv");
+  std::string   header, line;
+  std::getline(probes, header);
+  const auto columns = Utilities::split_string_list(header, ',');
+  const auto column =
+    std::find(columns.begin(), columns.end(), "mid_az_m_s2") - columns.begin();
+  double probe = std::nan("");
+  while (std::getline(probes, line))
+    {
+      const auto cells = Utilities::split_string_list(line, ',');
+      if (std::abs(std::stod(cells[0]) - 20.) < 1e-9)
+        probe = std::stod(cells[column]);
+    }
+  const bool same = std::abs(a_z - probe) <= 0.05 + 1e-6 * std::abs(probe);
+  std::printf("mid-plane centre at t = 20 us: VTU a_z = %.1f m/s^2, "
+              "probes.csv mid_az = %.1f m/s^2: %s\n",
+              a_z,
+              probe,
+              same ? "yes" : "NO");
+  const bool ok = rule && same;
+  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+  return ok ? 0 : 1;
+}
