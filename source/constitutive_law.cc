@@ -83,6 +83,39 @@ namespace fgimpact
 
 
 
+  std::pair<double, unsigned int>
+  sampled_layer_error(const FunctionallyGradedMaterial &material,
+                      const double                      h,
+                      const unsigned int                n_layers,
+                      const unsigned int                degree)
+  {
+    const QGauss<1>                 gauss(8);
+    const unsigned int              n_sub = 64; // as layer_projection()
+    std::pair<double, unsigned int> worst{0., 0u};
+    for (unsigned int l = 0; l < n_layers; ++l)
+      {
+        const double z0 = h * l / n_layers, hz = h / n_layers;
+        double       exact = 0;
+        for (unsigned int s = 0; s < n_sub; ++s)
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            exact +=
+              gauss.weight(q) / n_sub *
+              material.properties(z0 + (s + gauss.point(q)[0]) / n_sub * hz).E;
+        const double E0 = material.properties(z0).E,
+                     E1 = material.properties(z0 + hz).E;
+        const double sampled =
+          degree == 1 ?
+            0.5 * (E0 + E1) :
+            (E0 + 4. * material.properties(z0 + 0.5 * hz).E + E1) / 6.;
+        const double error = std::abs(sampled - exact) / exact;
+        if (error > worst.first)
+          worst = {error, l};
+      }
+    return worst;
+  }
+
+
+
   PropertyInterpolator::PropertyInterpolator(
     const FiniteElement<3>           &scalar_fe,
     const std::vector<Point<3>>      &unit_points,

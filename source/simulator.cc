@@ -1,5 +1,6 @@
 #include <deal.II/lac/solver_control.h>
 
+#include <fgimpact/constitutive_law.h>
 #include <fgimpact/modal_analysis.h>
 #include <fgimpact/run_control.h>
 #include <fgimpact/simulator.h>
@@ -234,6 +235,7 @@ namespace fgimpact
       pcout << "  " << parameters.accuracy.log_message << '\n';
     if (!parameters.geometry.symmetry_note.empty())
       pcout << "  " << parameters.geometry.symmetry_note << '\n';
+    warn_sampled_boundary_layer();
     if (parameters.geometry.contact_refinement_levels > 0)
       pcout << "  contact refinement: "
             << parameters.geometry.contact_refinement_levels
@@ -241,6 +243,36 @@ namespace fgimpact
             << " mm of the impact point, smallest element "
             << plate->smallest_cell_size() * 1e6 << " um\n";
     return *plate;
+  }
+
+
+
+  void
+  Simulator::warn_sampled_boundary_layer() const
+  {
+    const auto &m = parameters.material;
+    if (m.property_mode != PropertyMode::graded ||
+        m.graded_nodal_values != GradedNodalValues::sampled)
+      return;
+    const unsigned int layers = parameters.geometry.subdivisions_z;
+    const auto [error, layer] = sampled_layer_error(*material,
+                                                    geometry->thickness(),
+                                                    layers,
+                                                    plate->get_fe().degree);
+    if (error <= 0.25)
+      return;
+    char line[400];
+    std::snprintf(line,
+                  sizeof(line),
+                  "  WARNING: the graded elements' nodal samples of E(z) "
+                  "misread its average over the element layer z = %.3g .. "
+                  "%.3g mm by %.0f %% (a boundary layer thinner than an "
+                  "element); set Material/Graded nodal values = layer "
+                  "average (or Property mode = pointwise).\n",
+                  1e3 * geometry->thickness() * layer / layers,
+                  1e3 * geometry->thickness() * (layer + 1) / layers,
+                  100. * error);
+    pcout << line;
   }
 
 

@@ -87,6 +87,12 @@ namespace fgimpact
     LocalRefinement
     contact_refinement() const;
 
+    /// Graded elements with sampled nodal values: a log warning if they
+    /// misread the profile by more than 25 % in an element layer (a
+    /// boundary layer, n -> 0+), naming the entries that fix it.
+    void
+    warn_sampled_boundary_layer() const;
+
     const Parameters   parameters;
     const MPI_Comm     mpi_communicator;
     ConditionalOStream pcout;

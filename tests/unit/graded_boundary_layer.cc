@@ -16,6 +16,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <fgimpact/constitutive_law.h>
 #include <fgimpact/modal_analysis.h>
 #include <fgimpact/static_analysis.h>
 
@@ -108,6 +109,38 @@ main(int argc, char **argv)
                   pass ? "ok" : "FAILED");
       ok = ok && pass;
     }
+  // sampled_layer_error(), behind the log's warning: closed forms on 4
+  // Q1 layers of the paper's plate (E_m = 70, E_c = 380 GPa).  n = 1: E is
+  // linear, the trapezoid rule exact.  n = 3: the top layer, z/h in
+  // [3/4, 1], mean of x^3 = (1 - (3/4)^4) = 0.68359375 against the
+  // trapezoid's 0.7109375: |dE| / E = 310 (0.02734375) / (380 - 310 x
+  // 0.68359375) = 0.0504299.  n = 1e-6: above 1 in the bottom layer (the
+  // warning's threshold is 0.25).
+  {
+    const auto error = [](const double n) {
+      FunctionallyGradedMaterial::Parameters mp;
+      mp.power_law_index = n;
+      const FunctionallyGradedMaterial material(mp, 0.02);
+      return sampled_layer_error(material, 0.02, 4, 1);
+    };
+    const auto   e1 = error(1.), e3 = error(3.), e0 = error(1e-6);
+    const double closed =
+      310. * 0.02734375 / (380. - 310. * 0.68359375); // n = 3, top layer
+    const bool fine = e1.first < 1e-12 &&
+                      std::abs(e3.first / closed - 1.) < 1e-9 &&
+                      e3.second == 3 && e0.first > 1. && e0.second == 0;
+    std::printf("sampled_layer_error on 4 Q1 layers: n = 1 %.1e, n = 3 %.7f "
+                "in layer %u (closed form %.7f), n = 1e-6 %.2f in layer %u: "
+                "%s\n",
+                e1.first,
+                e3.first,
+                e3.second,
+                closed,
+                e0.first,
+                e0.second,
+                fine ? "yes" : "NO");
+    ok = ok && fine;
+  }
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
   return ok ? 0 : 1;
 }
