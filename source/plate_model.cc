@@ -113,11 +113,30 @@ namespace fgimpact
   void
   PlateModel::assemble_cut_mass_coupling()
   {
-    // The consistent mass couples equal components only; on a cut face
-    // (id 1: x = a/2, id 3: y = b/2) the normal component's DoFs are the
-    // constrained ones.  Hanging nodes on a cut count like the others: in
-    // the whole plate their coupling reaches their masters with weights
-    // summing to 1.
+    // The whole plate's row-sum lumped mass is C_w^T M C_w 1, the part's
+    // condensed mass_matrix() gives C_p^T M C_p 1: the part's constraints
+    // C_p also set the cut's normal DoFs to zero, and with them half of a
+    // hanging node whose coarse edge ends on a cut.  The difference that
+    // restores the whole plate's lumped mass on the part is
+    // C_p^T M (e - C_p 1) with e = C_w 1, the ones under the constraints
+    // of the supports and hanging nodes alone (the whole plate's, which
+    // are mirror-symmetric).  It is non-zero next to the cuts
+    // only (a hanging node's cells need not touch the cut).
+    AffineConstraints<double> whole_plate;
+    make_constraints(whole_plate, /*with_cuts=*/false);
+    TrilinosWrappers::MPI::Vector e_owned, c_owned;
+    initialize_vector(e_owned);
+    initialize_vector(c_owned);
+    e_owned = 1.;
+    c_owned = 1.;
+    whole_plate.distribute(e_owned);
+    constraints.distribute(c_owned);
+    TrilinosWrappers::MPI::Vector difference(locally_owned,
+                                             locally_relevant,
+                                             mpi_communicator);
+    e_owned -= c_owned;
+    difference = e_owned;
+
     const QGauss<3>                      quadrature(fe.degree + 1);
     FEValues<3>                          fe_values(mapping,
                           fe,
@@ -128,27 +147,15 @@ namespace fgimpact
                                     material);
     const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
     Vector<double>                       cell_r(dofs_per_cell);
-    std::vector<bool>                    on_cut(dofs_per_cell);
+    Vector<double>                       cell_d(dofs_per_cell);
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
     std::vector<double>                  E, nu, rho;
     initialize_vector(cut_coupling);
     for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned() && cell->at_boundary())
+      if (cell->is_locally_owned())
         {
-          std::fill(on_cut.begin(), on_cut.end(), false);
-          for (const auto f : cell->face_indices())
-            if (cell->face(f)->at_boundary())
-              {
-                const auto id = cell->face(f)->boundary_id();
-                if ((id == 1 && geometry.is_cut(0)) ||
-                    (id == 3 && geometry.is_cut(1)))
-                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                    if (fe.system_to_component_index(j).first ==
-                          (id == 1 ? 0u : 1u) &&
-                        fe.has_support_on_face(j, f))
-                      on_cut[j] = true;
-              }
-          if (std::find(on_cut.begin(), on_cut.end(), true) == on_cut.end())
+          cell->get_dof_values(difference, cell_d);
+          if (cell_d.linfty_norm() == 0.)
             continue;
           fe_values.reinit(cell);
           properties.values(cell, E, nu, rho);
@@ -156,10 +163,11 @@ namespace fgimpact
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             for (unsigned int i = 0; i < dofs_per_cell; ++i)
               for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                if (on_cut[j] && fe.system_to_component_index(i).first ==
-                                   fe.system_to_component_index(j).first)
+                if (cell_d[j] != 0. && fe.system_to_component_index(i).first ==
+                                         fe.system_to_component_index(j).first)
                   cell_r[i] += rho[q] * fe_values.shape_value(i, q) *
-                               fe_values.shape_value(j, q) * fe_values.JxW(q);
+                               fe_values.shape_value(j, q) * cell_d[j] *
+                               fe_values.JxW(q);
           cell->get_dof_indices(local_dofs);
           constraints.distribute_local_to_global(cell_r,
                                                  local_dofs,
@@ -170,60 +178,68 @@ namespace fgimpact
 
 
 
+  ComponentMask
+  PlateModel::support_mask(const unsigned int face) const
+  {
+    // On x = const faces (ids 0, 1) the tangential in-plane component is
+    // v (index 1); on y = const faces (ids 2, 3) it is u (index 0); on the
+    // bottom (id 4) simply supported constrains w alone.  A symmetry cut
+    // (x = a/2 is id 1, y = b/2 id 3 of the part) is no support.
+    ComponentMask mask(3, false);
+    if (face > 4 || (face == 1 && geometry.is_cut(0)) ||
+        (face == 3 && geometry.is_cut(1)))
+      return mask;
+    const SideSupport support =
+      (face < 4 ? geometry.get_parameters().supports[face] :
+                  geometry.get_parameters().bottom_support);
+    switch (support)
+      {
+        case SideSupport::free:
+          break;
+        case SideSupport::clamped:
+          mask = ComponentMask(3, true);
+          break;
+        case SideSupport::simply_supported:
+          mask.set(2, true);
+          if (face < 4)
+            mask.set(face < 2 ? 1 : 0, true);
+          break;
+      }
+    return mask;
+  }
+
+
+
   void
   PlateModel::setup_constraints()
   {
-    constraints.clear();
-    constraints.reinit(locally_relevant);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    make_constraints(constraints, geometry.is_cut(0) || geometry.is_cut(1));
+  }
 
-    const auto &supports = geometry.get_parameters().supports;
+
+
+  void
+  PlateModel::make_constraints(AffineConstraints<double> &c,
+                               const bool                 with_cuts) const
+  {
+    c.clear();
+    c.reinit(locally_relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, c);
+
     for (unsigned int face = 0; face < 5; ++face)
       {
-        // On x = const faces (ids 0, 1) the tangential in-plane component is
-        // v (index 1); on y = const faces (ids 2, 3) it is u (index 0); on
-        // the bottom (id 4) simply supported constrains w alone.
-        const bool        x_face = (face < 2);
-        const SideSupport support =
-          (face < 4 ? supports[face] :
-                      geometry.get_parameters().bottom_support);
-        ComponentMask mask(3, false);
-        // A symmetry cut (x = a/2 is id 1, y = b/2 id 3 of the part): the
-        // normal displacement vanishes, the tangential ones are free.
-        if ((face == 1 && geometry.is_cut(0)) ||
-            (face == 3 && geometry.is_cut(1)))
-          {
-            mask.set(face == 1 ? 0 : 1, true);
-            VectorTools::interpolate_boundary_values(mapping,
-                                                     dof_handler,
-                                                     face,
-                                                     Functions::ZeroFunction<3>(
-                                                       3),
-                                                     constraints,
-                                                     mask);
-            continue;
-          }
-        switch (support)
-          {
-            case SideSupport::free:
-              continue;
-            case SideSupport::clamped:
-              mask = ComponentMask(3, true);
-              break;
-            case SideSupport::simply_supported:
-              mask.set(2, true);
-              if (face < 4)
-                mask.set(x_face ? 1 : 0, true);
-              break;
-          }
-        VectorTools::interpolate_boundary_values(mapping,
-                                                 dof_handler,
-                                                 face,
-                                                 Functions::ZeroFunction<3>(3),
-                                                 constraints,
-                                                 mask);
+        ComponentMask mask = support_mask(face);
+        // A symmetry cut: the normal displacement vanishes, the tangential
+        // ones are free.
+        if (with_cuts && ((face == 1 && geometry.is_cut(0)) ||
+                          (face == 3 && geometry.is_cut(1))))
+          mask.set(face == 1 ? 0 : 1, true);
+        if (mask.n_selected_components() == 0)
+          continue;
+        VectorTools::interpolate_boundary_values(
+          mapping, dof_handler, face, Functions::ZeroFunction<3>(3), c, mask);
       }
-    constraints.close();
+    c.close();
   }
 
 

@@ -82,10 +82,11 @@ namespace fgimpact
 
     /**
      * On a symmetric part (Geometry/Symmetry): row sums of the mass
-     * couplings to the DoFs the cuts constrain (u_x on x = a/2, u_y on
-     * y = b/2), which the condensed mass_matrix() drops and the whole
-     * plate's keeps; mass_matrix() 1 plus this vector is the whole plate's
-     * row-sum lumped mass restricted to the part.  Empty without cuts.
+     * couplings the cuts remove (to u_x on x = a/2 and u_y on y = b/2, and
+     * to the hanging nodes they constrain through them), which the
+     * condensed mass_matrix() drops and the whole plate's keeps;
+     * mass_matrix() 1 plus this vector is the whole plate's row-sum lumped
+     * mass restricted to the part.  Empty without cuts.
      */
     const TrilinosWrappers::MPI::Vector &
     cut_mass_coupling() const
@@ -190,8 +191,17 @@ namespace fgimpact
                    const unsigned int component,
                    const bool         boundary_cells_only) const;
 
+    /// The components a support fixes on boundary face id (0-4); none on
+    /// a free face, a symmetry cut or the top.
+    ComponentMask
+    support_mask(const unsigned int face) const;
+
     void
     setup_constraints();
+
+    /// Hanging nodes and supports into c, and with_cuts the symmetry cuts.
+    void
+    make_constraints(AffineConstraints<double> &c, const bool with_cuts) const;
     void
     assemble();
 

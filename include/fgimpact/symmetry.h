@@ -16,8 +16,9 @@ namespace fgimpact
    * the subdivisions across it are even (so the cut runs along element
    * faces and the impact node lies on it); the material varies through the
    * thickness only.  A modal problem is never cut (its modes of the other
-   * symmetry classes would be missing), nor an explicit run (its lumped
-   * mass next to a cut differs from the whole plate's at 1e-5).  auto takes
+   * symmetry classes would be missing), nor an explicit run with the
+   * automatic step (a part's stable step sees its symmetric modes only;
+   * at a given step its history is the whole plate's).  auto takes
    * every symmetry plane, half the first of x and y that is one, quarter both;
    * half and quarter throw ExcMessage naming what breaks the symmetry.
    */

@@ -2,7 +2,8 @@
 // scene against the whole plate (an independent computation on 2 or 4
 // times the mesh): every history.csv column and every physical summary
 // entry equal to 1e-9 relative (relative to the column's largest value),
-// for the Hertz node contact (implicit, with local refinement),
+// for the Hertz node contact (implicit, and explicit at a given step, with
+// local refinement),
 // the Hertz mid-plane contact and the resolved sphere with two levels of
 // local refinement; static point and sphere loads; and the one-line
 // refusals naming what breaks the symmetry.  The largest differences are
@@ -236,6 +237,12 @@ main(int argc, char **argv)
                      "end\nsubsection Time integration\n set Time step = 1e-6\n"
                      " set End time = 150e-6\nend\n") &&
        ok;
+  ok = compare_scene("hertz node, explicit, dt = 0.25 us, 1 refinement level",
+                     "subsection Geometry\n set Contact refinement levels = 1\n"
+                     "end\nsubsection Time integration\n set Scheme = "
+                     "explicit\n set Time step = 0.25e-6\n"
+                     " set End time = 150e-6\nend\n") &&
+       ok;
   ok = compare_scene("hertz midplane, implicit",
                      "subsection Contact\n set Model = hertz midplane\nend\n"
                      "subsection Time integration\n set Time step = 1e-6\n"
@@ -271,8 +278,9 @@ main(int argc, char **argv)
      " set Subdivisions y = 7\nend\n",
      "Subdivisions y = 7"},
     {"subsection Geometry\n set Symmetry = quarter\nend\n"
-     "subsection Time integration\n set Scheme = explicit\nend\n",
-     "Scheme = explicit"},
+     "subsection Time integration\n set Scheme = explicit\n"
+     " set Time step = 0\nend\n",
+     "Scheme = explicit with Time step = 0"},
     {"set Problem type = modal\nsubsection Geometry\n set Symmetry = "
      "quarter\nend\n",
      "modal"},
