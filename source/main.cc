@@ -230,37 +230,65 @@ main(int argc, char *argv[])
     {
       Simulator simulator(parameters, MPI_COMM_WORLD);
       simulator.set_checkpointing(checkpoint);
+      const bool validate = options.action == CommandLine::Action::validate;
+      // Rank 0 prepares the directory and writes the start files; every
+      // rank learns the outcome, so that all stop together.
+      const auto start_files = [&]() {
+        run_on_root(MPI_COMM_WORLD, [&]() {
+          start_run_files(parameters.output,
+                          argc,
+                          argv,
+                          logger,
+                          prm,
+                          *input,
+                          !options.resume_directory.empty());
+        });
+      };
       // Everything that can fail on bad input is checked before any file
-      // is written: setup() writes nothing.  Rank 0 prepares the directory
-      // and writes the start files; every rank learns the outcome, so that
-      // all stop together.
+      // is written: setup() writes nothing.  A numerical failure of the
+      // valid input there (a factorization, a solver) is a failed run: the
+      // start files and summary.txt (status = failed), as in the time loop
+      // (--validate writes nothing).
       try
         {
           simulator.setup();
-          if (options.action == CommandLine::Action::validate)
-            {
-              if (root)
-                std::cout << "fgimpact: " << input->input_name()
-                          << " is valid (checked and set up; nothing run, "
-                             "nothing written)\n"
-                          << "  "
-                          << simulator.get_resource_estimate().describe()
-                          << '\n';
-              return 0;
-            }
-          run_on_root(MPI_COMM_WORLD, [&]() {
-            start_run_files(parameters.output,
-                            argc,
-                            argv,
-                            logger,
-                            prm,
-                            *input,
-                            !options.resume_directory.empty());
-          });
         }
       catch (...)
         {
-          return report_failure(std::current_exception(), root, 1);
+          const std::exception_ptr failure = std::current_exception();
+          if (is_run_failure(failure) && !validate)
+            try
+              {
+                start_files();
+                simulator.write_failed_summary();
+              }
+            catch (...)
+              {}
+          return report_failure(failure, root, 1);
+        }
+      if (validate)
+        {
+          if (root)
+            std::cout << "fgimpact: " << input->input_name()
+                      << " is valid (checked and set up; nothing run, "
+                         "nothing written)\n"
+                      << "  " << simulator.get_resource_estimate().describe()
+                      << '\n';
+          return 0;
+        }
+      // An unusable directory is bad input (exit code 1, nothing written);
+      // a start file that cannot be written an I/O failure (exit code 2,
+      // summary.txt failed if it can still be written).
+      try
+        {
+          start_files();
+        }
+      catch (...)
+        {
+          const std::exception_ptr failure = std::current_exception();
+          if (is_run_failure(failure))
+            simulator.write_failed_summary();
+          return report_failure(failure, root, 1);
         }
       simulator.run();
       if (root)
