@@ -13,6 +13,7 @@
 #include <fgimpact/simulator.h>
 #include <fgimpact/study.h>
 
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -165,6 +166,31 @@ namespace
       });
     return checkpoint;
   }
+
+
+  /**
+   * A failure before the time loop: bad input (exit code 1) writes
+   * nothing; a failed run of valid input (a numerical failure in set-up, a
+   * start file that cannot be written: exit code 2) writes the start files
+   * (start_files, empty when nothing may be written or they were tried)
+   * and summary.txt with status = failed, as far as it can.
+   */
+  int
+  fail_before_run(const std::exception_ptr    &failure,
+                  const fgimpact::Simulator   &simulator,
+                  const std::function<void()> &start_files,
+                  const bool                   root)
+  {
+    if (fgimpact::is_run_failure(failure) && start_files)
+      try
+        {
+          start_files();
+          simulator.write_failed_summary();
+        }
+      catch (...)
+        {}
+    return fgimpact::report_failure(failure, root, 1);
+  }
 } // namespace
 
 
@@ -255,16 +281,11 @@ main(int argc, char *argv[])
         }
       catch (...)
         {
-          const std::exception_ptr failure = std::current_exception();
-          if (is_run_failure(failure) && !validate)
-            try
-              {
-                start_files();
-                simulator.write_failed_summary();
-              }
-            catch (...)
-              {}
-          return report_failure(failure, root, 1);
+          return fail_before_run(std::current_exception(),
+                                 simulator,
+                                 validate ? std::function<void()>() :
+                                            std::function<void()>(start_files),
+                                 root);
         }
       if (validate)
         {
@@ -285,10 +306,8 @@ main(int argc, char *argv[])
         }
       catch (...)
         {
-          const std::exception_ptr failure = std::current_exception();
-          if (is_run_failure(failure))
-            simulator.write_failed_summary();
-          return report_failure(failure, root, 1);
+          return fail_before_run(
+            std::current_exception(), simulator, [] {}, root);
         }
       simulator.run();
       if (root)
