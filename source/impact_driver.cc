@@ -1,12 +1,14 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <fgimpact/impact_driver.h>
+#include <fgimpact/impact_summary.h>
 #include <fgimpact/run_control.h>
 #include <fgimpact/simulator.h>
 
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <limits>
 
 namespace fgimpact
 {
@@ -141,6 +143,14 @@ namespace fgimpact
                       std::to_string(parameters.linear_solver.max_iterations) +
                       ") or use Linear solver/Type = auto."));
       }
+    catch (const ExcNumericalFailure &e)
+      {
+        // The factorization: name the phase.
+        AssertThrow(false,
+                    ExcNumericalFailure("during set-up (the effective matrix "
+                                        "of the time stepper): " +
+                                        message_of(e)));
+      }
     results.factorization_time = factorization_timer.wall_time();
     results.spmv_time          = stepper->costs().spmv;
     results.solve_time         = stepper->costs().solve;
@@ -213,15 +223,14 @@ namespace fgimpact
     const Point<2>       p = impactor.impact_point(g.length(), g.width());
     monitor->add_contact_output(Point<3>(p[0], p[1], g.thickness()),
                                 impactor.radius());
+    // Rank 0 alone has opened history.csv (and probes.csv): every rank
+    // learns whether that worked before the first collective output.
+    stop_on_output_failure(resume ? resume->step : 0, 0.);
     // Plain timers (not TimerOutput, whose destructor writes to the screen
     // when an exception such as a Newton failure is on its way out).  The
     // loop timer includes the initial state's output, which the monitor
     // counts as output time (time_loop_s = loop - output stays >= 0).
     Timer loop_timer;
-    if (resume)
-      monitor->resume_output(resume->step, resume->step * dt, *stepper);
-    else
-      monitor->record(0, 0., *stepper, ball, contact_state);
 
     // SIGINT/SIGTERM and failed writes are looked at once per step, agreed
     // over the ranks (one all-reduce of an int), so all stop together.
@@ -232,6 +241,10 @@ namespace fgimpact
     std::string        checkpoint_failure;
     try
       {
+        if (resume)
+          monitor->resume_output(resume->step, resume->step * dt, *stepper);
+        else
+          monitor->record(0, 0., *stepper, ball, contact_state);
         while (steps_done < n_steps && stop == 0)
           {
             timestep = steps_done + 1;
@@ -260,18 +273,7 @@ namespace fgimpact
       }
     loop_timer.stop();
     if (stop < 0)
-      {
-        // A failed write (disk full): summary.txt marked failed if it can
-        // still be written, then one line naming the file, which rank 0
-        // learns from the failing rank (all ranks are here together).
-        finish_failed_run(steps_done, loop_timer.wall_time());
-        std::string message;
-        for (const auto &m :
-             Utilities::MPI::all_gather(comm, monitor->output_failure()))
-          if (message.empty())
-            message = m;
-        AssertThrow(false, ExcOutputFailure(message));
-      }
+      stop_on_output_failure(steps_done, loop_timer.wall_time());
 
     monitor->finish(ball,
                     steps_done,
@@ -303,6 +305,49 @@ namespace fgimpact
       }
     catch (...)
       {}
+  }
+
+
+
+  void
+  ImpactDriver::stop_on_output_failure(const unsigned int steps_done,
+                                       const double       loop_time)
+  {
+    const MPI_Comm comm = plate.get_mpi_communicator();
+    if (agreed_stop(comm, !monitor->output_failure().empty()) >= 0)
+      return;
+    // A failed write (disk full): summary.txt marked failed if it can
+    // still be written, then one line naming the file, which rank 0
+    // learns from the failing rank (all ranks are here together).
+    finish_failed_run(steps_done, loop_time);
+    std::string message;
+    for (const auto &m :
+         Utilities::MPI::all_gather(comm, monitor->output_failure()))
+      if (message.empty())
+        message = m;
+    AssertThrow(false, ExcOutputFailure(message));
+  }
+
+
+
+  void
+  ImpactDriver::write_failed_summary() const
+  {
+    if (monitor || !checkpoint_settings.resume_directory.empty() ||
+        Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
+      return;
+    // The time history has not started: its maxima are 0, and the ball
+    // has not left (contact_duration and departure_velocity are none).
+    ImpactResults r      = results;
+    r.contact_duration   = std::numeric_limits<double>::quiet_NaN();
+    r.departure_velocity = std::numeric_limits<double>::quiet_NaN();
+    r.wall_time          = total_timer.wall_time();
+    write_impact_summary(parameters.output.directory + "/summary.txt",
+                         r,
+                         contact && contact->reports_contact_area(),
+                         parameters.output.instrumentation,
+                         "failed",
+                         0.);
   }
 
 

@@ -5,6 +5,7 @@
 
 #include <fgimpact/linear_solver.h>
 #include <fgimpact/resources.h>
+#include <fgimpact/run_control.h>
 
 #include <Epetra_CrsMatrix.h>
 #include <algorithm>
@@ -68,10 +69,15 @@ namespace fgimpact
       A = cholmod_triplet_to_sparse(T, T->nnz, &common);
       cholmod_free_triplet(&T, &common);
       factor = cholmod_analyze(A, &common);
+      // Valid input that the machine cannot handle (CHOLMOD's status is
+      // then mostly "out of memory"): a numerical failure, exit code 2.
       AssertThrow(common.status == CHOLMOD_OK && factor != nullptr,
-                  ExcMessage("CHOLMOD's symbolic analysis of the effective "
-                             "matrix failed (status " +
-                             std::to_string(common.status) + ")."));
+                  ExcNumericalFailure(
+                    "CHOLMOD's symbolic analysis of the effective matrix "
+                    "failed (status " +
+                    std::to_string(common.status) +
+                    "); use a coarser Geometry/Subdivisions or Linear "
+                    "solver/Type = cg."));
     }
 
     /// Entries of L (CHOLMOD's count after the symbolic analysis).
@@ -99,9 +105,22 @@ namespace fgimpact
       const size_t n = A->nrow;
       cholmod_factorize(A, factor, &common);
       cholmod_free_sparse(&A, &common);
+      // minor < n: a pivot that is not positive (the matrix is not
+      // positive definite); otherwise CHOLMOD ran out of memory.
       AssertThrow(common.status == CHOLMOD_OK && factor->minor == n,
-                  ExcMessage("CHOLMOD could not factorize the effective "
-                             "matrix (not positive definite?)."));
+                  ExcNumericalFailure(
+                    factor->minor < n ?
+                      "CHOLMOD could not factorize the effective matrix "
+                      "(not positive definite at column " +
+                        std::to_string(factor->minor) + " of " +
+                        std::to_string(n) +
+                        "); check the Boundary conditions and Material, "
+                        "or use Linear solver/Type = mumps." :
+                      "CHOLMOD could not factorize the effective matrix "
+                      "(status " +
+                        std::to_string(common.status) +
+                        "); use a coarser Geometry/Subdivisions or Linear "
+                        "solver/Type = cg."));
     }
 
     /// x = A^{-1} b for arrays of n x k (k columns, one after another).

@@ -13,6 +13,7 @@
 #include <fgimpact/simulator.h>
 #include <fgimpact/study.h>
 
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <sstream>
@@ -165,6 +166,31 @@ namespace
       });
     return checkpoint;
   }
+
+
+  /**
+   * A failure before the time loop: bad input (exit code 1) writes
+   * nothing; a failed run of valid input (a numerical failure in set-up, a
+   * start file that cannot be written: exit code 2) writes the start files
+   * (start_files, empty when nothing may be written or they were tried)
+   * and summary.txt with status = failed, as far as it can.
+   */
+  int
+  fail_before_run(const std::exception_ptr    &failure,
+                  const fgimpact::Simulator   &simulator,
+                  const std::function<void()> &start_files,
+                  const bool                   root)
+  {
+    if (fgimpact::is_run_failure(failure) && start_files)
+      try
+        {
+          start_files();
+          simulator.write_failed_summary();
+        }
+      catch (...)
+        {}
+    return fgimpact::report_failure(failure, root, 1);
+  }
 } // namespace
 
 
@@ -230,37 +256,58 @@ main(int argc, char *argv[])
     {
       Simulator simulator(parameters, MPI_COMM_WORLD);
       simulator.set_checkpointing(checkpoint);
+      const bool validate = options.action == CommandLine::Action::validate;
+      // Rank 0 prepares the directory and writes the start files; every
+      // rank learns the outcome, so that all stop together.
+      const auto start_files = [&]() {
+        run_on_root(MPI_COMM_WORLD, [&]() {
+          start_run_files(parameters.output,
+                          argc,
+                          argv,
+                          logger,
+                          prm,
+                          *input,
+                          !options.resume_directory.empty());
+        });
+      };
       // Everything that can fail on bad input is checked before any file
-      // is written: setup() writes nothing.  Rank 0 prepares the directory
-      // and writes the start files; every rank learns the outcome, so that
-      // all stop together.
+      // is written: setup() writes nothing.  A numerical failure of the
+      // valid input there (a factorization, a solver) is a failed run: the
+      // start files and summary.txt (status = failed), as in the time loop
+      // (--validate writes nothing).
       try
         {
           simulator.setup();
-          if (options.action == CommandLine::Action::validate)
-            {
-              if (root)
-                std::cout << "fgimpact: " << input->input_name()
-                          << " is valid (checked and set up; nothing run, "
-                             "nothing written)\n"
-                          << "  "
-                          << simulator.get_resource_estimate().describe()
-                          << '\n';
-              return 0;
-            }
-          run_on_root(MPI_COMM_WORLD, [&]() {
-            start_run_files(parameters.output,
-                            argc,
-                            argv,
-                            logger,
-                            prm,
-                            *input,
-                            !options.resume_directory.empty());
-          });
         }
       catch (...)
         {
-          return report_failure(std::current_exception(), root, 1);
+          return fail_before_run(std::current_exception(),
+                                 simulator,
+                                 validate ? std::function<void()>() :
+                                            std::function<void()>(start_files),
+                                 root);
+        }
+      if (validate)
+        {
+          if (root)
+            std::cout << "fgimpact: " << input->input_name()
+                      << " is valid (checked and set up; nothing run, "
+                         "nothing written)\n"
+                      << "  " << simulator.get_resource_estimate().describe()
+                      << '\n';
+          return 0;
+        }
+      // An unusable directory is bad input (exit code 1, nothing written);
+      // a start file that cannot be written an I/O failure (exit code 2,
+      // summary.txt failed if it can still be written).
+      try
+        {
+          start_files();
+        }
+      catch (...)
+        {
+          return fail_before_run(
+            std::current_exception(), simulator, [] {}, root);
         }
       simulator.run();
       if (root)

@@ -195,8 +195,10 @@ namespace fgimpact
           break;
       }
     AssertThrow(iterations <= parameters.max_iterations,
-                ExcMessage("Modal/Max iterations reached before the "
-                           "frequencies converged."));
+                ExcNumericalFailure(
+                  "no convergence within Modal/Max iterations = " +
+                  std::to_string(parameters.max_iterations) +
+                  "; raise it or loosen Modal/Tolerance."));
 
     modes.clear();
     shapes.clear();
@@ -221,30 +223,31 @@ namespace fgimpact
     const DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression,
     const VtuFields                                  &fields) const
   {
-    if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
-      {
-        std::string   csv = "mode, frequency_Hz, w_energy_fraction\n";
-        SummaryWriter summary;
-        summary.add_text("status", "completed");
-        char line[200];
-        for (unsigned int j = 0; j < modes.size(); ++j)
-          {
-            std::snprintf(line,
-                          sizeof(line),
-                          "%u, %.4f, %.6f\n",
-                          j + 1,
-                          modes[j].frequency,
-                          modes[j].w_fraction);
-            csv += line;
-            summary.add("frequency_" + std::to_string(j + 1) + "_Hz",
+    // Rank 0 writes, every rank learns the outcome before the collective
+    // VTU output (a failure on rank 0 alone must not leave rank 1 waiting).
+    run_on_root(plate.get_mpi_communicator(), [&]() {
+      std::string   csv = "mode, frequency_Hz, w_energy_fraction\n";
+      SummaryWriter summary;
+      summary.add_text("status", "completed");
+      char line[200];
+      for (unsigned int j = 0; j < modes.size(); ++j)
+        {
+          std::snprintf(line,
+                        sizeof(line),
+                        "%u, %.4f, %.6f\n",
+                        j + 1,
                         modes[j].frequency,
-                        4);
-          }
-        summary.add("n_dofs", plate.n_dofs(), 0);
-        summary.add("subspace_iterations", iterations, 0);
-        write_file_atomically(directory + "/frequencies.csv", csv);
-        summary.write(directory + "/summary.txt");
-      }
+                        modes[j].w_fraction);
+          csv += line;
+          summary.add("frequency_" + std::to_string(j + 1) + "_Hz",
+                      modes[j].frequency,
+                      4);
+        }
+      summary.add("n_dofs", plate.n_dofs(), 0);
+      summary.add("subspace_iterations", iterations, 0);
+      write_file_atomically(directory + "/frequencies.csv", csv);
+      summary.write(directory + "/summary.txt");
+    });
     // Mode shapes scaled to a unit maximum displacement, as VTU "time"
     // steps 1..N, the mode numbers (ParaView's time bar then steps through
     // the modes), with the frequency as the field frequency_Hz.

@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fgimpact/impact_summary.h>
 #include <fgimpact/monitor.h>
 #include <fgimpact/run_control.h>
 
@@ -154,25 +155,33 @@ namespace fgimpact
                      contact_area_columns().end());
     if (resume)
       load(*resume);
-    if (root)
-      {
-        std::vector<std::pair<std::string, int>> header;
-        for (const auto &column : columns)
-          header.emplace_back(column.name, column.decimals);
-        history =
-          std::make_unique<CsvWriter>(parameters.directory + "/history.csv",
-                                      header,
-                                      history_length);
-      }
     if (!parameters.probe_points.points.empty())
-      {
-        probe_set =
-          std::make_unique<ProbeSet>(plate, parameters.probe_points.points);
-        if (root)
-          probe_csv =
-            std::make_unique<CsvWriter>(parameters.directory + "/probes.csv",
-                                        probe_set->columns());
-      }
+      probe_set =
+        std::make_unique<ProbeSet>(plate, parameters.probe_points.points);
+    // Rank 0 alone opens the CSV files: a failure (disk full, a resumed
+    // file too short) is kept in output_failure() as in record(), for the
+    // driver to agree on over the ranks before any collective output.
+    if (root)
+      try
+        {
+          std::vector<std::pair<std::string, int>> header;
+          for (const auto &column : columns)
+            header.emplace_back(column.name, column.decimals);
+          history =
+            std::make_unique<CsvWriter>(parameters.directory + "/history.csv",
+                                        header,
+                                        history_length);
+          if (probe_set)
+            probe_csv =
+              std::make_unique<CsvWriter>(parameters.directory + "/probes.csv",
+                                          probe_set->columns());
+        }
+      catch (const ExceptionBase &e)
+        {
+          output_failure_message = message_of(e);
+          history.reset();
+          probe_csv.reset();
+        }
     if (parameters.vtu_interval > 0)
       vtu = std::make_unique<VtuWriter>(plate,
                                         parameters.directory,
@@ -589,58 +598,12 @@ namespace fgimpact
   ImpactMonitor::write_summary(const std::string &status,
                                const double       t_end) const
   {
-    if (!root)
-      return;
-    const ImpactResults &r = impact_results;
-    SummaryWriter        out;
-    // completed, interrupted (SIGINT/SIGTERM) or failed, and the time
-    // the results cover.  contact_duration_us and departure_velocity_m_s
-    // are `none` while the ball has not left the plate.
-    out.add_text("status", status);
-    out.add("time_reached_us", t_end * 1e6, 4);
-    out.add("peak_contact_force_N", r.peak_contact_force, 4);
-    out.add("max_sampled_contact_force_N", r.max_sampled_force, 4);
-    out.add("time_of_peak_force_us", r.time_of_peak_force * 1e6, 4);
-    out.add("contact_duration_us", r.contact_duration * 1e6, 4);
-    out.add("departure_velocity_m_s", r.departure_velocity, 7);
-    out.add("max_indentation_um", r.max_indentation * 1e6, 5);
-    out.add("max_midplane_deflection_um", r.max_midplane_deflection * 1e6, 5);
-    out.add("max_top_deflection_um", r.max_top_deflection * 1e6, 5);
-    out.add_scientific("contact_stiffness_Kh_N_m1.5", r.contact_stiffness);
-    out.add_scientific("contact_modulus_Q_Pa", r.contact_modulus);
-    out.add("impactor_mass_kg", r.impactor_mass, 8);
-    out.add("plate_mass_kg", r.plate_mass, 8);
-    out.add("impulse_N_s", r.impulse, 9);
-    out.add("contact_node_offset_mm", r.contact_node_offset * 1e3, 6);
-    if (contact_model.reports_contact_area())
-      {
-        out.add("max_contact_radius_mm", r.max_contact_radius * 1e3, 5);
-        out.add("max_contact_pressure_MPa", r.max_contact_pressure * 1e-6, 4);
-        out.add("max_contact_nodes", r.max_contact_nodes, 0);
-        out.add("n_contact_candidates", r.n_contact_candidates, 0);
-      }
-    out.add("n_impacts", r.n_impacts, 0);
-    out.add("n_dofs", r.n_dofs, 0);
-    out.add("n_mpi_ranks", r.n_mpi_ranks, 0);
-    out.add("n_time_steps", r.n_time_steps, 0);
-    out.add("max_newton_iterations", r.max_newton_iterations, 0);
-    out.add("linear_solver_iterations", r.linear_iterations, 0);
-    out.add("max_linear_solver_iterations", r.max_linear_iterations, 0);
-    out.add_scientific("max_relative_energy_drift", r.max_energy_drift);
-    out.add_scientific("impulse_identity_error", r.impulse_identity_error);
-    out.add("setup_s", r.setup_time, 3);
-    out.add("factorization_s", r.factorization_time, 3);
-    out.add("time_loop_s", r.time_loop_time, 3);
-    out.add("time_per_step_ms",
-            1e3 * r.time_loop_time / std::max(r.n_time_steps, 1u),
-            4);
-    out.add("output_s", r.output_time, 3);
-    if (parameters.instrumentation)
-      {
-        out.add("spmv_ms", 1e3 * r.spmv_time, 4);
-        out.add("solve_ms", 1e3 * r.solve_time, 4);
-      }
-    out.add("wall_time_s", r.wall_time, 3);
-    out.write(parameters.directory + "/summary.txt");
+    if (root)
+      write_impact_summary(parameters.directory + "/summary.txt",
+                           impact_results,
+                           contact_model.reports_contact_area(),
+                           parameters.instrumentation,
+                           status,
+                           t_end);
   }
 } // namespace fgimpact

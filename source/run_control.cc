@@ -50,11 +50,11 @@ namespace fgimpact
         name.resize(name.size() - 4);
       // log.txt too: the cleaning happens before this run opens its own.
       if (name == "history.csv" || name == "probes.csv" ||
-          name == "summary.txt" ||
-          name == "parameters.prm" || name == "frequencies.csv" ||
-          name == "solution.pvd" || name == "log.txt" || name == "input.prm" ||
-          name == "sphere.pvd" || name == "contact.pvd" ||
-          name == "contact_pressure.csv" || name == "peak_fields.pvtu")
+          name == "summary.txt" || name == "parameters.prm" ||
+          name == "frequencies.csv" || name == "solution.pvd" ||
+          name == "log.txt" || name == "input.prm" || name == "sphere.pvd" ||
+          name == "contact.pvd" || name == "contact_pressure.csv" ||
+          name == "peak_fields.pvtu")
         return true;
       for (const std::string series :
            {"solution_", "sphere_", "contact_", "peak_fields."})
@@ -159,6 +159,37 @@ namespace fgimpact
     if (root)
       std::cerr << "fgimpact: " << prefix << text << std::endl;
     return code;
+  }
+
+
+
+  bool
+  is_run_failure(const std::exception_ptr &failure)
+  {
+    try
+      {
+        std::rethrow_exception(failure);
+      }
+    catch (const SolverControl::NoConvergence &)
+      {
+        return true;
+      }
+    catch (const ExcNumericalFailure &)
+      {
+        return true;
+      }
+    catch (const ExcOutputFailure &)
+      {
+        return true;
+      }
+    catch (const std::bad_alloc &)
+      {
+        return true;
+      }
+    catch (...)
+      {
+        return false;
+      }
   }
 
 

@@ -2,6 +2,7 @@
 
 #include <fgimpact/constitutive_law.h>
 #include <fgimpact/modal_analysis.h>
+#include <fgimpact/postprocessing.h>
 #include <fgimpact/run_control.h>
 #include <fgimpact/simulator.h>
 #include <fgimpact/static_analysis.h>
@@ -29,6 +30,18 @@ namespace fgimpact
       setup() override
       {}
 
+      /// Only the status and the problem size: the results do not exist.
+      void
+      write_failed_summary() const override
+      {
+        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
+          return;
+        SummaryWriter out;
+        out.add_text("status", "failed");
+        out.add("n_dofs", plate.n_dofs(), 0);
+        out.write(parameters.output.directory + "/summary.txt");
+      }
+
     protected:
       /// Run solve(), turning a linear solver failure into one line that
       /// names the phase and the parameter.
@@ -51,6 +64,13 @@ namespace fgimpact
                           std::to_string(
                             parameters.linear_solver.max_iterations) +
                           ") or use Linear solver/Type = auto."));
+          }
+        catch (const ExcNumericalFailure &e)
+          {
+            // A factorization, or the modal iteration: name the phase.
+            AssertThrow(false,
+                        ExcNumericalFailure("in the " + phase + ": " +
+                                            message_of(e)));
           }
       }
 
@@ -318,7 +338,40 @@ namespace fgimpact
   {
     if (!driver)
       setup();
-    driver->run();
+    try
+      {
+        driver->run();
+      }
+    catch (...)
+      {
+        // The impact driver writes its own failed summary once its outputs
+        // exist; otherwise summary.txt says failed here.
+        write_failed_summary();
+        throw;
+      }
+  }
+
+
+
+  void
+  Simulator::write_failed_summary() const
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    // Best effort: the failure being reported is the one that counts.
+    try
+      {
+        if (driver)
+          driver->write_failed_summary();
+        else
+          {
+            SummaryWriter out;
+            out.add_text("status", "failed");
+            out.write(parameters.output.directory + "/summary.txt");
+          }
+      }
+    catch (...)
+      {}
   }
 
 

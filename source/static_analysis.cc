@@ -7,6 +7,7 @@
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/probes.h>
 #include <fgimpact/resolved_contact.h>
+#include <fgimpact/run_control.h>
 #include <fgimpact/static_analysis.h>
 
 #include <cmath>
@@ -244,7 +245,8 @@ namespace fgimpact
         out << line;
       }
     AssertThrow(out.good(),
-                ExcMessage("cannot write " + file_name + " (disk full?)"));
+                ExcOutputFailure("cannot write " + file_name +
+                                 " (disk full or I/O error)."));
   }
 
 
@@ -255,39 +257,40 @@ namespace fgimpact
     const DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression,
     const VtuFields                                  &fields) const
   {
-    if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
-      {
-        SummaryWriter     out;
-        const std::string where[3] = {"bottom", "mid", "top"};
-        out.add_text("status", "completed");
-        for (unsigned int k = 0; k < 3; ++k)
-          out.add("static_deflection_" + where[k] + "_um",
-                  results.deflection[k] * 1e6,
+    // Rank 0 writes, every rank learns the outcome before the collective
+    // VTU output (a failure on rank 0 alone must not leave rank 1 waiting).
+    run_on_root(plate.get_mpi_communicator(), [&]() {
+      SummaryWriter     out;
+      const std::string where[3] = {"bottom", "mid", "top"};
+      out.add_text("status", "completed");
+      for (unsigned int k = 0; k < 3; ++k)
+        out.add("static_deflection_" + where[k] + "_um",
+                results.deflection[k] * 1e6,
+                6);
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          out.add("sigma_xx_" + where[k] + "_MPa",
+                  results.sigma_xx[k] * 1e-6,
                   6);
-        for (unsigned int k = 0; k < 3; ++k)
-          {
-            out.add("sigma_xx_" + where[k] + "_MPa",
-                    results.sigma_xx[k] * 1e-6,
-                    6);
-            out.add("sigma_yy_" + where[k] + "_MPa",
-                    results.sigma_yy[k] * 1e-6,
-                    6);
-            out.add("sigma_zz_" + where[k] + "_MPa",
-                    results.sigma_zz[k] * 1e-6,
-                    6);
-          }
-        if (parameters.load == Load::sphere)
-          {
-            out.add("static_indentation_um", parameters.indentation * 1e6, 6);
-            out.add("static_contact_force_N", results.contact_force, 6);
-            out.add("contact_radius_mm", results.contact_radius * 1e3, 6);
-            out.add("max_contact_pressure_MPa", results.max_pressure * 1e-6, 6);
-            out.add("n_contact_nodes", results.n_contact_nodes, 0);
-            write_pressure_csv(directory + "/contact_pressure.csv");
-          }
-        out.add("n_dofs", results.n_dofs, 0);
-        out.write(directory + "/summary.txt");
-      }
+          out.add("sigma_yy_" + where[k] + "_MPa",
+                  results.sigma_yy[k] * 1e-6,
+                  6);
+          out.add("sigma_zz_" + where[k] + "_MPa",
+                  results.sigma_zz[k] * 1e-6,
+                  6);
+        }
+      if (parameters.load == Load::sphere)
+        {
+          out.add("static_indentation_um", parameters.indentation * 1e6, 6);
+          out.add("static_contact_force_N", results.contact_force, 6);
+          out.add("contact_radius_mm", results.contact_radius * 1e3, 6);
+          out.add("max_contact_pressure_MPa", results.max_pressure * 1e-6, 6);
+          out.add("n_contact_nodes", results.n_contact_nodes, 0);
+          write_pressure_csv(directory + "/contact_pressure.csv");
+        }
+      out.add("n_dofs", results.n_dofs, 0);
+      out.write(directory + "/summary.txt");
+    });
     TrilinosWrappers::MPI::Vector zero;
     plate.initialize_vector(zero);
     VtuWriter vtu(plate, directory, vtu_compression, fields);

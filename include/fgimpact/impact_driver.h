@@ -35,6 +35,12 @@ namespace fgimpact
 
     virtual void
     run() = 0;
+
+    /// Rank 0, after a failure that left no summary.txt behind (in set-up,
+    /// or in run() before its own outputs): summary.txt with status =
+    /// failed.  Throws ExcOutputFailure if it cannot be written.
+    virtual void
+    write_failed_summary() const = 0;
   };
 
 
@@ -58,6 +64,13 @@ namespace fgimpact
 
     void
     run() override;
+
+    /// Every summary.txt key, with the set-up's entries (masses, DoFs,
+    /// contact constants) and time_reached_us = 0; nothing when the
+    /// monitor exists (it wrote its own) or when resuming (the run being
+    /// continued keeps its files).
+    void
+    write_failed_summary() const override;
 
     /// Subscribe to the history rows (before run()).
     void
@@ -96,6 +109,13 @@ namespace fgimpact
     /// (best effort: errors here are swallowed, the first one counts).
     void
     finish_failed_run(const unsigned int steps_done, const double loop_time);
+
+    /// Collective: if an output write failed on any rank, finish the run
+    /// as failed and throw ExcOutputFailure with the first failing rank's
+    /// message on every rank.
+    void
+    stop_on_output_failure(const unsigned int steps_done,
+                           const double       loop_time);
 
     const Parameters  &parameters;
     const PlateModel  &plate;

@@ -18,7 +18,8 @@ namespace fgimpact
    * @name What a run does when it cannot go on
    *
    * Exit codes of the executable: 0 completed, 1 bad input (nothing
-   * written), 2 numerical or I/O failure during the run, 128 + signal
+   * written), 2 numerical or I/O failure during set-up or the run (with
+   * summary.txt marked failed where it can be written), 128 + signal
    * number when SIGINT or SIGTERM stopped the time loop.
    */
   /** @{ */
@@ -63,6 +64,12 @@ namespace fgimpact
                  const bool                root,
                  const int                 default_code,
                  const std::string        &context = "error");
+
+  /// Whether the failure is one of a valid run (numerical, I/O, out of
+  /// memory: exit code 2, with summary.txt marked failed) rather than bad
+  /// input (exit code 1, nothing written).
+  bool
+  is_run_failure(const std::exception_ptr &failure);
 
   /// Collapse a multi-line text (deal.II's exception texts) into one line.
   std::string
@@ -133,9 +140,9 @@ namespace fgimpact
    * and clean it: with Output/Overwrite remove exactly the files this
    * program writes (history.csv, summary.txt, parameters.prm, input.prm,
    * log.txt, frequencies.csv, solution.pvd, solution_*.vtu/.pvtu,
-   * leftover *.tmp and the checkpoint directories), otherwise refuse a non-empty directory.  Call on one
-   * rank, before the run opens its log.txt there; throws ExcMessage naming
-   * Output/Directory or Output/Overwrite.
+   * leftover *.tmp and the checkpoint directories), otherwise refuse a
+   * non-empty directory.  Call on one rank, before the run opens its log.txt
+   * there; throws ExcMessage naming Output/Directory or Output/Overwrite.
    */
   void
   prepare_output_directory(const OutputParameters &output);

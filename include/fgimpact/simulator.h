@@ -45,7 +45,9 @@ namespace fgimpact
      * Build the mesh, matrices and the driver (for an impact: the contact
      * and the time stepper), and check what can only be checked then (the
      * contact node, the explicit stability limit).  Writes no file, so a
-     * failure here leaves no output behind.
+     * failure here leaves no output behind; after a numerical failure of
+     * valid input the caller writes the start files and
+     * write_failed_summary().
      */
     void
     setup();
@@ -59,6 +61,12 @@ namespace fgimpact
     /// output directory, which must exist.
     void
     run();
+
+    /// Rank 0, after a failure that left no summary.txt (set-up, or a
+    /// static or modal run): summary.txt with status = failed, best effort
+    /// (a failure to write it is swallowed: the first failure counts).
+    void
+    write_failed_summary() const;
 
     /// The impact's results (Problem type = impact only).
     const ImpactResults &
