@@ -7,7 +7,12 @@
 # Prints the medians, their ratios and the peak forces.
 #
 #   bench/peer_compare.sh [--runs N] [--out DIR] [--scheme implicit|explicit]
-#                         [--symmetry "auto none"]
+#                         [--symmetry "auto none"] [--time-step DT]
+#
+# --time-step: the explicit scheme's Time step in s (default 0: automatic).
+# Symmetry = auto models the whole plate for the automatic explicit step (a
+# part's stable step sees only its symmetric modes) and the quarter at a
+# given step, with the whole plate's history to round-off.
 #
 # --symmetry: the Geometry/Symmetry values to time in fgimpact, each in
 # every round (default "auto none": the quarter model the central impact
@@ -22,14 +27,15 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/fgimpact_lib.sh
 
-runs=5 out=output/peer_compare scheme=implicit symmetries="auto none"
+runs=5 out=output/peer_compare scheme=implicit symmetries="auto none" step=0
 while [ $# -gt 0 ]; do
   case $1 in
     --runs) runs=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --scheme) scheme=$2; shift 2 ;;
     --symmetry) symmetries=$2; shift 2 ;;
-    -h|--help) sed -n '2,20p' "$0"; exit 0 ;;
+    --time-step) step=$2; shift 2 ;;
+    -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
     *) echo "unknown option $1 (see --help)" >&2; exit 1 ;;
   esac
 done
@@ -56,7 +62,7 @@ fg_args=(prm/default.prm
   -s "Impactor/Mass=0.110" -s "Time integration/End time=300e-6"
   -s "Output/VTU interval=0" -s "Output/Log interval=0")
 if [ "$scheme" = explicit ]; then
-  fg_args+=(-s "Time integration/Scheme=explicit" -s "Time integration/Time step=0")
+  fg_args+=(-s "Time integration/Scheme=explicit" -s "Time integration/Time step=$step")
 fi
 
 now() { date +%s.%N; }

@@ -191,6 +191,92 @@ namespace
         {}
     return fgimpact::report_failure(failure, root, 1);
   }
+
+
+
+  /// Set up, write the start files and run one simulation; the exit code.
+  int
+  simulate(const fgimpact::CommandLine::Options &options,
+           const fgimpact::Parameters           &parameters,
+           const dealii::ParameterHandler       &prm,
+           const fgimpact::InputFile            &input_file,
+           const fgimpact::CheckpointSettings   &checkpoint,
+           fgimpact::Logger                     &logger,
+           int                                   argc,
+           char                                **argv)
+  {
+    using namespace dealii;
+    using namespace fgimpact;
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    try
+      {
+        Simulator simulator(parameters, MPI_COMM_WORLD);
+        simulator.set_checkpointing(checkpoint);
+        const bool validate = options.action == CommandLine::Action::validate;
+        // Rank 0 prepares the directory and writes the start files; every
+        // rank learns the outcome, so that all stop together.
+        const auto start_files = [&]() {
+          run_on_root(MPI_COMM_WORLD, [&]() {
+            start_run_files(parameters.output,
+                            argc,
+                            argv,
+                            logger,
+                            prm,
+                            input_file,
+                            !options.resume_directory.empty());
+          });
+        };
+        // Everything that can fail on bad input is checked before any file
+        // is written: setup() writes nothing.  A numerical failure of the
+        // valid input there (a factorization, a solver) is a failed run: the
+        // start files and summary.txt (status = failed), as in the time loop
+        // (--validate writes nothing).
+        try
+          {
+            simulator.setup();
+          }
+        catch (...)
+          {
+            return fail_before_run(std::current_exception(),
+                                   simulator,
+                                   validate ?
+                                     std::function<void()>() :
+                                     std::function<void()>(start_files),
+                                   root);
+          }
+        if (validate)
+          {
+            if (root)
+              std::cout << "fgimpact: " << input_file.input_name()
+                        << " is valid (checked and set up; nothing run, "
+                           "nothing written)\n"
+                        << "  " << simulator.get_resource_estimate().describe()
+                        << '\n';
+            return 0;
+          }
+        // An unusable directory is bad input (exit code 1, nothing written);
+        // a start file that cannot be written an I/O failure (exit code 2,
+        // summary.txt failed if it can still be written).
+        try
+          {
+            start_files();
+          }
+        catch (...)
+          {
+            return fail_before_run(
+              std::current_exception(), simulator, [] {}, root);
+          }
+        simulator.run();
+        if (root)
+          std::cout << "fgimpact: results in " << parameters.output.directory
+                    << '\n';
+      }
+    catch (...)
+      {
+        return report_failure(std::current_exception(), root, 2);
+      }
+    return 0;
+  }
 } // namespace
 
 
@@ -252,71 +338,6 @@ main(int argc, char *argv[])
       return report_failure(std::current_exception(), root, 1);
     }
 
-  try
-    {
-      Simulator simulator(parameters, MPI_COMM_WORLD);
-      simulator.set_checkpointing(checkpoint);
-      const bool validate = options.action == CommandLine::Action::validate;
-      // Rank 0 prepares the directory and writes the start files; every
-      // rank learns the outcome, so that all stop together.
-      const auto start_files = [&]() {
-        run_on_root(MPI_COMM_WORLD, [&]() {
-          start_run_files(parameters.output,
-                          argc,
-                          argv,
-                          logger,
-                          prm,
-                          *input,
-                          !options.resume_directory.empty());
-        });
-      };
-      // Everything that can fail on bad input is checked before any file
-      // is written: setup() writes nothing.  A numerical failure of the
-      // valid input there (a factorization, a solver) is a failed run: the
-      // start files and summary.txt (status = failed), as in the time loop
-      // (--validate writes nothing).
-      try
-        {
-          simulator.setup();
-        }
-      catch (...)
-        {
-          return fail_before_run(std::current_exception(),
-                                 simulator,
-                                 validate ? std::function<void()>() :
-                                            std::function<void()>(start_files),
-                                 root);
-        }
-      if (validate)
-        {
-          if (root)
-            std::cout << "fgimpact: " << input->input_name()
-                      << " is valid (checked and set up; nothing run, "
-                         "nothing written)\n"
-                      << "  " << simulator.get_resource_estimate().describe()
-                      << '\n';
-          return 0;
-        }
-      // An unusable directory is bad input (exit code 1, nothing written);
-      // a start file that cannot be written an I/O failure (exit code 2,
-      // summary.txt failed if it can still be written).
-      try
-        {
-          start_files();
-        }
-      catch (...)
-        {
-          return fail_before_run(
-            std::current_exception(), simulator, [] {}, root);
-        }
-      simulator.run();
-      if (root)
-        std::cout << "fgimpact: results in " << parameters.output.directory
-                  << '\n';
-    }
-  catch (...)
-    {
-      return report_failure(std::current_exception(), root, 2);
-    }
-  return 0;
+  return simulate(
+    options, parameters, prm, *input, checkpoint, logger, argc, argv);
 }
