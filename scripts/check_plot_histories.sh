@@ -3,8 +3,8 @@
 # --help exits 0 and names every figure it writes; a bad command line
 # exits 2 with one error line; with matplotlib installed, it draws a small
 # run's figures in svg and pdf (file signatures checked) for a time window.
-# Skips cleanly (exit 0, a note) without python3 or matplotlib: CI does not
-# install python3-matplotlib.  Usage: scripts/check_plot_histories.sh [BUILD_DIR]
+# Skips cleanly (exit 0, a note) without python3 or matplotlib (a machine that does not
+# install python3-matplotlib (CI does).  Usage: scripts/check_plot_histories.sh [BUILD_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}

@@ -97,8 +97,9 @@ namespace
     Parameters::declare_parameters(prm);
     input = read_input(options.prm_file, MPI_COMM_WORLD);
     input->parse_into(prm, options.overrides);
+    FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
+      prm, options.prm_file);
     parameters.parse_parameters(prm);
-    parameters.material.resolve_relative_paths(options.prm_file);
     parameters.validate();
     study.parse_parameters(prm);
     study.entries.insert(study.entries.end(),

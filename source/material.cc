@@ -46,7 +46,7 @@ namespace fgimpact
         "bottom face, strictly increasing from 0 to 1), E (Pa), nu and rho "
         "(kg/m^3); '#' starts a comment, one header line is allowed. A "
         "relative path is relative to the directory of the .prm given on "
-        "the command line.");
+        "the command line (parameters.prm records it as an absolute path).");
       prm.declare_entry(
         "Graded nodal values",
         "sampled",
@@ -193,15 +193,25 @@ namespace fgimpact
 
   void
   FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
+    ParameterHandler  &prm,
     const std::string &prm_file)
   {
+    // Made absolute in prm itself, so that parameters.prm, the checkpoints
+    // (fgimpact --resume DIR reads DIR/parameters.prm) and a study's cases
+    // name the same file wherever they are read from.
     namespace fs = std::filesystem;
-    if (profile_file.empty() || fs::path(profile_file).is_absolute() ||
-        prm_file.empty() || prm_file == "-")
-      return;
-    const fs::path directory = fs::path(prm_file).parent_path();
-    if (!directory.empty())
-      profile_file = (directory / profile_file).string();
+    prm.enter_subsection("Material");
+    const std::string file = prm.get("Profile file");
+    if (!file.empty() && fs::path(file).is_relative())
+      {
+        const bool     named = !(prm_file.empty() || prm_file == "-" ||
+                             prm_file == "standard input");
+        const fs::path directory =
+          named ? fs::path(prm_file).parent_path() : fs::path();
+        prm.set("Profile file",
+                fs::absolute(directory / file).lexically_normal().string());
+      }
+    prm.leave_subsection();
   }
 
 

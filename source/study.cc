@@ -207,6 +207,8 @@ namespace fgimpact
           ParameterHandler prm;
           Parameters::declare_parameters(prm);
           input.parse_into(prm, all);
+          FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
+            prm, input.input_name());
           ParsedCase c;
           c.study_case = cases[i];
           c.parameters.parse_parameters(prm);
@@ -377,6 +379,8 @@ namespace fgimpact
         ParameterHandler prm;
         Parameters::declare_parameters(prm);
         input.parse_into(prm, overrides);
+        FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
+          prm, input.input_name());
         base.parse_parameters(prm);
         StudyParameters rerun = study;
         rerun.write_vtu       = rerun.write_vtu || only_case >= 0;

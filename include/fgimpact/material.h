@@ -84,10 +84,12 @@ namespace fgimpact
       void
       parse_parameters(ParameterHandler &prm);
 
-      /// A relative Profile file is taken relative to the directory of
-      /// prm_file (the top-level input; "" or "-": the working directory).
-      void
-      resolve_relative_paths(const std::string &prm_file);
+      /// Before parse_parameters(): a relative Profile file in prm is made
+      /// absolute, relative to the directory of prm_file (the top-level
+      /// input; "", "-" or "standard input": the working directory).
+      static void
+      resolve_relative_paths(ParameterHandler  &prm,
+                             const std::string &prm_file);
 
       /// The metal and ceramic constituents.
       Constituents

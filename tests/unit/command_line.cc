@@ -110,8 +110,7 @@ namespace
                          y = std::strtod(vb.c_str(), &end_b);
             if (end_a == va.c_str() || end_b == vb.c_str())
               return 1e9; // differing text (the header)
-            worst =
-              std::max(worst, std::abs(x - y) * std::pow(10., decimals));
+            worst = std::max(worst, std::abs(x - y) * std::pow(10., decimals));
           }
       }
     return std::getline(ib, lb) ? 1e9 : worst;
@@ -180,17 +179,15 @@ main()
   write("cli_study.prm", scene("cli_study"));
   {
     const int    code = run("cli_study.prm --study 'Impactor/Initial "
-                               "velocity=1,2'");
-    const double diff =
-      csv_difference(read("cli_study/case_001/history.csv"),
-                     history("cli_edited"));
+                            "velocity=1,2'");
+    const double diff = csv_difference(read("cli_study/case_001/history.csv"),
+                                       history("cli_edited"));
     std::printf("study case V0 = 2 against the separate run: history.csv "
                 "differs by at most %.1f in the last printed digit\n",
                 diff);
     check("--study: exit 0, study.csv with a header and 2 cases, the case's "
           "history.csv equal to the separate run's",
-          code == 0 && n_lines(read("cli_study/study.csv")) == 3 &&
-            diff == 0.);
+          code == 0 && n_lines(read("cli_study/study.csv")) == 3 && diff == 0.);
   }
 
   // The .prm from standard input.
@@ -212,6 +209,43 @@ main()
     const std::string err  = read("cli.stderr");
     check("an include loop: exit 1, one line naming the include",
           code == 1 && n_lines(err) == 1 && contains(err, "include"));
+  }
+
+  // A tabulated profile given relative to its .prm (run from another
+  // directory): found by the run and by a study's cases, and written into
+  // parameters.prm as an absolute path (what --resume DIR reads).
+  write("cli_sub/profile.csv",
+        "# z/h, E (Pa), nu, rho (kg/m^3)\n0, 380e9, 0.3, 3800\n"
+        "0.5, 225e9, 0.3, 3253\n1, 70e9, 0.3, 2707\n");
+  write("cli_sub/tab.prm",
+        scene("cli_tab",
+              "subsection Material\n set Gradation = tabulated\n"
+              " set Profile file = profile.csv\nend\n"));
+  {
+    const int         code = run("cli_sub/tab.prm -s 'Impactor/Initial "
+                                 "velocity=2'");
+    const std::string prm  = read("cli_tab/parameters.prm");
+    const auto        at   = prm.find("set Profile file");
+    const std::string line =
+      at == std::string::npos ? "" : prm.substr(at, prm.find('\n', at) - at);
+    const std::string path = line.substr(line.find('=') + 1);
+    const std::string file = path.substr(path.find_first_not_of(' '));
+    check("a Profile file relative to its .prm: the run finds it, and "
+          "parameters.prm names it by an absolute path",
+          code == 0 && fs::path(file).is_absolute() &&
+            fs::equivalent(file, "cli_sub/profile.csv"));
+    const int    study_code = run("cli_sub/tab.prm -s 'Output/Directory="
+                                  "cli_tab_study' --study 'Impactor/Initial "
+                                  "velocity=1,2'");
+    const double diff =
+      csv_difference(read("cli_tab_study/case_001/history.csv"),
+                     history("cli_tab"));
+    std::printf("tabulated study case V0 = 2 against the separate run: "
+                "history.csv differs by at most %.1f in the last printed "
+                "digit\n",
+                diff);
+    check("... and so do a study's cases (case V0 = 2 equal to the run)",
+          study_code == 0 && diff == 0.);
   }
 
   // Provenance and the log.
