@@ -271,6 +271,46 @@ namespace fgimpact
 
 
   void
+  VtuWriter::attach_fields(MirroredDataOut                      &data_out,
+                           const bool                            acceleration,
+                           const std::pair<std::string, double> &constant_field,
+                           Vector<double>                       &constant)
+  {
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(3, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.attach_dof_handler(plate.get_dof_handler());
+    if (fields.displacement)
+      data_out.add_data_vector(u_ghosted,
+                               std::vector<std::string>(3, "displacement_m"),
+                               DataOut<3>::type_dof_data,
+                               vector_field);
+    if (fields.velocity)
+      data_out.add_data_vector(v_ghosted,
+                               std::vector<std::string>(3, "velocity_m_s"),
+                               DataOut<3>::type_dof_data,
+                               vector_field);
+    if (acceleration)
+      data_out.add_data_vector(a_ghosted,
+                               std::vector<std::string>(3, "acceleration_m_s2"),
+                               DataOut<3>::type_dof_data,
+                               vector_field);
+    if (fields.cell_stress || fields.material)
+      data_out.add_data_vector(u_ghosted, postprocessor);
+    add_recovered_fields(data_out);
+    if (!constant_field.first.empty())
+      {
+        constant.reinit(
+          plate.get_dof_handler().get_triangulation().n_active_cells());
+        constant = constant_field.second;
+        data_out.add_data_vector(constant,
+                                 constant_field.first,
+                                 DataOut<3>::type_cell_data);
+      }
+  }
+
+
+
+  void
   VtuWriter::write(const unsigned int                    step,
                    const double                          t,
                    const TrilinosWrappers::MPI::Vector  &u,
@@ -305,41 +345,9 @@ namespace fgimpact
                         record,
                         constant_field,
                         with_acceleration]() {
-      const std::vector<
-        DataComponentInterpretation::DataComponentInterpretation>
-                      vector_field(3,
-                     DataComponentInterpretation::component_is_part_of_vector);
       MirroredDataOut data_out(plate.get_geometry());
-      data_out.attach_dof_handler(plate.get_dof_handler());
-      if (fields.displacement)
-        data_out.add_data_vector(u_ghosted,
-                                 std::vector<std::string>(3, "displacement_m"),
-                                 DataOut<3>::type_dof_data,
-                                 vector_field);
-      if (fields.velocity)
-        data_out.add_data_vector(v_ghosted,
-                                 std::vector<std::string>(3, "velocity_m_s"),
-                                 DataOut<3>::type_dof_data,
-                                 vector_field);
-      if (with_acceleration)
-        data_out.add_data_vector(a_ghosted,
-                                 std::vector<std::string>(3,
-                                                          "acceleration_m_s2"),
-                                 DataOut<3>::type_dof_data,
-                                 vector_field);
-      if (fields.cell_stress || fields.material)
-        data_out.add_data_vector(u_ghosted, postprocessor);
-      add_recovered_fields(data_out);
-      Vector<double> constant;
-      if (!constant_field.first.empty())
-        {
-          constant.reinit(
-            plate.get_dof_handler().get_triangulation().n_active_cells());
-          constant = constant_field.second;
-          data_out.add_data_vector(constant,
-                                   constant_field.first,
-                                   DataOut<3>::type_cell_data);
-        }
+      Vector<double>  constant;
+      attach_fields(data_out, with_acceleration, constant_field, constant);
       data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
       if (fields.mirror)
         data_out.mirror();

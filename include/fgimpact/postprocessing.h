@@ -23,6 +23,8 @@
 
 namespace fgimpact
 {
+  class MirroredDataOut;
+
   using namespace dealii;
 
   /**
@@ -169,6 +171,14 @@ namespace fgimpact
     restore(const std::vector<std::pair<double, std::string>> &records);
 
   private:
+    /// The selected Output/Fields of the ghosted copies (and a constant
+    /// cell field, stored in `constant`) into data_out.
+    void
+    attach_fields(MirroredDataOut                      &data_out,
+                  const bool                            acceleration,
+                  const std::pair<std::string, double> &constant_field,
+                  Vector<double>                       &constant);
+
     void
     add_recovered_fields(DataOut<3> &data_out);
 
