@@ -1,4 +1,5 @@
 #include <fgimpact/logger.h>
+#include <fgimpact/run_control.h>
 
 #include <cstdio>
 #include <cstring>
@@ -13,6 +14,21 @@ namespace fgimpact
       file.write(text, n);
     else
       pending.append(text, n);
+  }
+
+
+
+  void
+  Logger::Sink::check()
+  {
+    if (!file.is_open() || file.good())
+      return;
+    file.close();
+    const std::string warning = "fgimpact: warning: cannot write " + filename +
+                                " (disk full or I/O error); the log goes on "
+                                "on the screen only\n";
+    if (screen != nullptr)
+      screen->sputn(warning.data(), warning.size());
   }
 
 
@@ -52,7 +68,10 @@ namespace fgimpact
   Logger::TeeBuffer::sync()
   {
     if (sink.file.is_open())
-      sink.file.flush();
+      {
+        sink.file.flush();
+        sink.check();
+      }
     return original->pubsync();
   }
 
@@ -65,8 +84,9 @@ namespace fgimpact
       return;
     // printf-style output of the libraries as well: line by line.
     std::setvbuf(stdout, nullptr, _IOLBF, BUFSIZ);
-    out = std::make_unique<TeeBuffer>(std::cout.rdbuf(), sink);
-    err = std::make_unique<TeeBuffer>(std::cerr.rdbuf(), sink);
+    sink.screen = std::cerr.rdbuf();
+    out         = std::make_unique<TeeBuffer>(std::cout.rdbuf(), sink);
+    err         = std::make_unique<TeeBuffer>(std::cerr.rdbuf(), sink);
     std::cout.rdbuf(out.get());
     std::cerr.rdbuf(err.get());
   }
@@ -93,9 +113,19 @@ namespace fgimpact
     if (!active)
       return;
     // append: a resumed run continues the log of the run it continues.
+    // A log.txt that cannot be written at the start is a start file that
+    // cannot be written (exit code 2); later, a warning (Sink::check()).
+    sink.filename = filename;
     sink.file.open(filename, append ? std::ios::app : std::ios::out);
     sink.file << header << sink.pending << std::flush;
     sink.pending.clear();
+    if (!sink.file)
+      {
+        sink.file.close();
+        AssertThrow(false,
+                    ExcOutputFailure("cannot write " + filename +
+                                     " (disk full or I/O error)."));
+      }
   }
 
 

@@ -36,11 +36,18 @@ namespace fgimpact
     /// Where both streams' copies go: a file once open, a string before.
     struct Sink
     {
-      std::ofstream file;
-      std::string   pending;
+      std::ofstream   file;
+      std::string     pending;
+      std::string     filename;
+      std::streambuf *screen = nullptr; // the original stderr
 
       void
       write(const char *text, const std::streamsize n);
+
+      /// A write to the open file that failed (disk full): one warning on
+      /// the screen, and the file closed; the log goes on on the screen.
+      void
+      check();
     };
 
     /// Writes to the original buffer and the sink, flushing at newlines.

@@ -423,6 +423,12 @@ namespace
        "summary.txt",
        Setup::dev_full,
        "summary.txt.tmp"},
+      {"disk full: log.txt",
+       small,
+       2,
+       "log.txt",
+       Setup::dev_full,
+       "log.txt"},
       // Inputs that run: read normally, with a warning, or with 'none'.
       {"byte-order mark", small + short_run, 0, "", Setup::bom},
       {"Windows line ends", small + short_run, 0, "", Setup::crlf},
