@@ -71,9 +71,10 @@ namespace fgimpact
         "allows (none, with a log line, if none). A plane is a symmetry "
         "plane if the impact point lies on it, the supports of the two "
         "faces parallel to it are equal and the subdivisions across it are "
-        "even; modal problems and explicit runs are never cut. history.csv "
-        "and summary.txt "
-        "report the whole plate; the VTU files hold the part.");
+        "even; modal problems and explicit runs with the automatic time "
+        "step (Time step = 0) are never cut. history.csv and summary.txt "
+        "report the whole plate; the VTU files hold the whole plate too "
+        "(Output/Mirror symmetric part = true) or the part.");
     }
     prm.leave_subsection();
 

@@ -172,20 +172,22 @@ namespace
   /**
    * A failure before the time loop: bad input (exit code 1) writes
    * nothing; a failed run of valid input (a numerical failure in set-up, a
-   * start file that cannot be written: exit code 2) writes the start files
-   * (start_files, empty when nothing may be written or they were tried)
-   * and summary.txt with status = failed, as far as it can.
+   * start file that cannot be written: exit code 2) writes, if may_write
+   * (not --validate), the start files (start_files, if not yet tried) and
+   * summary.txt with status = failed, as far as it can.
    */
   int
   fail_before_run(const std::exception_ptr    &failure,
                   const fgimpact::Simulator   &simulator,
+                  const bool                   may_write,
                   const std::function<void()> &start_files,
                   const bool                   root)
   {
-    if (fgimpact::is_run_failure(failure) && start_files)
+    if (may_write && fgimpact::is_run_failure(failure))
       try
         {
-          start_files();
+          if (start_files)
+            start_files();
           simulator.write_failed_summary();
         }
       catch (...)
@@ -240,9 +242,8 @@ namespace
           {
             return fail_before_run(std::current_exception(),
                                    simulator,
-                                   validate ?
-                                     std::function<void()>() :
-                                     std::function<void()>(start_files),
+                                   !validate,
+                                   start_files,
                                    root);
           }
         if (validate)
@@ -265,7 +266,7 @@ namespace
         catch (...)
           {
             return fail_before_run(
-              std::current_exception(), simulator, [] {}, root);
+              std::current_exception(), simulator, true, nullptr, root);
           }
         simulator.run();
         if (root)
