@@ -1,3 +1,5 @@
+#include <deal.II/base/utilities.h>
+
 #include <deal.II/grid/grid_generator.h>
 
 #include <fgimpact/geometry.h>
@@ -46,12 +48,16 @@ namespace fgimpact
                         "Number of elements through the thickness.");
       prm.declare_entry(
         "Contact refinement levels",
-        "0",
-        Patterns::Integer(0, 12),
+        "auto",
+        Patterns::Selection("auto|0|1|2|3|4|5|6|7|8|9|10|11|12"),
         "Times the cells near the impact point are split in two in each "
         "direction (graded, with hanging-node constraints): the element "
         "size under the ball is the base size / 2^levels. 0 = uniform "
-        "mesh.");
+        "mesh. auto = 0 for the Hertz-law contact models; for Contact/Model "
+        "= resolved sphere and Static/Load = sphere the fewest levels that "
+        "put 4 element sizes across the half-space Hertz estimate of the "
+        "largest contact radius (doc/contact.md: about 1 % in the peak "
+        "force); the log gives the choice.");
       prm.declare_entry(
         "Contact refinement radius",
         "0",
@@ -62,7 +68,7 @@ namespace fgimpact
         "half-space of the top face's modulus. Unit: m.");
       prm.declare_entry(
         "Symmetry",
-        "none",
+        "auto",
         Patterns::Selection("auto|none|half|quarter"),
         "Model a part of a symmetric scene: quarter = the part x <= a/2, "
         "y <= b/2 with u_x = 0 on x = a/2 and u_y = 0 on y = b/2; half = "
@@ -116,7 +122,10 @@ namespace fgimpact
       subdivisions_x            = prm.get_integer("Subdivisions x");
       subdivisions_y            = prm.get_integer("Subdivisions y");
       subdivisions_z            = prm.get_integer("Subdivisions z");
-      contact_refinement_levels = prm.get_integer("Contact refinement levels");
+      const std::string levels  = prm.get("Contact refinement levels");
+      contact_refinement_auto   = (levels == "auto");
+      contact_refinement_levels =
+        contact_refinement_auto ? 0 : Utilities::string_to_int(levels);
       contact_refinement_radius = prm.get_double("Contact refinement radius");
       const std::string s       = prm.get("Symmetry");
       symmetry                  = (s == "auto"    ? Symmetry::automatic :

@@ -159,6 +159,8 @@ namespace fgimpact
     n_steps = parameters.time_integration.n_steps(dt);
     pcout << "  " << stepper->description() << "; dt = " << dt * 1e6 << " us, "
           << n_steps << " steps\n";
+    results.model = describe_model(parameters, plate, dt);
+    note_contact_resolution();
     // Machine-dependent (the memory available): with the timings.
     if (parameters.output.print_timing && !stepper->solver_log().empty())
       pcout << "  " << stepper->solver_log() << '\n';
@@ -183,6 +185,55 @@ namespace fgimpact
                       T_hertz * 1e6,
                       T_hertz / dt,
                       T_hertz / 20. * 1e6);
+        pcout << text;
+      }
+  }
+
+
+
+  void
+  ImpactDriver::note_contact_resolution()
+  {
+    const ModelDescription &d = results.model;
+    const double            h = d.element_size_under_ball;
+    char                    text[600];
+    if (parameters.contact_model.model ==
+        ContactModelParameters::Model::hertz_node)
+      {
+        // The paper's point force: u ~ 1/r under it, so the force depends
+        // on the mesh (README, doc/contact.md).
+        std::snprintf(text,
+                      sizeof(text),
+                      "  note: Contact/Model = hertz node puts the contact "
+                      "force on one node: the peak force depends on the "
+                      "element size under the ball (%.4g mm here) and does "
+                      "not converge under refinement; "
+                      "scripts/contact_convergence.sh FILE.prm measures its "
+                      "error for this scene against the resolved sphere.\n",
+                      h * 1e3);
+        pcout << text;
+        return;
+      }
+    const double a_max = expected_contact_radius(parameters,
+                                                 plate.get_material(),
+                                                 plate.get_geometry().thickness());
+    if (parameters.contact_model.model ==
+          ContactModelParameters::Model::resolved_sphere &&
+        a_max < contact_elements_per_radius * h)
+      {
+        std::snprintf(text,
+                      sizeof(text),
+                      "  WARNING: the estimated largest contact radius "
+                      "(%.4g mm, Hertz on a half-space) spans %.2f element "
+                      "sizes (%.4g mm), fewer than %.0f: the resolved "
+                      "contact force will not be accurate; raise "
+                      "Geometry/Contact refinement levels (now %u) or set "
+                      "it to auto.\n",
+                      a_max * 1e3,
+                      a_max / h,
+                      h * 1e3,
+                      contact_elements_per_radius,
+                      d.contact_refinement_levels);
         pcout << text;
       }
   }

@@ -1,10 +1,84 @@
 #include <fgimpact/impact_summary.h>
+#include <fgimpact/impactor.h>
 #include <fgimpact/postprocessing.h>
+#include <fgimpact/simulator.h>
 
 #include <algorithm>
+#include <cstdio>
 
 namespace fgimpact
 {
+  ModelDescription
+  describe_model(const Parameters &parameters,
+                 const PlateModel &plate,
+                 const double      time_step)
+  {
+    using Model = ContactModelParameters::Model;
+    const auto      &g = plate.get_geometry();
+    const auto      &m = parameters.material;
+    ModelDescription d;
+    const Model      model = parameters.contact_model.model;
+    d.contact_model = model == Model::hertz_node     ? "hertz node" :
+                      model == Model::hertz_midplane ? "hertz midplane" :
+                                                       "resolved sphere";
+    d.contact_refinement_levels = plate.contact_refinement().levels;
+    const Point<2> p =
+      Impactor(parameters.impactor).impact_point(g.length(), g.width());
+    d.element_size_under_ball =
+      plate.cell_size_at(Point<3>(p[0], p[1], g.thickness()));
+    d.time_step = time_step;
+    d.scheme    = parameters.time_integration.scheme ==
+                     TimeStepper::Scheme::central_difference ?
+                    "explicit" :
+                    "implicit";
+    d.element_degree = plate.get_fe().degree;
+    const double share = g.share();
+    d.symmetry = share > 0.75 ? "none" : share > 0.3 ? "half" : "quarter";
+    d.property_mode = m.property_mode == PropertyMode::graded ? "graded" :
+                      m.property_mode == PropertyMode::homogeneous ?
+                                                                "homogeneous" :
+                                                                "pointwise";
+    d.gradation = m.gradation == Gradation::power_law   ? "power law" :
+                  m.gradation == Gradation::exponential ? "exponential" :
+                  m.gradation == Gradation::sigmoid     ? "sigmoid" :
+                                                          "tabulated";
+    d.power_law_index = m.power_law_index;
+    d.homogenization  = m.homogenization == Homogenization::mori_tanaka ?
+                          "Mori-Tanaka" :
+                          "rule of mixtures";
+    return d;
+  }
+
+
+
+  std::vector<std::string>
+  resolution_warnings(const ImpactResults &r, const bool contact_area)
+  {
+    std::vector<std::string> warnings;
+    const double h = r.model.element_size_under_ball;
+    if (contact_area && h > 0. &&
+        r.max_contact_radius < contact_elements_per_radius * h)
+      {
+        char text[400];
+        std::snprintf(
+          text,
+          sizeof(text),
+          "the largest contact radius (%.4g mm) spans only %.2f element "
+          "sizes (%.4g mm; fewer than %.0f): the contact force is not "
+          "resolved; raise Geometry/Contact refinement levels (now %u) or "
+          "set it to auto",
+          r.max_contact_radius * 1e3,
+          r.max_contact_radius / h,
+          h * 1e3,
+          contact_elements_per_radius,
+          r.model.contact_refinement_levels);
+        warnings.emplace_back(text);
+      }
+    return warnings;
+  }
+
+
+
   void
   write_impact_summary(const std::string   &filename,
                        const ImpactResults &r,
@@ -19,6 +93,23 @@ namespace fgimpact
     // are `none` while the ball has not left the plate.
     out.add_text("status", status);
     out.add("time_reached_us", t_end * 1e6, 4);
+    // What was modelled.
+    const ModelDescription &d = r.model;
+    out.add_text("contact_model", d.contact_model);
+    out.add("contact_refinement_levels", d.contact_refinement_levels, 0);
+    out.add("element_size_under_ball_mm", d.element_size_under_ball * 1e3, 6);
+    out.add("time_step_us", d.time_step * 1e6, 6);
+    out.add_text("scheme", d.scheme);
+    out.add("element_degree", d.element_degree, 0);
+    out.add_text("symmetry", d.symmetry);
+    out.add_text("property_mode", d.property_mode);
+    out.add_text("gradation", d.gradation);
+    out.add("power_law_index", d.power_law_index, 6);
+    out.add_text("homogenization", d.homogenization);
+    std::string warnings;
+    for (const auto &w : r.warnings)
+      warnings += (warnings.empty() ? "" : "; ") + w;
+    out.add_text("warnings", warnings.empty() ? "none" : warnings);
     out.add("peak_contact_force_N", r.peak_contact_force, 4);
     out.add("max_sampled_contact_force_N", r.max_sampled_force, 4);
     out.add("time_of_peak_force_us", r.time_of_peak_force * 1e6, 4);

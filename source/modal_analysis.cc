@@ -256,7 +256,10 @@ namespace fgimpact
     VtuWriter vtu(plate, directory, vtu_compression, fields);
     for (unsigned int j = 0; j < shapes.size(); ++j)
       {
+        // The Ritz vectors are condensed (hanging nodes 0): the shape a
+        // user sees has the constraints distributed.
         TrilinosWrappers::MPI::Vector shape = shapes[j];
+        plate.get_constraints().distribute(shape);
         shape /= shape.linfty_norm();
         vtu.write(
           j + 1, j + 1, shape, zero, {"frequency_Hz", modes[j].frequency});

@@ -130,6 +130,7 @@ namespace fgimpact
     , impact_results(results)
     , mid_probe(plate, history_probe_points(plate.get_geometry())[0])
     , top_probe(plate, history_probe_points(plate.get_geometry())[1])
+    , fields(plate)
     , progress(n_steps, root && parameters.print_timing)
   {
     plate_communicator = plate.get_mpi_communicator();
@@ -225,12 +226,18 @@ namespace fgimpact
                         const ImpactorState &ball,
                         const ContactState  &part_contact)
   {
+    // The rates only when a probe or a snapshot reads them (decided from
+    // the parameters, the same on every rank: distribute() is collective).
+    const bool snapshot =
+      parameters.vtu_interval > 0 && step % parameters.vtu_interval == 0;
+    fields.update(stepper, snapshot || probe_set != nullptr);
     PlateSample plate =
-      probe_plate(mid_probe, top_probe, stepper.displacement());
+      probe_plate(mid_probe, top_probe, fields.displacement());
+    // The energies from the condensed vectors: u^T K u is the same.
     plate.E_kinetic         = stepper.kinetic_energy();
     plate.E_strain          = stepper.strain_energy();
     plate.linear_iterations = stepper.linear_iterations();
-    record(step, t, plate, ball, part_contact, &stepper);
+    record(step, t, plate, ball, part_contact, &fields);
   }
 
 
@@ -241,7 +248,7 @@ namespace fgimpact
                         const PlateSample   &plate,
                         const ImpactorState &ball,
                         const ContactState  &part_contact,
-                        const TimeStepper   *stepper)
+                        const PlateFields   *fields)
   {
     // A symmetric part: the whole plate's contact force is the part's
     // times 1/share; everything below is the whole plate's.
@@ -285,12 +292,12 @@ namespace fgimpact
 
     // The convolution engine of a study has no fields: it clears the
     // probe points (probes.csv comes from --study-case K).
-    if (probe_set && stepper)
+    if (probe_set && fields)
       {
-        ProbeValues values = probe_set->evaluate(stepper->displacement(),
-                                                 stepper->velocity(),
-                                                 stepper->acceleration(),
-                                                 stepper->has_lumped_mass());
+        ProbeValues values = probe_set->evaluate(fields->displacement(),
+                                                 fields->velocity(),
+                                                 fields->acceleration(),
+                                                 fields->lumped_mass());
         values.support_reaction_z *= whole; // a part's supports: scaled up
         probe_row = probe_set->row(t, values);
       }
@@ -299,7 +306,7 @@ namespace fgimpact
     impact_results.linear_iterations += plate.linear_iterations;
     impact_results.max_linear_iterations =
       std::max(impact_results.max_linear_iterations, plate.linear_iterations);
-    write_outputs(step, t, stepper, sample);
+    write_outputs(step, t, fields, sample);
     last_force    = contact.force;
     last_alpha    = contact.alpha;
     last_approach = approach;
@@ -418,7 +425,7 @@ namespace fgimpact
   void
   ImpactMonitor::write_outputs(const unsigned int   step,
                                const double         t,
-                               const TimeStepper   *stepper,
+                               const PlateFields   *fields,
                                const HistorySample &sample)
   {
     std::vector<double> row;
@@ -433,15 +440,15 @@ namespace fgimpact
           history->write_row(row);
         if (probe_csv)
           probe_csv->write_row(probe_row);
-        if (vtu && stepper && step % parameters.vtu_interval == 0)
+        if (vtu && fields && step % parameters.vtu_interval == 0)
           {
             output_timer.start();
             vtu->write(step,
                        t,
-                       stepper->displacement(),
-                       stepper->velocity(),
+                       fields->displacement(),
+                       fields->velocity(),
                        {},
-                       &stepper->acceleration());
+                       &fields->acceleration());
             if (contact_vtu)
               contact_vtu->write(step, t, sample.ball->w, *sample.contact);
             output_timer.stop();
@@ -541,6 +548,9 @@ namespace fgimpact
     if (r.n_impacts > 1)
       pcout << "  note: the impactor struck the plate " << r.n_impacts
             << " times.\n";
+    r.warnings = resolution_warnings(r, contact_model.reports_contact_area());
+    for (const auto &warning : r.warnings)
+      pcout << "  WARNING: " << warning << ".\n";
 
     r.output_time    = output_timer.wall_time();
     r.time_loop_time = loop_time - r.output_time;

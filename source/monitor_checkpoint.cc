@@ -133,11 +133,14 @@ namespace fgimpact
     // one rank, and the same on every rank under MPI (written at once).
     if (vtu &&
         Utilities::MPI::max(rewrite_snapshot ? 1 : 0, plate_communicator) == 1)
-      vtu->write(step,
-                 t,
-                 stepper.displacement(),
-                 stepper.velocity(),
-                 {},
-                 &stepper.acceleration());
+      {
+        fields.update(stepper, true);
+        vtu->write(step,
+                   t,
+                   fields.displacement(),
+                   fields.velocity(),
+                   {},
+                   &fields.acceleration());
+      }
   }
 } // namespace fgimpact

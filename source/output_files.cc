@@ -150,7 +150,7 @@ namespace fgimpact
   void
   SummaryWriter::add_text(const std::string &name, const std::string &value)
   {
-    text += name + " = " + value + '\n';
+    text += name + " = " + (value.empty() ? "none" : value) + '\n';
   }
 
 

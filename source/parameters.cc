@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/tensor.h>
 
 #include <fgimpact/parameters.h>
 #include <fgimpact/study.h>
@@ -23,92 +24,127 @@ namespace fgimpact
     }
 
     /**
-     * The rigid-body motions that the side supports leave free: their
-     * number, and the names of the translations and rotations (about axes
-     * through the plate's centre) among them.  A rigid motion is affine,
-     * so it vanishes on a face if it vanishes at the face's corners: each
-     * constrained component at each corner of a supported face is one row
-     * of A (6 columns, one per rigid mode), and the free motions are the
-     * null space of A, of dimension 6 - rank(A^T A).
+     * The rigid-body motions that the supports of the four sides and of
+     * the bottom face leave free: the null space of A, whose rows are the
+     * constrained components at the corners of the supported faces (a
+     * rigid motion t + omega x p is affine, so it vanishes on a face if it
+     * vanishes at its corners), one column per mode (t_x, t_y, t_z,
+     * omega_x, omega_y, omega_z; p relative to the plate's centre, scaled
+     * by the largest dimension).  Reduced row echelon form with the
+     * translations first, so that each free rotation is reported with the
+     * axis it turns about.  Returns one description per free motion.
      */
-    unsigned int
-    free_rigid_body_modes(const PlateGeometry::Parameters &g,
-                          std::vector<std::string>        &names)
+    std::vector<std::string>
+    free_rigid_body_modes(const PlateGeometry::Parameters &g)
     {
       const double size = std::max({g.length, g.width, g.thickness});
       const std::array<double, 3> extent = {
         {g.length / size, g.width / size, g.thickness / size}};
-      double              gram[6][6] = {};
-      std::array<bool, 6> moves = {{false, false, false, false, false, false}};
-      for (unsigned int face = 0; face < 4; ++face)
+      std::vector<std::array<double, 6>> A;
+      // Faces x min, x max, y min, y max (ids 0-3), then z min (id 4).
+      for (unsigned int face = 0; face < 5; ++face)
         {
-          if (g.supports[face] == SideSupport::free)
+          const SideSupport support =
+            face < 4 ? g.supports[face] : g.bottom_support;
+          if (support == SideSupport::free)
             continue;
-          const unsigned int        normal = face / 2; // 0: x faces, 1: y faces
-          std::vector<unsigned int> components = {1 - normal, 2};
-          if (g.supports[face] == SideSupport::clamped)
+          const unsigned int normal = face / 2; // 0: x, 1: y, 2: z faces
+          const unsigned int t1 = (normal + 1) % 3, t2 = (normal + 2) % 3;
+          // Simply supported: the side's w and tangential in-plane
+          // component (Eq. 2.15), the base's w only.
+          std::vector<unsigned int> components =
+            (normal == 2 ? std::vector<unsigned int>{2} :
+                           std::vector<unsigned int>{1 - normal, 2});
+          if (support == SideSupport::clamped)
             components = {0, 1, 2};
           for (unsigned int corner = 0; corner < 4; ++corner)
             {
-              // The corner, relative to the centre (scaled by the size).
               std::array<double, 3> p;
-              p[normal]     = (face % 2 - 0.5) * extent[normal];
-              p[1 - normal] = ((corner & 1) - 0.5) * extent[1 - normal];
-              p[2]          = ((corner >> 1) - 0.5) * extent[2];
+              p[normal] = (face % 2 - 0.5) * extent[normal];
+              p[t1]     = ((corner & 1) - 0.5) * extent[t1];
+              p[t2]     = ((corner >> 1) - 0.5) * extent[t2];
               for (const unsigned int c : components)
                 {
-                  // Translations e_k, rotations e_r x p, component c.
-                  const std::array<std::array<double, 3>, 3> rotation = {
-                    {{{0., -p[2], p[1]}},
-                     {{p[2], 0., -p[0]}},
-                     {{-p[1], p[0], 0.}}}};
-                  double row[6];
+                  // (t + omega x p)_c: t_c + sum_k omega_k (e_k x p)_c.
+                  std::array<double, 6> row = {};
+                  row[c] = 1.;
                   for (unsigned int k = 0; k < 3; ++k)
                     {
-                      row[k]     = (c == k) ? 1. : 0.;
-                      row[3 + k] = rotation[k][c];
+                      const unsigned int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+                      // e_k x p = e_k1 p_k2 - e_k2 p_k1
+                      row[3 + k] = (c == k1 ? p[k2] : c == k2 ? -p[k1] : 0.);
                     }
-                  for (unsigned int i = 0; i < 6; ++i)
-                    {
-                      moves[i] = moves[i] || std::abs(row[i]) > 1e-12;
-                      for (unsigned int j = 0; j < 6; ++j)
-                        gram[i][j] += row[i] * row[j];
-                    }
+                  A.push_back(row);
                 }
             }
         }
-      // Rank by Gaussian elimination with full (diagonal) pivoting.
-      unsigned int rank    = 0;
-      bool         used[6] = {};
-      for (unsigned int step = 0; step < 6; ++step)
+      // Reduced row echelon form (partial pivoting, column by column).
+      std::array<int, 6> pivot_row;
+      pivot_row.fill(-1);
+      unsigned int rank = 0;
+      for (unsigned int col = 0; col < 6 && rank < A.size(); ++col)
         {
-          unsigned int pivot = 6;
-          for (unsigned int i = 0; i < 6; ++i)
-            if (!used[i] && (pivot == 6 || gram[i][i] > gram[pivot][pivot]))
-              pivot = i;
-          if (pivot == 6 || gram[pivot][pivot] <= 1e-10)
-            break;
-          used[pivot] = true;
-          ++rank;
-          for (unsigned int i = 0; i < 6; ++i)
-            if (!used[i])
+          unsigned int best = rank;
+          for (unsigned int r = rank; r < A.size(); ++r)
+            if (std::abs(A[r][col]) > std::abs(A[best][col]))
+              best = r;
+          if (std::abs(A[best][col]) <= 1e-10)
+            continue;
+          std::swap(A[rank], A[best]);
+          const double diagonal = A[rank][col];
+          for (double &x : A[rank])
+            x /= diagonal;
+          for (unsigned int r = 0; r < A.size(); ++r)
+            if (r != rank && A[r][col] != 0.)
               {
-                const double factor = gram[i][pivot] / gram[pivot][pivot];
+                const double factor = A[r][col];
                 for (unsigned int j = 0; j < 6; ++j)
-                  gram[i][j] -= factor * gram[pivot][j];
+                  A[r][j] -= factor * A[rank][j];
               }
+          pivot_row[col] = rank++;
         }
-      const char *mode_names[6] = {"translation in x",
-                                   "translation in y",
-                                   "translation in z",
-                                   "rotation about x",
-                                   "rotation about y",
-                                   "rotation about z"};
-      for (unsigned int k = 0; k < 6; ++k)
-        if (!moves[k])
-          names.emplace_back(mode_names[k]);
-      return 6 - rank;
+      const char *axes = "xyz";
+      std::vector<std::string> modes;
+      for (unsigned int free = 0; free < 6; ++free)
+        if (pivot_row[free] < 0)
+          {
+            // The null vector with this free variable = 1.
+            std::array<double, 6> x = {};
+            x[free]                 = 1.;
+            for (unsigned int col = 0; col < 6; ++col)
+              if (pivot_row[col] >= 0)
+                x[col] = -A[pivot_row[col]][free];
+            std::ostringstream name;
+            if (free < 3)
+              name << "translation in " << axes[free];
+            else
+              {
+                // omega x t / |omega|^2 is the point of the axis nearest
+                // the centre (in mm of the plate's coordinates).
+                const Tensor<1, 3> t({x[0], x[1], x[2]}),
+                  w({x[3], x[4], x[5]});
+                const Tensor<1, 3> p0 = cross_product_3d(w, t) / (w * w);
+                const double centre[3] = {g.length / 2,
+                                          g.width / 2,
+                                          g.thickness / 2};
+                name << "rotation about ";
+                if (std::abs(w[(free + 1) % 3]) + std::abs(w[(free + 2) % 3]) <
+                    1e-10)
+                  name << "the " << axes[free - 3] << " axis";
+                else
+                  name << "the axis (" << w[0] << ", " << w[1] << ", " << w[2]
+                       << ")";
+                name << " through (";
+                for (unsigned int d = 0; d < 3; ++d)
+                  name << (d ? ", " : "")
+                       << std::round((centre[d] + p0[d] * size) * 1e4) / 10.;
+                name << ") mm";
+              }
+            modes.push_back(name.str());
+          }
+      return modes;
     }
+
     /// Refuse K-only problems on a plate with a free rigid-body mode.
     void
     validate_supports(const Parameters &parameters)
@@ -121,27 +157,26 @@ namespace fgimpact
          parameters.modal.shift == 0.);
       if (!uses_K_alone)
         return;
-      std::vector<std::string> names;
-      const unsigned int       n_free =
-        free_rigid_body_modes(parameters.geometry, names);
-      if (n_free == 0)
+      const std::vector<std::string> modes =
+        free_rigid_body_modes(parameters.geometry);
+      if (modes.empty())
         return;
       std::ostringstream text;
       text << "Boundary conditions: the supports (";
       for (unsigned int face = 0; face < 4; ++face)
-        text << (face ? ", " : "") << PlateGeometry::side_names[face] << " = "
-             << support_name(parameters.geometry.supports[face]);
-      text << ") leave " << n_free << " rigid-body mode"
-           << (n_free > 1 ? "s" : "") << " free (";
-      for (unsigned int i = 0; i < names.size(); ++i)
-        text << (i ? ", " : "") << names[i];
-      text << (names.empty() ? "" : ", ") << "of 6)";
-      text << ", so the stiffness matrix of the "
+        text << PlateGeometry::side_names[face] << " = "
+             << support_name(parameters.geometry.supports[face]) << ", ";
+      text << "Face z min = "
+           << support_name(parameters.geometry.bottom_support) << ") leave "
+           << modes.size() << " of 6 rigid-body modes free (";
+      for (unsigned int i = 0; i < modes.size(); ++i)
+        text << (i ? ", " : "") << modes[i];
+      text << "), so the stiffness matrix of the "
            << (parameters.problem_type == ProblemType::static_load ?
                  "static problem" :
                  "modal problem with Modal/Shift = 0")
            << " is singular; support more faces (Boundary conditions/Face x "
-              "min ... Face y max)"
+              "min ... Face z min)"
            << (parameters.problem_type == ProblemType::modal ?
                  " or set Modal/Shift > 0" :
                  "")
@@ -242,6 +277,19 @@ namespace fgimpact
                 ExcMessage("Contact/Model = resolved sphere needs Time "
                            "integration/Scheme = implicit: its contact is "
                            "rigid, which no explicit step is stable for."));
+    // The resolved contact's ball is rigid: an elastic one would be
+    // ignored without a word (its compliance lowers the default scene's
+    // peak force by 13.6 % with the Hertz law).
+    AssertThrow(!(uses_resolved_contact() && impactor.elastic),
+                ExcMessage(
+                  "Impactor/Material = elastic is not available with " +
+                  std::string(problem_type == ProblemType::impact ?
+                                "Contact/Model = resolved sphere" :
+                                "Static/Load = sphere") +
+                  ": its ball is rigid (the elastic ball is not built yet); "
+                  "set Impactor/Material = rigid, or use Contact/Model = "
+                  "hertz node or hertz midplane, whose Hertz law takes the "
+                  "ball's modulus."));
     AssertThrow(output.directory.find_first_not_of(" \t") != std::string::npos,
                 ExcMessage("Output/Directory is empty."));
     AssertThrow(2. * impactor.radius <= std::min(a, b),
@@ -285,5 +333,15 @@ namespace fgimpact
     text << "; choose Geometry/Subdivisions so that a node lies there.";
     result.push_back(text.str());
     return result;
+  }
+
+  bool
+  Parameters::uses_resolved_contact() const
+  {
+    return (problem_type == ProblemType::impact &&
+            contact_model.model ==
+              ContactModelParameters::Model::resolved_sphere) ||
+           (problem_type == ProblemType::static_load &&
+            static_analysis.load == StaticAnalysis::Load::sphere);
   }
 } // namespace fgimpact

@@ -264,6 +264,11 @@ namespace fgimpact
             for (const auto dof : sdofs)
               sums[0](dof) += 1.;
           }
+      // A hanging node's recovered value is its parents' interpolation
+      // (StressRecovery): its coefficient goes to them.
+      const AffineConstraints<double> hanging =
+        scalar_hanging_constraints(scalar_dofs);
+      Vector<double> local(sdofs.size());
       for (unsigned int p = 0; p < points.size(); ++p)
         {
           const auto cells = locally_owned_cells_containing(plate, points[p]);
@@ -273,8 +278,8 @@ namespace fgimpact
             {
               scalar_cell(scalar_dofs, cell)->get_dof_indices(sdofs);
               for (unsigned int k = 0; k < sdofs.size(); ++k)
-                sums[1 + p](sdofs[k]) +=
-                  scalar_fe.shape_value(k, unit_point) / n_cells;
+                local[k] = scalar_fe.shape_value(k, unit_point) / n_cells;
+              hanging.distribute_local_to_global(local, sdofs, sums[1 + p]);
             }
         }
       std::vector<TrilinosWrappers::MPI::Vector> ghosted(sums.size());

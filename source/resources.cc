@@ -146,8 +146,10 @@ namespace fgimpact
 
 
   ResourceEstimate
-  estimate_resources(const Parameters &parameters, const double core_radius)
+  estimate_resources(const Parameters      &parameters,
+                     const LocalRefinement &refinement)
   {
+    const double core_radius = refinement.radius;
     const auto        &g = parameters.geometry;
     const unsigned int p = parameters.finite_element.degree;
     ResourceEstimate   e;
@@ -167,7 +169,7 @@ namespace fgimpact
                  hy    = g.width / g.subdivisions_y,
                  hz    = g.thickness / g.subdivisions_z;
     e.n_cells          = sx * sy * sz;
-    for (unsigned int k = 0; k < g.contact_refinement_levels; ++k)
+    for (unsigned int k = 0; k < refinement.levels; ++k)
       {
         const double h_k    = hx / std::pow(2., k);
         const double cell   = hx * hy * hz / std::pow(8., k);

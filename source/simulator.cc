@@ -220,14 +220,14 @@ namespace fgimpact
       std::make_unique<FunctionallyGradedMaterial>(parameters.material,
                                                    geometry->thickness());
     // Refuse a run that cannot fit before the long set-up (the mesh).
-    resource_estimate =
-      estimate_resources(parameters, contact_refinement().radius);
+    const LocalRefinement refinement = contact_refinement();
+    resource_estimate = estimate_resources(parameters, refinement);
     check_memory(parameters, resource_estimate, mpi_communicator);
     plate = std::make_unique<PlateModel>(parameters.finite_element,
                                          *geometry,
                                          *material,
                                          mpi_communicator);
-    plate->setup(contact_refinement());
+    plate->setup(refinement);
 
     const PropertyMode mode = parameters.material.property_mode;
     pcout << "fgimpact: FGM plate " << geometry->length() << " x "
@@ -256,10 +256,10 @@ namespace fgimpact
     if (!parameters.geometry.symmetry_note.empty())
       pcout << "  " << parameters.geometry.symmetry_note << '\n';
     warn_sampled_boundary_layer();
-    if (parameters.geometry.contact_refinement_levels > 0)
-      pcout << "  contact refinement: "
-            << parameters.geometry.contact_refinement_levels
-            << " levels within " << contact_refinement().radius * 1e3
+    if (refinement.levels > 0)
+      pcout << "  contact refinement: " << refinement.levels << " levels"
+            << (parameters.geometry.contact_refinement_auto ? " (auto)" : "")
+            << " within " << refinement.radius * 1e3
             << " mm of the impact point, smallest element "
             << plate->smallest_cell_size() * 1e6 << " um\n";
     return *plate;
@@ -305,12 +305,38 @@ namespace fgimpact
     const Point<2>       p = impactor.impact_point(g.length(), g.width());
     LocalRefinement      refinement;
     refinement.centre = Point<3>(p[0], p[1], g.thickness());
-    refinement.levels = parameters.geometry.contact_refinement_levels;
-    refinement.radius =
-      (parameters.geometry.contact_refinement_radius > 0. ?
-         parameters.geometry.contact_refinement_radius :
-         1.5 * expected_contact_radius(parameters, *material, g.thickness()));
+    const double a_max =
+      expected_contact_radius(parameters, *material, g.thickness());
+    refinement.levels =
+      parameters.geometry.contact_refinement_auto ?
+        automatic_contact_refinement_levels(parameters, a_max) :
+        parameters.geometry.contact_refinement_levels;
+    refinement.radius = (parameters.geometry.contact_refinement_radius > 0. ?
+                           parameters.geometry.contact_refinement_radius :
+                           1.5 * a_max);
     return refinement;
+  }
+
+
+
+  unsigned int
+  automatic_contact_refinement_levels(const Parameters &parameters,
+                                      const double      contact_radius)
+  {
+    if (!parameters.uses_resolved_contact())
+      return 0;
+    // The fewest levels whose in-plane element size h0 / 2^L puts
+    // contact_elements_per_radius element sizes across the estimated
+    // largest contact radius (doc/contact.md derives the number).
+    const auto  &g  = parameters.geometry;
+    const double h0 = std::min(g.length / g.subdivisions_x,
+                               g.width / g.subdivisions_y);
+    unsigned int levels = 0;
+    while (levels < 12 &&
+           h0 / std::pow(2., levels) >
+             contact_radius / contact_elements_per_radius * (1. + 1e-12))
+      ++levels;
+    return levels;
   }
 
 

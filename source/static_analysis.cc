@@ -174,7 +174,10 @@ namespace fgimpact
           break;
         AssertThrow(contact.grow_candidates(),
                     ExcMessage("Static/Indentation: the contact reaches the "
-                               "sphere's radius; reduce the indentation."));
+                               "sphere's radius; reduce the indentation, or "
+                               "raise Geometry/Contact refinement levels if "
+                               "the elements under the ball are coarser "
+                               "than the contact radius."));
       }
     const auto &dofs        = contact.contact_dofs();
     results.contact_force   = state.force / plate.get_geometry().share();

@@ -93,6 +93,21 @@ namespace fgimpact
     for (const auto dof : owned)
       inverse_count(dof) = 1. / count(dof);
     cut_planes = dofs_on_cut_planes(plate.get_geometry(), dof_handler);
+    hanging    = scalar_hanging_constraints(dof_handler);
+  }
+
+
+
+  AffineConstraints<double>
+  scalar_hanging_constraints(const DoFHandler<3> &dof_handler)
+  {
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+    AffineConstraints<double> constraints;
+    constraints.reinit(relevant);
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    constraints.close();
+    return constraints;
   }
 
 
@@ -218,8 +233,14 @@ namespace fgimpact
             abs_zz :
             std::max<double>(owned_values[peak_abs_stress_zz](dof), abs_zz);
       }
+    // A hanging node's average holds only its fine cells: its value is
+    // its parents' interpolation instead, as for the displacement, so that
+    // the coarse and the fine cells show the same field there.
     for (unsigned int f = 0; f < n_fields; ++f)
-      ghosted[f] = owned_values[f];
+      {
+        hanging.distribute(owned_values[f]);
+        ghosted[f] = owned_values[f];
+      }
     ++n_recovered;
   }
 } // namespace fgimpact

@@ -171,8 +171,9 @@ namespace fgimpact
                                                    "Newton/Tolerance",
                                                    "Newton/Max iterations"};
       const bool                         mesh_follows_impactor =
-        p.geometry.contact_refinement_levels > 0 &&
-        p.geometry.contact_refinement_radius == 0.;
+        (p.geometry.contact_refinement_levels > 0 &&
+         p.geometry.contact_refinement_radius == 0.) ||
+        (p.geometry.contact_refinement_auto && p.uses_resolved_contact());
       return others.count(path) > 0 ||
              (impactor.count(path) > 0 && !mesh_follows_impactor);
     }
@@ -317,16 +318,9 @@ namespace fgimpact
       return entries;
     }
 
-    bool
-    is_number(const std::string &text)
-    {
-      char *end = nullptr;
-      std::strtod(text.c_str(), &end);
-      return !text.empty() && end != nullptr && *end == '\0';
-    }
-
-    /// study.csv: case, the varied entries, every numeric summary key (of
-    /// the first case; "none" stays "none").
+    /// study.csv: case, the varied entries, every summary key (of the
+    /// first case: the numbers, "none", and the words that say what was
+    /// modelled and how the case ended; no value holds a comma).
     void
     write_study_csv(const std::vector<ParsedCase> &cases,
                     const std::string             &filename)
@@ -334,8 +328,7 @@ namespace fgimpact
       std::vector<std::string> keys;
       for (const auto &[key, value] :
            read_summary(cases[0].parameters.output.directory + "/summary.txt"))
-        if (is_number(value) || value == "none")
-          keys.push_back(key);
+        keys.push_back(key);
       std::ostringstream csv;
       csv << "case";
       for (const auto &path : cases[0].study_case.paths)

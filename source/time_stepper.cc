@@ -411,7 +411,10 @@ namespace fgimpact
                                "candidate set at " +
                                time_step_label(step, t) +
                                ", which cannot grow beyond the sphere's "
-                               "radius."));
+                               "radius: the elements under the ball are too "
+                               "coarse for the resolved contact; raise "
+                               "Geometry/Contact refinement levels (auto "
+                               "chooses them from the scene)."));
         rebuild_for_contact_dofs();
         if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
           std::cout << "  " << time_step_label(step, t)

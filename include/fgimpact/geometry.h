@@ -75,11 +75,14 @@ namespace fgimpact
       /// Support of the bottom face z = 0 (id 4): simply supported is
       /// w = 0 only (a frictionless rigid base).
       SideSupport bottom_support = SideSupport::free;
-      /// Contact refinement: levels and the core radius (m, 0: automatic).
+      /// Contact refinement: levels as given (auto: chosen from the scene
+      /// by Simulator::contact_refinement(), levels then 0 here) and the
+      /// core radius (m, 0: automatic).
+      bool         contact_refinement_auto   = true;
       unsigned int contact_refinement_levels = 0;
       double       contact_refinement_radius = 0;
       /// Geometry/Symmetry as requested.
-      Symmetry symmetry = Symmetry::none;
+      Symmetry symmetry = Symmetry::automatic;
       /// The symmetry planes actually cut (x = a/2, y = b/2), set by
       /// resolve_symmetry() (symmetry.cc) once the whole scene is known.
       std::array<bool, 2> cut = {{false, false}};

@@ -91,6 +91,12 @@ namespace fgimpact
     void
     do_timestep();
 
+    /// One log line on what the contact's accuracy depends on: the mesh
+    /// dependence of hertz node; a resolved sphere whose estimated contact
+    /// radius spans fewer than contact_elements_per_radius elements.
+    void
+    note_contact_resolution();
+
     /// Restore the state of the checkpoint in the output directory (the
     /// driver's part; the monitor reads the rest); returns its reader.
     std::unique_ptr<CheckpointReader>

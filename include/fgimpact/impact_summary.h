@@ -1,6 +1,8 @@
 #ifndef fgimpact_impact_summary_h
 #define fgimpact_impact_summary_h
 
+#include <fgimpact/parameters.h>
+#include <fgimpact/plate_model.h>
 #include <fgimpact/results.h>
 
 #include <string>
@@ -17,6 +19,26 @@ namespace fgimpact
    * sphere's keys; instrumentation: spmv_ms and solve_ms.  Throws
    * ExcOutputFailure if filename cannot be written.
    */
+  /**
+   * What the run models: the parameters' choices as resolved (the
+   * symmetric part, the contact refinement levels of the mesh) and the
+   * in-plane element size at the impact point (m, measured on the mesh).
+   * Collective.
+   */
+  ModelDescription
+  describe_model(const Parameters &parameters,
+                 const PlateModel &plate,
+                 const double      time_step);
+
+  /**
+   * The end-of-run warnings on what the run resolved: a resolved contact
+   * whose largest contact radius spans fewer than
+   * contact_elements_per_radius element sizes.  One line each, naming the
+   * parameter to change.
+   */
+  std::vector<std::string>
+  resolution_warnings(const ImpactResults &r, const bool contact_area);
+
   void
   write_impact_summary(const std::string   &filename,
                        const ImpactResults &r,

@@ -10,6 +10,7 @@
 #include <fgimpact/contact_model.h>
 #include <fgimpact/contact_output.h>
 #include <fgimpact/logger.h>
+#include <fgimpact/plate_fields.h>
 #include <fgimpact/plate_model.h>
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/probe_set.h>
@@ -165,15 +166,15 @@ namespace fgimpact
            const ImpactorState &ball,
            const ContactState  &contact);
 
-    /// The same with the plate given as a sample; VTU snapshots only if a
-    /// stepper (holding the fields) is given.
+    /// The same with the plate given as a sample; probes and VTU snapshots
+    /// only if the fields (constraints distributed) are given.
     void
     record(const unsigned int   step,
            const double         t,
            const PlateSample   &plate,
            const ImpactorState &ball,
            const ContactState  &contact,
-           const TimeStepper   *stepper = nullptr);
+           const PlateFields   *fields = nullptr);
     /**
      * For a checkpoint: the monitor's state (the time history's results,
      * peak detection, episodes, the contact work, the watchdog), the
@@ -231,7 +232,7 @@ namespace fgimpact
     void
     write_outputs(const unsigned int   step,
                   const double         t,
-                  const TimeStepper   *stepper,
+                  const PlateFields   *fields,
                   const HistorySample &sample);
     void
     print_results() const;
@@ -251,6 +252,9 @@ namespace fgimpact
     ImpactResults     &impact_results;
 
     PointProbe                 mid_probe, top_probe;
+    /// The stepper's fields with the constraints distributed: every
+    /// probe, VTU snapshot and peak field reads these.
+    PlateFields                fields;
     std::unique_ptr<CsvWriter> history;
     /// probes.csv: the probe points and the support reaction.
     std::unique_ptr<ProbeSet>         probe_set;

@@ -73,6 +73,12 @@ namespace fgimpact
     /// naming the parameter): no node under the impact point.
     std::vector<std::string>
     warnings() const;
+
+    /// Whether the ball's contact is resolved (Contact/Model = resolved
+    /// sphere in an impact, Static/Load = sphere): its accuracy then
+    /// depends on the element size under the ball.
+    bool
+    uses_resolved_contact() const;
   };
 } // namespace fgimpact
 

@@ -61,6 +61,18 @@ namespace fgimpact
     double
     smallest_cell_size() const;
 
+    /// The smallest in-plane edge (m) of the cells that touch p, over all
+    /// ranks (the element size under the ball at the impact point).
+    double
+    cell_size_at(const Point<3> &p) const;
+
+    /// The contact refinement the mesh was made with (setup()).
+    const LocalRefinement &
+    contact_refinement() const
+    {
+      return refinement;
+    }
+
     types::global_dof_index
     n_dofs() const
     {
@@ -218,6 +230,7 @@ namespace fgimpact
     AffineConstraints<double>               constraints;
     TrilinosWrappers::SparseMatrix          stiffness, mass;
     TrilinosWrappers::MPI::Vector           cut_coupling;
+    LocalRefinement                         refinement;
 
     void
     assemble_cut_mass_coupling();

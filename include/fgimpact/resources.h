@@ -8,6 +8,7 @@
 namespace fgimpact
 {
   struct Parameters;
+  struct LocalRefinement;
 
   /**
    * Memory this process may still use: the smaller of the node's
@@ -67,10 +68,12 @@ namespace fgimpact
                                double       nz,
                                unsigned int components = 3);
 
-  /// The estimate for these parameters; core_radius (m): the radius of
-  /// the contact refinement's finest core (Simulator::contact_refinement()).
+  /// The estimate for these parameters and the contact refinement
+  /// (levels and the radius of its finest core, m:
+  /// Simulator::contact_refinement()).
   ResourceEstimate
-  estimate_resources(const Parameters &parameters, const double core_radius);
+  estimate_resources(const Parameters      &parameters,
+                     const LocalRefinement &refinement);
 
   /**
    * Refuse (ExcMessage, one line with both numbers and what to change) a

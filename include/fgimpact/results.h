@@ -1,8 +1,30 @@
 #ifndef fgimpact_results_h
 #define fgimpact_results_h
 
+#include <string>
+#include <vector>
+
 namespace fgimpact
 {
+  /**
+   * What an impact run modelled (summary.txt and every row of study.csv):
+   * the choices that decide its accuracy, as the run resolved them.
+   */
+  struct ModelDescription
+  {
+    std::string  contact_model;                 // Contact/Model
+    unsigned int contact_refinement_levels = 0; // as applied (auto resolved)
+    double       element_size_under_ball   = 0; // m, in-plane, at the point
+    double       time_step                 = 0; // s
+    std::string  scheme;                        // implicit | explicit
+    unsigned int element_degree = 1;
+    std::string  symmetry;      // the part modelled: none | half | quarter
+    std::string  property_mode; // graded | homogeneous | pointwise
+    std::string  gradation;     // power law | exponential | sigmoid | ...
+    double       power_law_index = 0;
+    std::string  homogenization;
+  };
+
   /**
    * The results of an impact run, in SI units, as written to summary.txt
    * (ImpactMonitor::write_summary() scales them).
@@ -49,6 +71,10 @@ namespace fgimpact
     double spmv_time  = 0; // one matrix-vector product
     double solve_time = 0; // one solve with K_eff
     double wall_time  = 0; // s
+    /// What was modelled (set-up), and the warnings of the finished run
+    /// (one line each, naming what to change).
+    ModelDescription         model;
+    std::vector<std::string> warnings;
   };
 } // namespace fgimpact
 

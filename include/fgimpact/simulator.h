@@ -26,6 +26,19 @@ namespace fgimpact
    * sqrt(R delta).  Sizes the contact refinement and the resolved
    * contact's candidate set.
    */
+  /// The element sizes across the largest contact radius that the
+  /// automatic contact refinement aims at, and below which a finished
+  /// resolved run warns (doc/contact.md).
+  constexpr double contact_elements_per_radius = 4.;
+
+  /// Geometry/Contact refinement levels = auto: 0 unless the contact is
+  /// resolved (Parameters::uses_resolved_contact()); then the fewest levels
+  /// with contact_elements_per_radius in-plane element sizes across
+  /// contact_radius (m, the half-space Hertz estimate).
+  unsigned int
+  automatic_contact_refinement_levels(const Parameters &parameters,
+                                      const double      contact_radius);
+
   double
   expected_contact_radius(const Parameters                 &parameters,
                           const FunctionallyGradedMaterial &material,

@@ -5,6 +5,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <fgimpact/plate_model.h>
@@ -129,7 +130,16 @@ namespace fgimpact
     unsigned int                                        n_recovered = 0;
     /// dofs_on_cut_planes() of the scalar DoFHandler.
     std::map<types::global_dof_index, unsigned int> cut_planes;
+    /// The scalar field's hanging-node constraints: a hanging node's
+    /// recovered value is its parents' interpolation (a conforming field).
+    AffineConstraints<double> hanging;
   };
+
+  /// The hanging-node constraints of a scalar DoFHandler on the plate's
+  /// mesh (empty without local refinement), closed, on the locally
+  /// relevant DoFs.
+  AffineConstraints<double>
+  scalar_hanging_constraints(const DoFHandler<3> &dof_handler);
 } // namespace fgimpact
 
 #endif

@@ -321,7 +321,24 @@ namespace
        "set Problem type = static\n" + small +
          "subsection Boundary conditions\n set Face y min = free\n set Face y max = free\nend\n",
        1,
-       "translation in x"}};
+       "translation in x"},
+      {"static, base simply supported, sides free",
+       "set Problem type = static\n" + small + all_free +
+         "subsection Boundary conditions\n set Face z min = simply supported\nend\n",
+       1,
+       "translation in x, translation in y, rotation about the z axis"},
+      {"static, one side simply supported",
+       "set Problem type = static\n" + small + all_free +
+         "subsection Boundary conditions\n set Face x min = simply supported\nend\n",
+       1,
+       "3 of 6 rigid-body modes free (translation in x, rotation about the "
+       "y axis through (0, 50, 0) mm, rotation about the z axis through (0, "
+       "0, 10) mm)"},
+      {"Impactor/Material = elastic with the resolved sphere",
+       "subsection Contact\n set Model = resolved sphere\nend\n"
+       "subsection Impactor\n set Material = elastic\nend\n",
+       1,
+       "Impactor/Material"}};
   }
 
 
@@ -443,6 +460,12 @@ namespace
        0,
        "Subdivisions"},
       {"ball still in contact at the end time", small + short_run, 0, ""},
+      {"static sphere on a block clamped at its base alone",
+       "set Problem type = static\n" + small + all_free +
+         "subsection Boundary conditions\n set Face z min = clamped\nend\n"
+         "subsection Static\n set Load = sphere\nend\n",
+       0,
+       ""},
       {"impact point between nodes",
        small + short_run +
          "subsection Impactor\n set Impact point x = 0.0537\nend\n",

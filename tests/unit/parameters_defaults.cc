@@ -55,7 +55,9 @@ main()
   SAME(geometry.subdivisions_z);
   SAME(geometry.supports);
   SAME(geometry.bottom_support);
+  SAME(geometry.contact_refinement_auto);
   SAME(geometry.contact_refinement_levels);
+  SAME(geometry.symmetry);
   SAME(geometry.contact_refinement_radius);
   SAME(material.metal_youngs_modulus);
   SAME(material.metal_density);

@@ -18,46 +18,14 @@
 #include <fstream>
 #include <sstream>
 #include <test_tools.h>
+#include <vtu_reader.h>
 
 using namespace dealii;
+using fgimpact_tests::read_array;
 
 namespace
 {
   const double dt = 2e-6; // s
-
-  /// The float32 values of the DataArray `name` of a deal.II VTU file
-  /// written without compression (zlib stored blocks).
-  std::vector<float>
-  read_array(const std::string &file, const std::string &name)
-  {
-    std::ifstream     in(file);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    const std::string text = buffer.str();
-    const auto        tag  = text.find("Name=\"" + name + "\"");
-    AssertThrow(tag != std::string::npos, ExcMessage(name + " not in " + file));
-    const auto  begin = text.find('>', tag) + 1;
-    const auto  end   = text.find("</DataArray>", begin);
-    std::string body  = text.substr(begin, end - begin);
-    body.erase(std::remove_if(body.begin(), body.end(), ::isspace), body.end());
-    // A 16-byte header (4 uint32, its own base64 group), then the zlib
-    // stream: 2 header bytes, stored blocks (1 flag byte, LEN, NLEN, data).
-    const std::vector<unsigned char> z =
-      Utilities::decode_base64(body.substr(24));
-    std::vector<unsigned char> raw;
-    std::size_t                i = 2;
-    for (bool last = false; !last && i + 5 <= z.size();)
-      {
-        AssertThrow((z[i] & 6) == 0, ExcMessage("not a stored zlib block"));
-        last                  = z[i] & 1;
-        const std::size_t len = z[i + 1] | (z[i + 2] << 8);
-        raw.insert(raw.end(), z.begin() + i + 5, z.begin() + i + 5 + len);
-        i += 5 + len;
-      }
-    std::vector<float> values(raw.size() / sizeof(float));
-    std::memcpy(values.data(), raw.data(), raw.size());
-    return values;
-  }
 
   std::string
   snapshot(const unsigned int n)
@@ -110,22 +78,7 @@ main(int argc, char **argv)
   // t = 20 us (step 10).
   const auto         points = read_array(snapshot(10), "acceleration_m_s2");
   const std::string  file   = snapshot(10);
-  std::vector<float> coordinates;
-  {
-    // The Points array has no Name: read it as the first binary DataArray
-    // of <Points>.
-    std::ifstream     in(file);
-    std::stringstream b;
-    b << in.rdbuf();
-    std::string text  = b.str();
-    const auto  start = text.find("<Points>");
-    text.replace(text.find("<DataArray", start),
-                 std::strlen("<DataArray"),
-                 "<DataArray Name=\"points\"");
-    std::ofstream tmp("points.vtu");
-    tmp << text;
-  }
-  coordinates = read_array("points.vtu", "points");
+  const std::vector<float> coordinates = fgimpact_tests::read_points(file);
   double a_z  = std::nan("");
   for (std::size_t k = 0; 3 * k + 2 < coordinates.size(); ++k)
     if (std::abs(coordinates[3 * k] - 0.1) < 1e-6 &&

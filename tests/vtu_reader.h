@@ -1,0 +1,84 @@
+#ifndef fgimpact_tests_vtu_reader_h
+#define fgimpact_tests_vtu_reader_h
+
+// Reads back what users open in ParaView: the data arrays of a deal.II VTU
+// piece written with Output/VTU compression = none (base64, zlib stored
+// blocks), independently of the library that wrote it.
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fgimpact_tests
+{
+  /// The whole text of a file.
+  inline std::string
+  file_text(const std::string &file)
+  {
+    std::ifstream     in(file);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    AssertThrow(in, dealii::ExcMessage("cannot read " + file));
+    return buffer.str();
+  }
+
+  /// The float32 values of the binary DataArray body that starts after
+  /// position `tag` of text.
+  inline std::vector<float>
+  decode_array(const std::string &text, const std::size_t tag)
+  {
+    const auto  begin = text.find('>', tag) + 1;
+    const auto  end   = text.find("</DataArray>", begin);
+    std::string body  = text.substr(begin, end - begin);
+    body.erase(std::remove_if(body.begin(), body.end(), ::isspace), body.end());
+    // A 16-byte header (4 uint32, its own base64 group), then the zlib
+    // stream: 2 header bytes, stored blocks (1 flag byte, LEN, NLEN, data).
+    const std::vector<unsigned char> z =
+      dealii::Utilities::decode_base64(body.substr(24));
+    std::vector<unsigned char> raw;
+    std::size_t                i = 2;
+    for (bool last = false; !last && i + 5 <= z.size();)
+      {
+        AssertThrow((z[i] & 6) == 0,
+                    dealii::ExcMessage("not a stored zlib block"));
+        last                  = z[i] & 1;
+        const std::size_t len = z[i + 1] | (z[i + 2] << 8);
+        raw.insert(raw.end(), z.begin() + i + 5, z.begin() + i + 5 + len);
+        i += 5 + len;
+      }
+    std::vector<float> values(raw.size() / sizeof(float));
+    std::memcpy(values.data(), raw.data(), raw.size());
+    return values;
+  }
+
+  /// The float32 values of the DataArray `name` of a VTU file.
+  inline std::vector<float>
+  read_array(const std::string &file, const std::string &name)
+  {
+    const std::string text = file_text(file);
+    const auto        tag  = text.find("Name=\"" + name + "\"");
+    AssertThrow(tag != std::string::npos,
+                dealii::ExcMessage(name + " not in " + file));
+    return decode_array(text, tag);
+  }
+
+  /// The point coordinates (x, y, z per point) of a VTU file: the first
+  /// DataArray of <Points>, which has no Name.
+  inline std::vector<float>
+  read_points(const std::string &file)
+  {
+    const std::string text  = file_text(file);
+    const auto        start = text.find("<Points>");
+    AssertThrow(start != std::string::npos,
+                dealii::ExcMessage("no <Points> in " + file));
+    return decode_array(text, text.find("<DataArray", start));
+  }
+} // namespace fgimpact_tests
+
+#endif
