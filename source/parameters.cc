@@ -71,8 +71,8 @@ namespace fgimpact
                   for (unsigned int k = 0; k < 3; ++k)
                     {
                       const unsigned int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
-                      // e_k x p = e_k1 p_k2 - e_k2 p_k1
-                      row[3 + k] = (c == k1 ? p[k2] : c == k2 ? -p[k1] : 0.);
+                      // e_k x p = e_k2 p_k1 - e_k1 p_k2
+                      row[3 + k] = (c == k1 ? -p[k2] : c == k2 ? p[k1] : 0.);
                     }
                   A.push_back(row);
                 }

@@ -28,8 +28,9 @@ namespace fgimpact_tests
 
   /**
    * Run the program through the library exactly as the executable does:
-   * the defaults, then the file `prm_file` (if not empty), then the .prm
-   * text `settings`; the log is kept out of the test output.
+   * the defaults (with Geometry/Symmetry = none), then the file `prm_file`
+   * (if not empty), then the .prm text `settings`; the log is kept out of
+   * the test output.
    */
   inline RunOutput
   run_quietly(const std::string &prm_file,
@@ -39,6 +40,11 @@ namespace fgimpact_tests
   {
     dealii::ParameterHandler prm;
     fgimpact::Parameters::declare_parameters(prm);
+    // The references of these tests are the whole plate: pin it (the
+    // built-in default is Symmetry = auto); a file or the settings that
+    // set Geometry/Symmetry still decide.
+    prm.parse_input_from_string(
+      "subsection Geometry\n set Symmetry = none\nend\n");
     if (!prm_file.empty())
       prm.parse_input(prm_file);
     prm.parse_input_from_string(settings);

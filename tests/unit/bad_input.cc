@@ -332,8 +332,8 @@ namespace
          "subsection Boundary conditions\n set Face x min = simply supported\nend\n",
        1,
        "3 of 6 rigid-body modes free (translation in x, rotation about the "
-       "y axis through (0, 50, 0) mm, rotation about the z axis through (0, "
-       "0, 10) mm)"},
+       "y axis through (0, 50, 10) mm, rotation about the z axis through "
+       "(0, 50, 10) mm)"},
       {"Impactor/Material = elastic with the resolved sphere",
        "subsection Contact\n set Model = resolved sphere\nend\n"
        "subsection Impactor\n set Material = elastic\nend\n",
@@ -463,7 +463,8 @@ namespace
       {"static sphere on a block clamped at its base alone",
        "set Problem type = static\n" + small + all_free +
          "subsection Boundary conditions\n set Face z min = clamped\nend\n"
-         "subsection Static\n set Load = sphere\nend\n",
+         "subsection Static\n set Load = sphere\nend\n"
+         "subsection Geometry\n set Contact refinement levels = 3\nend\n",
        0,
        ""},
       {"impact point between nodes",
