@@ -24,18 +24,15 @@ namespace fgimpact
     }
 
     /**
-     * The rigid-body motions that the supports of the four sides and of
-     * the bottom face leave free: the null space of A, whose rows are the
-     * constrained components at the corners of the supported faces (a
-     * rigid motion t + omega x p is affine, so it vanishes on a face if it
-     * vanishes at its corners), one column per mode (t_x, t_y, t_z,
-     * omega_x, omega_y, omega_z; p relative to the plate's centre, scaled
-     * by the largest dimension).  Reduced row echelon form with the
-     * translations first, so that each free rotation is reported with the
-     * axis it turns about.  Returns one description per free motion.
+     * The rows of A for the supports of the four sides and of the bottom
+     * face: one per constrained component at each corner of a supported
+     * face (a rigid motion t + omega x p is affine, so it vanishes on a
+     * face if it vanishes at its corners), one column per mode (t_x, t_y,
+     * t_z, omega_x, omega_y, omega_z; p relative to the plate's centre,
+     * scaled by the largest dimension).
      */
-    std::vector<std::string>
-    free_rigid_body_modes(const PlateGeometry::Parameters &g)
+    std::vector<std::array<double, 6>>
+    support_rows(const PlateGeometry::Parameters &g)
     {
       const double size = std::max({g.length, g.width, g.thickness});
       const std::array<double, 3> extent = {
@@ -52,11 +49,11 @@ namespace fgimpact
           const unsigned int t1 = (normal + 1) % 3, t2 = (normal + 2) % 3;
           // Simply supported: the side's w and tangential in-plane
           // component (Eq. 2.15), the base's w only.
-          std::vector<unsigned int> components =
-            (normal == 2 ? std::vector<unsigned int>{2} :
-                           std::vector<unsigned int>{1 - normal, 2});
-          if (support == SideSupport::clamped)
-            components = {0, 1, 2};
+          const std::vector<unsigned int> components =
+            support == SideSupport::clamped ?
+              std::vector<unsigned int>{0, 1, 2} :
+            normal == 2 ? std::vector<unsigned int>{2} :
+                          std::vector<unsigned int>{1 - normal, 2};
           for (unsigned int corner = 0; corner < 4; ++corner)
             {
               std::array<double, 3> p;
@@ -78,7 +75,17 @@ namespace fgimpact
                 }
             }
         }
-      // Reduced row echelon form (partial pivoting, column by column).
+      return A;
+    }
+
+    /**
+     * A basis of the null space of A: reduced row echelon form (partial
+     * pivoting, column by column, the translations first), then one
+     * vector per free column f with x_f = 1.  Returns (f, x) pairs.
+     */
+    std::vector<std::pair<unsigned int, std::array<double, 6>>>
+    null_space(std::vector<std::array<double, 6>> A)
+    {
       std::array<int, 6> pivot_row;
       pivot_row.fill(-1);
       unsigned int rank = 0;
@@ -103,45 +110,65 @@ namespace fgimpact
               }
           pivot_row[col] = rank++;
         }
-      const char *axes = "xyz";
-      std::vector<std::string> modes;
+      std::vector<std::pair<unsigned int, std::array<double, 6>>> basis;
       for (unsigned int free = 0; free < 6; ++free)
         if (pivot_row[free] < 0)
           {
-            // The null vector with this free variable = 1.
             std::array<double, 6> x = {};
             x[free]                 = 1.;
             for (unsigned int col = 0; col < 6; ++col)
               if (pivot_row[col] >= 0)
                 x[col] = -A[pivot_row[col]][free];
-            std::ostringstream name;
-            if (free < 3)
-              name << "translation in " << axes[free];
-            else
-              {
-                // omega x t / |omega|^2 is the point of the axis nearest
-                // the centre (in mm of the plate's coordinates).
-                const Tensor<1, 3> t({x[0], x[1], x[2]}),
-                  w({x[3], x[4], x[5]});
-                const Tensor<1, 3> p0 = cross_product_3d(w, t) / (w * w);
-                const double centre[3] = {g.length / 2,
-                                          g.width / 2,
-                                          g.thickness / 2};
-                name << "rotation about ";
-                if (std::abs(w[(free + 1) % 3]) + std::abs(w[(free + 2) % 3]) <
-                    1e-10)
-                  name << "the " << axes[free - 3] << " axis";
-                else
-                  name << "the axis (" << w[0] << ", " << w[1] << ", " << w[2]
-                       << ")";
-                name << " through (";
-                for (unsigned int d = 0; d < 3; ++d)
-                  name << (d ? ", " : "")
-                       << std::round((centre[d] + p0[d] * size) * 1e4) / 10.;
-                name << ") mm";
-              }
-            modes.push_back(name.str());
+            basis.emplace_back(free, x);
           }
+      return basis;
+    }
+
+    /**
+     * "translation in x", or "rotation about the z axis through (x, y, z)
+     * mm" for the null vector x whose free column is `free`: the axis
+     * point nearest the centre, omega x t / |omega|^2, in the plate's
+     * coordinates.
+     */
+    std::string
+    describe_rigid_motion(const unsigned int               free,
+                          const std::array<double, 6>     &x,
+                          const PlateGeometry::Parameters &g)
+    {
+      const char        *axes = "xyz";
+      std::ostringstream name;
+      if (free < 3)
+        {
+          name << "translation in " << axes[free];
+          return name.str();
+        }
+      const double size = std::max({g.length, g.width, g.thickness});
+      const Tensor<1, 3> t({x[0], x[1], x[2]}), w({x[3], x[4], x[5]});
+      const Tensor<1, 3> p0       = cross_product_3d(w, t) / (w * w);
+      const double       centre[3] = {g.length / 2,
+                                      g.width / 2,
+                                      g.thickness / 2};
+      name << "rotation about ";
+      if (std::abs(w[(free + 1) % 3]) + std::abs(w[(free + 2) % 3]) < 1e-10)
+        name << "the " << axes[free - 3] << " axis";
+      else
+        name << "the axis (" << w[0] << ", " << w[1] << ", " << w[2] << ")";
+      name << " through (";
+      for (unsigned int d = 0; d < 3; ++d)
+        name << (d ? ", " : "")
+             << std::round((centre[d] + p0[d] * size) * 1e4) / 10.;
+      name << ") mm";
+      return name.str();
+    }
+
+    /// The rigid-body motions that the supports leave free (the null
+    /// space of support_rows()), one description each.
+    std::vector<std::string>
+    free_rigid_body_modes(const PlateGeometry::Parameters &g)
+    {
+      std::vector<std::string> modes;
+      for (const auto &[free, x] : null_space(support_rows(g)))
+        modes.push_back(describe_rigid_motion(free, x, g));
       return modes;
     }
 

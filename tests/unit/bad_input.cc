@@ -314,7 +314,7 @@ namespace
        1,
        "Boundary conditions/Face x min"},
       {"mesh far too large for the memory",
-       "subsection Geometry\n set Subdivisions x = 400\n set Subdivisions y = 200\n set Subdivisions z = 40\nend\n",
+       "subsection Geometry\n set Subdivisions x = 400\n set Subdivisions y = 200\n set Subdivisions z = 40\n set Symmetry = none\nend\n",
        1,
        "Geometry/Subdivisions"},
       {"static, only x faces supported",
@@ -334,6 +334,14 @@ namespace
        "3 of 6 rigid-body modes free (translation in x, rotation about the "
        "y axis through (0, 50, 10) mm, rotation about the z axis through "
        "(0, 50, 10) mm)"},
+      {"resolved sphere on a coarse mesh without refinement",
+       "subsection Contact\n set Model = resolved sphere\nend\n"
+       "subsection Geometry\n set Subdivisions x = 8\n set Subdivisions y = 4\n"
+       " set Subdivisions z = 2\n set Contact refinement levels = 0\nend\n"
+       "subsection Output\n set Log interval = 0\n set Print timing = false\nend\n" +
+         short_run,
+       2,
+       "Geometry/Contact refinement levels"},
       {"Impactor/Material = elastic with the resolved sphere",
        "subsection Contact\n set Model = resolved sphere\nend\n"
        "subsection Impactor\n set Material = elastic\nend\n",

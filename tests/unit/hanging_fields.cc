@@ -283,7 +283,7 @@ main(int argc, char **argv)
               vertex[d] = std::round(p.x[d] * 1e6) * 1e-3; // mm, whole um
           }
     }
-  Utilities::MPI::broadcast(MPI_COMM_WORLD, vertex, 0);
+  vertex = Utilities::MPI::broadcast(MPI_COMM_WORLD, vertex, 0);
   char probes[200];
   std::snprintf(probes,
                 sizeof(probes),

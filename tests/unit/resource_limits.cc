@@ -76,7 +76,8 @@ namespace
   {
     return "-s \"Geometry/Subdivisions x=" + std::to_string(x) +
            "\" -s \"Geometry/Subdivisions y=" + std::to_string(y) +
-           "\" -s \"Geometry/Subdivisions z=" + std::to_string(z) + "\" ";
+           "\" -s \"Geometry/Subdivisions z=" + std::to_string(z) +
+           "\" -s \"Geometry/Symmetry=none\" "; // the whole plate's sizes
   }
 
   /// Machine-dependent numbers: to stderr with FGIMPACT_VERBOSE=1 (the

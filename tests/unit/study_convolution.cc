@@ -29,7 +29,7 @@ namespace
 {
   const std::string base =
     "subsection Geometry\n set Subdivisions x = 10\n set Subdivisions y = 6\n"
-    " set Subdivisions z = 2\nend\n"
+    " set Subdivisions z = 2\n set Symmetry = none\nend\n"
     "subsection Time integration\n set End time = 300e-6\nend\n"
     "subsection Output\n set Log interval = 0\n set Print timing = false\n"
     " set VTU interval = 0\nend\n";
