@@ -3,6 +3,7 @@
 #include <fgimpact/checkpoint.h>
 #include <fgimpact/run_control.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -15,7 +16,8 @@ namespace fgimpact
   namespace
   {
     const char         magic[8] = {'F', 'G', 'I', 'M', 'P', 'C', 'K', 'P'};
-    const unsigned int format_version = 1;
+    // 2: probes.csv's length in the monitor's part; the header hashed.
+    const unsigned int format_version = 2;
 
     /// FNV-1a, 64 bit: detects a torn or damaged file, and tells
     /// parameter texts apart.
@@ -79,6 +81,18 @@ namespace fgimpact
                                  " has format version " +
                                  std::to_string(version) + ", this program " +
                                  std::to_string(format_version)));
+          // The whole file (header included: ranks, rank, step) is
+          // hashed, so that a damaged byte anywhere says so instead of
+          // being read as a different step or rank count.
+          const std::string &data = whole.str();
+          std::uint64_t      file_hash = 0;
+          AssertThrow(data.size() >= sizeof(file_hash), ExcMessage(damaged));
+          std::memcpy(&file_hash,
+                      data.data() + data.size() - sizeof(file_hash),
+                      sizeof(file_hash));
+          AssertThrow(file_hash ==
+                        hash_of(data.substr(0, data.size() - sizeof(file_hash))),
+                      ExcMessage(damaged));
           reader.get(header.n_ranks);
           reader.get(header.rank);
           reader.get(header.step);
@@ -272,6 +286,7 @@ namespace fgimpact
     file.put(parameters_text);
     file.put(payload);
     file.put(hash_of(payload));
+    file.put(hash_of(file.data()));
     std::string failure;
     try
       {

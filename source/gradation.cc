@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <fgimpact/gradation.h>
+#include <fgimpact/input_file.h>
 
 #include <algorithm>
 #include <cmath>
@@ -189,8 +190,9 @@ namespace fgimpact
   TabulatedProfile::TabulatedProfile(const std::string &filename)
   {
     const std::string where = "Material/Profile file '" + filename + "'";
-    std::ifstream     in(filename);
-    AssertThrow(in, ExcMessage(where + " cannot be opened."));
+    // A regular file of a sensible size, as the .prm (a FIFO or device
+    // would block or never end).
+    std::istringstream in(read_named_file(filename, where, "a CSV profile"));
     std::vector<unsigned int> line_numbers;
     std::string               line;
     bool                      header_allowed = true;

@@ -61,9 +61,7 @@ namespace fgimpact
                     "interrupted by %s after time step %u of %u (t = %.3f "
                     "us); history.csv, solution.pvd and summary.txt "
                     "(status = interrupted) are complete; ",
-                    stop == SIGINT  ? "SIGINT" :
-                    stop == SIGTERM ? "SIGTERM" :
-                                      "a signal",
+                    signal_name(stop),
                     steps_done,
                     n_steps,
                     steps_done * dt * 1e6);
@@ -164,7 +162,22 @@ namespace fgimpact
     // Machine-dependent (the memory available): with the timings.
     if (parameters.output.print_timing && !stepper->solver_log().empty())
       pcout << "  " << stepper->solver_log() << '\n';
+    check_time_step();
+  }
 
+
+
+  void
+  ImpactDriver::check_time_step() const
+  {
+    // The automatic explicit step is known only now (a given step is
+    // checked with the parameters).
+    AssertThrow(parameters.time_integration.end_time >= dt * (1. - 1e-9),
+                ExcMessage(
+                  "Time integration/End time = " +
+                  std::to_string(parameters.time_integration.end_time * 1e6) +
+                  " us is shorter than one time step (" +
+                  std::to_string(dt * 1e6) + " us)."));
     // Can dt resolve the contact?  Hertz's duration on a rigid half-space,
     // T = 2.943 alpha_max / V0 with alpha_max = (5 m V0^2 / (4 K))^(2/5),
     // is a lower bound of the plate's (99 us against 126 us in the default

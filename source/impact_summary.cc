@@ -43,6 +43,8 @@ namespace fgimpact
                   m.gradation == Gradation::sigmoid     ? "sigmoid" :
                                                           "tabulated";
     d.power_law_index = m.power_law_index;
+    d.impactor_radius = parameters.impactor.radius;
+    d.thickness       = g.thickness();
     d.homogenization  = m.homogenization == Homogenization::mori_tanaka ?
                           "Mori-Tanaka" :
                           "rule of mixtures";
@@ -74,6 +76,35 @@ namespace fgimpact
           r.model.contact_refinement_levels);
         warnings.emplace_back(text);
       }
+    // Small strains and Hertz's a << R: beyond these the model is
+    // outside its assumptions (a finite-strain, large-deflection problem).
+    const double R = r.model.impactor_radius, h = r.model.thickness;
+    const auto   beyond = [&](const char  *what,
+                            const double value,
+                            const double limit,
+                            const char  *of) {
+      char text[300];
+      std::snprintf(text,
+                    sizeof(text),
+                    "the %s (%.4g mm) exceeds %.0f %% of %s (%.4g mm): "
+                    "outside the small-strain elastic model; lower "
+                    "Impactor/Initial velocity or check the scene",
+                    what,
+                    value * 1e3,
+                    100. * limit,
+                    of,
+                    (of[0] == 'R' ? R : h) * 1e3);
+      warnings.emplace_back(text);
+    };
+    if (R > 0 && r.max_indentation > indentation_limit * R)
+      beyond("largest indentation", r.max_indentation, indentation_limit, "R");
+    if (h > 0 && r.max_indentation > deflection_limit * h)
+      beyond("largest indentation", r.max_indentation, deflection_limit, "h");
+    if (h > 0 && r.max_midplane_deflection > deflection_limit * h)
+      beyond("largest mid-plane deflection",
+             r.max_midplane_deflection,
+             deflection_limit,
+             "h");
     return warnings;
   }
 

@@ -54,19 +54,7 @@ namespace fgimpact
     std::string
     read_regular_file(const fs::path &filename, const std::string &what)
     {
-      std::error_code error;
-      const auto      status = fs::status(filename, error);
-      AssertThrow(fs::exists(status), ExcMessage(what + " does not exist."));
-      AssertThrow(!fs::is_directory(status),
-                  ExcMessage(what + " is a directory, not a parameter file."));
-      AssertThrow(fs::is_regular_file(status),
-                  ExcMessage(what + " is not a regular file (a device, FIFO "
-                                    "or socket)."));
-      AssertThrow(fs::file_size(filename, error) <= max_file_size && !error,
-                  ExcMessage(what + " is larger than 16 MiB."));
-      std::ifstream in(filename, std::ios::binary);
-      AssertThrow(in, ExcMessage(what + " cannot be opened for reading."));
-      return read_all(in, what);
+      return read_named_file(filename.string(), what, "a parameter file");
     }
 
     /// Without a UTF-8 byte-order mark, Windows (CRLF) and old Mac (CR)
@@ -251,6 +239,28 @@ namespace fgimpact
       return path.empty() ? "at the top level" : "in subsection '" + path + "'";
     }
   } // namespace
+
+
+
+  std::string
+  read_named_file(const std::string &filename,
+                  const std::string &what,
+                  const std::string &kind)
+  {
+    std::error_code error;
+    const auto      status = fs::status(filename, error);
+    AssertThrow(fs::exists(status), ExcMessage(what + " does not exist."));
+    AssertThrow(!fs::is_directory(status),
+                ExcMessage(what + " is a directory, not " + kind + "."));
+    AssertThrow(fs::is_regular_file(status),
+                ExcMessage(what + " is not a regular file (a device, FIFO "
+                                  "or socket)."));
+    AssertThrow(fs::file_size(filename, error) <= max_file_size && !error,
+                ExcMessage(what + " is larger than 16 MiB."));
+    std::ifstream in(filename, std::ios::binary);
+    AssertThrow(in, ExcMessage(what + " cannot be opened for reading."));
+    return read_all(in, what);
+  }
 
 
 

@@ -55,11 +55,13 @@ namespace fgimpact
   std::streamsize
   Logger::TeeBuffer::xsputn(const char *s, std::streamsize n)
   {
-    const std::streamsize written = original->sputn(s, n);
+    // The screen is best effort (a closed pipe, SIGPIPE ignored): the
+    // stream must not turn bad, or log.txt would stop too.
+    original->sputn(s, n);
     sink.write(s, n);
     if (std::memchr(s, '\n', n) != nullptr)
       sync();
-    return written;
+    return n;
   }
 
 
@@ -72,7 +74,8 @@ namespace fgimpact
         sink.file.flush();
         sink.check();
       }
-    return original->pubsync();
+    original->pubsync(); // best effort, as in xsputn()
+    return 0;
   }
 
 

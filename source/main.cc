@@ -126,6 +126,8 @@ namespace
                   const fgimpact::InputFile        &input,
                   const bool                        resume)
   {
+    // One writer per directory, before anything is written there.
+    fgimpact::lock_output_directory(output.directory);
     // Resuming: nothing removed, log.txt continued, input.prm kept.
     if (!resume)
       fgimpact::prepare_output_directory(output);
@@ -290,6 +292,7 @@ main(int argc, char *argv[])
   using namespace fgimpact;
 
   CommandLine::prepare_mpi_environment();
+  ignore_broken_pipe();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   Logger     logger(root);

@@ -175,7 +175,8 @@ namespace fgimpact
           if (probe_set)
             probe_csv =
               std::make_unique<CsvWriter>(parameters.directory + "/probes.csv",
-                                          probe_set->columns());
+                                          probe_set->columns(),
+                                          probe_length);
         }
       catch (const ExceptionBase &e)
         {

@@ -67,13 +67,15 @@ namespace fgimpact
   void
   ImpactMonitor::save(CheckpointWriter &out, const unsigned int step)
   {
-    std::uintmax_t length    = 0;
+    std::uintmax_t length = 0, probes_length = 0;
     bool           in_flight = false;
     Records        vtu_now;
     try
       {
         if (history)
           length = history->length();
+        if (probe_csv)
+          probes_length = probe_csv->length();
         if (vtu)
           vtu_now = vtu->records(step, in_flight);
       }
@@ -83,6 +85,7 @@ namespace fgimpact
         e.print_info(message);
         output_failure_message = one_line(message.str());
         history.reset();
+        probe_csv.reset();
         vtu.reset();
         contact_vtu.reset();
       }
@@ -95,6 +98,8 @@ namespace fgimpact
          {in_contact, separated_once, peak_pending, drift_warned})
       out.put(flag);
     out.put<std::uint64_t>(length);
+    // probes.csv continues from here on resume, as history.csv does.
+    out.put<std::uint64_t>(probes_length);
     put_records(out, vtu_now);
     out.put(in_flight);
     put_records(out, contact_vtu ? contact_vtu->sphere_records() : Records());
@@ -116,6 +121,8 @@ namespace fgimpact
     std::uint64_t length = 0;
     in.get(length);
     history_length = length;
+    in.get(length);
+    probe_length = length;
     get_records(in, vtu_records);
     in.get(rewrite_snapshot);
     get_records(in, sphere_records);

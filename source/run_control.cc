@@ -7,6 +7,11 @@
 #include <fgimpact/run_control.h>
 
 #include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <map>
+#include <sys/file.h>
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -19,7 +24,12 @@ namespace fgimpact
   namespace
   {
     volatile std::sig_atomic_t stop_signal = 0;
-    struct sigaction           previous_int, previous_term;
+    /// The signals that stop a run cleanly (summary.txt status =
+    /// interrupted, a checkpoint): the user's (SIGINT, SIGTERM), a closed
+    /// terminal (SIGHUP) and a file-size limit (SIGXFSZ, ulimit -f; the
+    /// failed write is then reported as such).
+    const int        stop_signals[4] = {SIGINT, SIGTERM, SIGHUP, SIGXFSZ};
+    struct sigaction previous[4];
 
     extern "C" void
     on_stop_signal(const int signal)
@@ -38,7 +48,42 @@ namespace fgimpact
 
 
 
-    /// The files this program writes into the output directory.
+    /// Whether text[from, from + n) holds n decimal digits.
+    bool
+    digits(const std::string &text, const std::size_t from, const std::size_t n)
+    {
+      if (from + n > text.size())
+        return false;
+      for (std::size_t k = from; k < from + n; ++k)
+        if (text[k] < '0' || text[k] > '9')
+          return false;
+      return true;
+    }
+
+    /// Whether name is `prefix` + 5 digits (the step) + `suffix`, where a
+    /// suffix ".R.vtu" takes any number R >= 0 of digits (the rank).
+    bool
+    is_series_file(const std::string &name,
+                   const std::string &prefix,
+                   const std::string &suffix)
+    {
+      if (name.rfind(prefix, 0) != 0 || !digits(name, prefix.size(), 5))
+        return false;
+      const std::string rest = name.substr(prefix.size() + 5);
+      if (suffix != ".R.vtu")
+        return rest == suffix;
+      // ".<rank>.vtu"
+      const std::size_t end = rest.size() - 4;
+      return rest.size() > 5 && rest[0] == '.' &&
+             rest.compare(end, 4, ".vtu") == 0 && digits(rest, 1, end - 1);
+    }
+
+    /**
+     * The files this program writes into the output directory, by their
+     * exact names (a user's solution_report.vtu or sphere_mine.vtu is
+     * not one): the fixed names, and the series with a 5-digit step and,
+     * for pieces, the rank.
+     */
     bool
     is_own_output(std::string name)
     {
@@ -54,14 +99,58 @@ namespace fgimpact
           name == "frequencies.csv" || name == "solution.pvd" ||
           name == "log.txt" || name == "input.prm" || name == "sphere.pvd" ||
           name == "contact.pvd" || name == "contact_pressure.csv" ||
-          name == "peak_fields.pvtu")
+          name == "peak_fields.pvtu" || name == "study.csv")
         return true;
-      for (const std::string series :
-           {"solution_", "sphere_", "contact_", "peak_fields."})
-        if (name.rfind(series, 0) == 0 &&
-            (ends_with(name, ".vtu") || ends_with(name, ".pvtu")))
-          return true;
-      return false;
+      // peak_fields.R.vtu
+      if (name.rfind("peak_fields.", 0) == 0 && ends_with(name, ".vtu") &&
+          name.size() > 16 && digits(name, 12, name.size() - 16))
+        return true;
+      return is_series_file(name, "solution_", ".pvtu") ||
+             is_series_file(name, "solution_", ".R.vtu") ||
+             is_series_file(name, "sphere_", ".vtu") ||
+             is_series_file(name, "contact_", ".vtu");
+    }
+
+    /// A checkpoint's own file: rank_DDDD.bin (or its temporary).
+    bool
+    is_checkpoint_file(const std::string &name)
+    {
+      return name.rfind("rank_", 0) == 0 && digits(name, 5, 4) &&
+             (name.substr(9) == ".bin" || name.substr(9) == ".bin.tmp");
+    }
+
+    /**
+     * Remove an earlier run's checkpoint directory: its rank files only,
+     * then the directory if that left it empty (a user's file in it
+     * stays, and so does the directory).
+     */
+    void
+    remove_checkpoint_directory(const std::filesystem::path &directory)
+    {
+      namespace fs = std::filesystem;
+      std::error_code error;
+      for (const auto &entry : fs::directory_iterator(directory, error))
+        if (entry.is_regular_file() &&
+            is_checkpoint_file(entry.path().filename().string()))
+          {
+            fs::remove(entry.path(), error);
+            AssertThrow(!error,
+                        ExcMessage("Output/Directory: cannot remove the "
+                                   "earlier run's " +
+                                   entry.path().string() + ": " +
+                                   error.message()));
+          }
+      if (fs::is_empty(directory, error))
+        fs::remove(directory, error);
+    }
+
+    /// The lock files this process holds (directory -> descriptor): one
+    /// writer per output directory.
+    std::map<std::string, int> &
+    held_locks()
+    {
+      static std::map<std::string, int> locks;
+      return locks;
     }
   } // namespace
 
@@ -231,16 +320,16 @@ namespace fgimpact
     action.sa_handler       = on_stop_signal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART;
-    sigaction(SIGINT, &action, &previous_int);
-    sigaction(SIGTERM, &action, &previous_term);
+    for (unsigned int i = 0; i < 4; ++i)
+      sigaction(stop_signals[i], &action, &previous[i]);
   }
 
 
 
   SignalGuard::~SignalGuard()
   {
-    sigaction(SIGINT, &previous_int, nullptr);
-    sigaction(SIGTERM, &previous_term, nullptr);
+    for (unsigned int i = 0; i < 4; ++i)
+      sigaction(stop_signals[i], &previous[i], nullptr);
   }
 
 
@@ -318,6 +407,7 @@ namespace fgimpact
 
     std::vector<fs::path> own, foreign;
     for (const auto &entry : fs::directory_iterator(directory, error))
+      if (entry.path().filename() != lock_file_name)
       ((entry.is_regular_file() &&
         is_own_output(entry.path().filename().string())) ||
            (entry.is_directory() &&
@@ -325,6 +415,19 @@ namespace fgimpact
          own :
          foreign)
         .push_back(entry.path());
+    // A checkpoint directory is replaced as a whole when a checkpoint is
+    // written: one that holds a file of the user's is refused, before
+    // anything is removed.
+    for (const auto &path : own)
+      if (fs::is_directory(path))
+        for (const auto &entry : fs::directory_iterator(path, error))
+          AssertThrow(entry.is_regular_file() &&
+                        is_checkpoint_file(entry.path().filename().string()),
+                      ExcMessage("Output/Directory '" + directory + "' holds " +
+                                 entry.path().string() +
+                                 ", which this program did not write, in the "
+                                 "directory it replaces with its checkpoints; "
+                                 "move it or choose another directory."));
     if (!output.overwrite)
       AssertThrow(own.empty() && foreign.empty(),
                   ExcMessage("Output/Directory '" + directory +
@@ -335,11 +438,87 @@ namespace fgimpact
     // earlier run survives next to the new ones.
     for (const auto &file : own)
       {
-        fs::remove_all(file, error); // checkpoint/ is a directory
+        if (fs::is_directory(file))
+          {
+            remove_checkpoint_directory(file);
+            continue;
+          }
+        fs::remove(file, error);
         AssertThrow(!error,
                     ExcMessage("Output/Directory: cannot remove the earlier "
                                "run's " +
                                file.string() + ": " + error.message()));
       }
+  }
+
+
+  const char *
+  signal_name(const int signal)
+  {
+    switch (signal)
+      {
+        case SIGINT:
+          return "SIGINT";
+        case SIGTERM:
+          return "SIGTERM";
+        case SIGHUP:
+          return "SIGHUP";
+        case SIGXFSZ:
+          return "SIGXFSZ";
+        default:
+          return "a signal";
+      }
+  }
+
+
+
+  void
+  ignore_broken_pipe()
+  {
+    // Output piped into `head`: a write to the closed pipe fails (EPIPE)
+    // instead of killing the run; the log's screen copy is then lost, and
+    // the files (log.txt, history.csv, summary.txt) go on.
+    std::signal(SIGPIPE, SIG_IGN);
+  }
+
+
+  void
+  lock_output_directory(const std::string &directory)
+  {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    fs::create_directories(directory, error);
+    const std::string key = fs::weakly_canonical(directory, error).string();
+    if (held_locks().count(key) > 0)
+      return; // this process holds it already (a study's directory)
+    const std::string name = directory + "/" + lock_file_name;
+    const int fd = ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    AssertThrow(fd >= 0,
+                ExcMessage("Output/Directory '" + directory +
+                           "': cannot create the lock file " + name + ": " +
+                           std::strerror(errno)));
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+      {
+        char              pid[32] = {};
+        const ssize_t     n       = ::read(fd, pid, sizeof(pid) - 1);
+        const std::string holder =
+          n > 0 ? one_line(std::string(pid, n)) : "unknown";
+        ::close(fd);
+        AssertThrow(false,
+                    ExcMessage("Output/Directory '" + directory +
+                               "' is in use by another fgimpact run "
+                               "(process id " +
+                               holder +
+                               "); wait for it to end or choose another "
+                               "directory."));
+      }
+    // The holder's process id, for the message above; the kernel releases
+    // the lock when this process ends, however it ends.
+    const std::string pid = std::to_string(::getpid()) + "\n";
+    if (::ftruncate(fd, 0) != 0 || ::write(fd, pid.data(), pid.size()) < 0)
+      {
+        // The lock holds without the id.
+      }
+    held_locks()[key] = fd;
   }
 } // namespace fgimpact

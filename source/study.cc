@@ -402,6 +402,7 @@ namespace fgimpact
             return 0;
           }
         run_on_root(MPI_COMM_WORLD, [&]() {
+          lock_output_directory(base.output.directory);
           prepare_output_directory(base.output);
           logger.open(base.output.directory + "/log.txt", provenance);
           SummaryWriter::set_preamble(provenance);

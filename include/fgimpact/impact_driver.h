@@ -91,6 +91,11 @@ namespace fgimpact
     void
     do_timestep();
 
+    /// The time step against the End time (refused if longer) and against
+    /// Hertz's contact duration (a log warning below 20 steps in it).
+    void
+    check_time_step() const;
+
     /// One log line on what the contact's accuracy depends on: the mesh
     /// dependence of hertz node; a resolved sphere whose estimated contact
     /// radius spans fewer than contact_elements_per_radius elements.

@@ -30,11 +30,18 @@ namespace fgimpact
                  const PlateModel &plate,
                  const double      time_step);
 
+  /// The validity limits of the small-strain model: the largest
+  /// indentation against the ball's radius R (Hertz: a/R = sqrt(alpha/R),
+  /// 0.05 R is a/R = 0.22) and the indentation and mid-plane deflection
+  /// against the thickness h (a deflection of 0.2 h brings membrane
+  /// stretching of a few per cent).
+  constexpr double indentation_limit = 0.05, deflection_limit = 0.2;
+
   /**
-   * The end-of-run warnings on what the run resolved: a resolved contact
-   * whose largest contact radius spans fewer than
-   * contact_elements_per_radius element sizes.  One line each, naming the
-   * parameter to change.
+   * The end-of-run warnings: a resolved contact whose largest contact
+   * radius spans fewer than contact_elements_per_radius element sizes; an
+   * indentation or deflection beyond the small-strain limits above.  One
+   * line each, naming what to change.
    */
   std::vector<std::string>
   resolution_warnings(const ImpactResults &r, const bool contact_area);

@@ -286,6 +286,8 @@ namespace fgimpact
     /// A resumed run: history.csv's length and the PVD entries at the
     /// checkpoint.
     std::uintmax_t                              history_length = 0;
+    /// probes.csv's length at the checkpoint (0: no probes).
+    std::uintmax_t probe_length = 0;
     std::vector<std::pair<double, std::string>> vtu_records, sphere_records,
       contact_records;
     bool rewrite_snapshot = false;

@@ -23,6 +23,9 @@ namespace fgimpact
     std::string  gradation;     // power law | exponential | sigmoid | ...
     double       power_law_index = 0;
     std::string  homogenization;
+    /// For the validity checks (not written): the ball's radius and the
+    /// plate's thickness (m).
+    double impactor_radius = 0, thickness = 0;
   };
 
   /**

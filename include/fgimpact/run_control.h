@@ -92,12 +92,22 @@ namespace fgimpact
   /**
    * @name Signals
    *
-   * While a SignalGuard lives, SIGINT and SIGTERM only set a flag (the
+   * While a SignalGuard lives, SIGINT, SIGTERM, SIGHUP (the terminal
+   * closed) and SIGXFSZ (ulimit -f) only set a flag (the
    * handler does nothing else, so it is async-signal-safe); the time loop
    * asks agreed_signal() once per step and stops cleanly.  The previous
    * handlers come back when the guard is destroyed.
    */
   /** @{ */
+  /// "SIGTERM", ... for the stop signals, else "a signal".
+  const char *
+  signal_name(const int signal);
+
+  /// SIGPIPE ignored for the whole process (stdout piped into a program
+  /// that exits: the run goes on writing its files).
+  void
+  ignore_broken_pipe();
+
   class SignalGuard
   {
   public:
@@ -135,13 +145,30 @@ namespace fgimpact
   void
   write_file_atomically(const std::string &filename, const std::string &text);
 
+  /// The lock file of an output directory (lock_output_directory()).
+  inline constexpr const char *lock_file_name = ".fgimpact.lock";
+
+  /**
+   * One writer per output directory: create it if needed and take an
+   * exclusive advisory lock (flock) on its lock file, held until this
+   * process ends (the kernel releases it on any death), with the process
+   * id in the file.  A directory another process holds: ExcMessage naming
+   * Output/Directory and the holder's process id.  Call on one rank before
+   * anything is written there (a fresh run or a resume).
+   */
+  void
+  lock_output_directory(const std::string &directory);
+
   /**
    * Create the output directory, check that a byte can be written there,
    * and clean it: with Output/Overwrite remove exactly the files this
-   * program writes (history.csv, summary.txt, parameters.prm, input.prm,
-   * log.txt, frequencies.csv, solution.pvd, solution_*.vtu/.pvtu,
-   * leftover *.tmp and the checkpoint directories), otherwise refuse a
-   * non-empty directory.  Call on one rank, before the run opens its log.txt
+   * program writes, by their exact names (history.csv, summary.txt,
+   * parameters.prm, input.prm, log.txt, frequencies.csv, study.csv, the
+   * PVD files, solution_DDDDD.pvtu, solution_DDDDD.R.vtu,
+   * sphere_DDDDD.vtu, contact_DDDDD.vtu, peak_fields.pvtu and .R.vtu,
+   * leftover *.tmp, and the rank_DDDD.bin files of the checkpoint
+   * directories, which go only if nothing else is in them), otherwise
+   * refuse a non-empty directory (the lock file aside).  Call on one rank, before the run opens its log.txt
    * there; throws ExcMessage naming Output/Directory or Output/Overwrite.
    */
   void

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <vector>
 
@@ -50,6 +51,8 @@ namespace
     directory_is_a_file,
     not_empty,   // Overwrite = false into a directory with a file
     stale_files, // Overwrite = true removes an earlier run's files
+    user_checkpoint, // a user's file in Output/Directory/checkpoint/
+    fifo_profile,    // profile.fifo: a FIFO with no writer
     dev_full     // Output/Directory/<full_file> is a link to /dev/full
   };
 
@@ -62,6 +65,38 @@ namespace
     Setup       setup     = Setup::plain;
     const char *full_file = ""; // for Setup::dev_full
   };
+
+  /// Files an earlier run wrote (Overwrite = true removes them).
+  std::vector<std::string>
+  stale_names()
+  {
+    return {"solution_99999.0.vtu",
+            "solution_99999.12.vtu",
+            "solution_99999.pvtu",
+            "sphere_99999.vtu",
+            "contact_99999.vtu",
+            "peak_fields.3.vtu",
+            "summary.txt",
+            "history.csv.tmp",
+            "checkpoint/rank_0003.bin",
+            "checkpoint.old/rank_0000.bin"};
+  }
+
+  /// A user's files beside them, with near-miss names (kept).
+  std::vector<std::string>
+  decoy_names()
+  {
+    return {"solution_abc.vtu",
+            "solution_1.vtu",
+            "solution_final.pvtu",
+            "solution_report.vtu",
+            "solution_00020.vtu",
+            "sphere_mine.vtu",
+            "contact_x.vtu",
+            "peak_fields.mine.vtu",
+            "history.csv.bak",
+            "mine/solution_00000.0.vtu"};
+  }
 
   std::string
   read(const std::string &filename)
@@ -170,9 +205,23 @@ namespace
           fs::create_symlink("/dev/full", dir + "/" + c.full_file);
           break;
         case Setup::stale_files:
-          fs::create_directories(dir);
-          write(dir + "/solution_99999.0.vtu", "stale\n");
-          write(dir + "/summary.txt", "stale\n");
+          fs::create_directories(dir + "/checkpoint");
+          fs::create_directories(dir + "/checkpoint.old");
+          fs::create_directories(dir + "/mine");
+          // An earlier run's files: removed.
+          for (const auto &name : stale_names())
+            write(dir + "/" + name, "stale\n");
+          // A user's files with near-miss names: kept.
+          for (const auto &name : decoy_names())
+            write(dir + "/" + name, "mine\n");
+          break;
+        case Setup::fifo_profile:
+          fs::remove("profile.fifo");
+          mkfifo("profile.fifo", 0644);
+          break;
+        case Setup::user_checkpoint:
+          fs::create_directories(dir + "/checkpoint");
+          write(dir + "/checkpoint/mydata.bin", "mine\n");
           break;
         default:
           break;
@@ -342,6 +391,24 @@ namespace
          short_run,
        2,
        "Geometry/Contact refinement levels"},
+      {"profile file is /dev/zero",
+       "subsection Material\n set Gradation = tabulated\n set Profile file = /dev/zero\nend\n",
+       1,
+       "Material/Profile file"},
+      {"profile file is a directory",
+       "subsection Material\n set Gradation = tabulated\n set Profile file = /tmp\nend\n",
+       1,
+       "is a directory"},
+      {"profile file is a FIFO with no writer",
+       "subsection Material\n set Gradation = tabulated\n set Profile file = profile.fifo\nend\n",
+       1,
+       "not a regular file",
+       Setup::fifo_profile},
+      {"End time shorter than the automatic explicit step",
+       small +
+         "subsection Time integration\n set Scheme = explicit\n set Time step = 0\n set End time = 1e-9\nend\n",
+       1,
+       "Time integration/End time"},
       {"Impactor/Material = elastic with the resolved sphere",
        "subsection Contact\n set Model = resolved sphere\nend\n"
        "subsection Impactor\n set Material = elastic\nend\n",
@@ -468,6 +535,12 @@ namespace
        0,
        "Subdivisions"},
       {"ball still in contact at the end time", small + short_run, 0, ""},
+      {"V0 = 300 m/s: beyond the small-strain model",
+       small +
+         "subsection Time integration\n set End time = 60e-6\nend\n"
+         "subsection Impactor\n set Initial velocity = 300\nend\n",
+       0,
+       ""},
       {"static sphere on a block clamped at its base alone",
        "set Problem type = static\n" + small + all_free +
          "subsection Boundary conditions\n set Face z min = clamped\nend\n"
@@ -485,6 +558,11 @@ namespace
          "subsection Time integration\n set Time step = 12e-6\n set End time = 400e-6\nend\n",
        0,
        ""},
+      {"a user's file in checkpoint/",
+       small + short_run,
+       1,
+       "checkpoint",
+       Setup::user_checkpoint},
       {"Overwrite = true removes stale files",
        small + short_run,
        0,
@@ -527,6 +605,10 @@ namespace
       clean =
         clean &&
         (c.setup == Setup::not_empty ? !fs::exists(dir + "/history.csv") :
+         c.setup == Setup::user_checkpoint ?
+                                       !fs::exists(dir + "/history.csv") &&
+                                         read(dir + "/checkpoint/mydata.bin") ==
+                                           "mine\n" :
          c.setup == Setup::directory_is_a_file ? fs::is_regular_file(dir) :
                                                  !fs::exists(dir));
     if (c.exit_code == 0)
@@ -536,7 +618,18 @@ namespace
         clean =
           clean && summary.find("status = completed") != std::string::npos;
         if (c.setup == Setup::stale_files)
-          clean = clean && !fs::exists(dir + "/solution_99999.0.vtu");
+          {
+            // Exactly the earlier run's files went; every decoy stayed.
+            for (const auto &name : stale_names())
+              clean = clean && !fs::exists(dir + "/" + name);
+            for (const auto &name : decoy_names())
+              clean = clean && read(dir + "/" + name) == "mine\n";
+            clean = clean && !fs::exists(dir + "/checkpoint.old/rank_0000.bin");
+          }
+        if (c.name ==
+            std::string("V0 = 300 m/s: beyond the small-strain model"))
+          clean = clean && summary.find("outside the small-strain elastic "
+                                        "model") != std::string::npos;
         if (c.name == std::string("ball still in contact at the end time"))
           clean =
             clean &&

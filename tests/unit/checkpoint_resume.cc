@@ -53,17 +53,20 @@ namespace
     const Comparison c = compare(reference, stopped);
     std::printf("SIGTERM, checkpoint interval 0: exit %d, resume hint on "
                 "stderr %s, resumed (exit %d); history.csv %u lines, %u "
-                "differing; summary.txt %u lines compared, %u differing\n",
+                "differing; summary.txt %u lines compared, %u differing; "
+                "%u other files (probes.csv, PVD, VTU), %u differing\n",
                 stop_exit,
                 hint ? "yes" : "NO",
                 resume_exit,
                 c.history_lines,
                 c.history_differing,
                 c.summary_lines,
-                c.summary_differing);
+                c.summary_differing,
+                c.files,
+                c.files_differing);
     return reference_exit == 0 && stop_exit == 128 + SIGTERM && hint &&
            resume_exit == 0 && c.same_length && c.history_differing == 0 &&
-           c.summary_differing == 0;
+           c.summary_differing == 0 && c.files > 0 && c.files_differing == 0;
   }
 
   /// A refused resume: exit code 1, one line naming `expected`, the
@@ -94,6 +97,86 @@ namespace
     if (!(code == 1 && ours == 1 && named && untouched))
       std::printf("  %s\n", log.c_str());
     return code == 1 && ours == 1 && named && untouched;
+  }
+
+  /**
+   * One writer per output directory: a run holds the directory; a second
+   * run and a resume of it exit 1 at once with one line naming the
+   * directory and the holder's process id, and write nothing; once the
+   * holder is killed (SIGKILL: the kernel releases the lock), a new run
+   * there completes.
+   */
+  bool
+  one_writer(const std::string &prm)
+  {
+    const std::string directory = "locked";
+    fs::remove_all(directory);
+    {
+      std::ofstream out("locked.prm");
+      out << prm << "subsection Output\n set Directory = " << directory
+          << "\n set Log interval = 0\n set Print timing = false\nend\n";
+    }
+    const pid_t holder = start({"locked.prm"}, 1, "holder.log");
+    for (unsigned int i = 0; i < 6000 && !fs::exists(directory + "/history.csv");
+         ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    const std::string before = read(directory + "/history.csv");
+    const std::string id     = "process id " + std::to_string(holder);
+    bool              ok     = true;
+    for (const std::vector<std::string> &args :
+         {std::vector<std::string>{"locked.prm"},
+          std::vector<std::string>{"--resume", directory}})
+      {
+        const int         code = run(args, 1, "second.log");
+        const std::string log  = read("second.log");
+        const bool named = log.find("Output/Directory '" + directory + "'") !=
+                             std::string::npos &&
+                           log.find(id) != std::string::npos;
+        const bool one = lines_of(log).size() == 1;
+        std::printf("a second %s on a directory in use: exit code %d, one "
+                    "line %s, names the directory and the holder's process "
+                    "id %s\n",
+                    args[0] == "--resume" ? "resume" : "run",
+                    code,
+                    one ? "yes" : "NO",
+                    named ? "yes" : "NO");
+        ok = ok && code == 1 && one && named;
+      }
+    kill(holder, SIGKILL);
+    const bool killed = wait_for(holder) == -SIGKILL;
+    // What the second runs wrote: nothing (history.csv is the holder's,
+    // which may have grown, never shrunk or restarted).
+    const std::string after = read(directory + "/history.csv");
+    const bool untouched    = after.compare(0, before.size(), before) == 0;
+    const int  third        = run(
+      {"locked.prm", "-s", "Time integration/End time=20e-6"}, 1, "third.log");
+    std::printf("holder killed %s, its history.csv untouched by them %s; a "
+                "new run after the holder's death: exit code %d\n",
+                killed ? "yes" : "NO",
+                untouched ? "yes" : "NO",
+                third);
+    return ok && killed && untouched && third == 0;
+  }
+
+  /// A damaged byte in a checkpoint's header (its step) is refused as
+  /// damaged, not read as another step.
+  bool
+  damaged_header(const std::string &directory)
+  {
+    const std::string file = directory + "/checkpoint/rank_0000.bin";
+    std::string       data = read(file);
+    if (data.size() < 32)
+      return false;
+    data[20] = static_cast<char>(data[20] ^ 0x5a);
+    fs::remove_all("damaged");
+    fs::copy(directory, "damaged", fs::copy_options::recursive);
+    std::ofstream("damaged/checkpoint/rank_0000.bin", std::ios::binary)
+      << data;
+    return refused("with byte 20 of the checkpoint changed",
+                   {"--resume", "damaged"},
+                   1,
+                   "damaged",
+                   "is damaged");
   }
 } // namespace
 
@@ -178,6 +261,11 @@ main()
                1,
                "no_checkpoint",
                "no checkpoint") &&
+       ok;
+
+  ok = damaged_header("killed_hertz_node") && ok;
+  ok = one_writer(small_plate + "subsection Time integration\n set End time "
+                                "= 50000e-6\nend\n") &&
        ok;
 
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");

@@ -1,15 +1,18 @@
-// SIGTERM and SIGINT stop a running impact cleanly: the executable
-// finishes the time step, completes history.csv, writes summary.txt with
-// status = interrupted and the time reached, closes the PVD, prints one
-// line and exits with 128 + the signal number.  Runs the executable as a
-// process and signals it once its time loop runs (history.csv exists);
-// the third run is on two MPI ranks (mpiexec, as the mpirun=2 tests) and
-// signals one rank only: both must stop at the same step.
+// SIGTERM, SIGINT and SIGHUP (the terminal closed) stop a running impact
+// cleanly: the executable finishes the time step, completes history.csv,
+// writes summary.txt with status = interrupted and the time reached,
+// closes the PVD, prints one line and exits with 128 + the signal number.
+// Runs the executable as a process and signals it once its time loop runs
+// (history.csv exists); one run is on two MPI ranks (mpiexec, as the
+// mpirun=2 tests) and signals one rank only: both must stop at the same
+// step.  Last, the screen output piped into a program that exits early
+// (SIGPIPE): the run completes and its files are whole.
 
 #include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -191,6 +194,49 @@ namespace
                   summary.c_str());
     return ok;
   }
+
+  /**
+   * The screen output piped into `head -c 300`, which exits after 300
+   * bytes: the run must not die of SIGPIPE; it completes, with exit code
+   * 0, summary.txt completed, every row of history.csv and log.txt to
+   * its last line.
+   */
+  bool
+  piped_into_head()
+  {
+    const std::string dir = "pipe_out";
+    fs::remove_all(dir);
+    {
+      std::ofstream prm("pipe.prm");
+      prm << "subsection Geometry\n set Subdivisions x = 10\n set "
+             "Subdivisions y = 6\n set Subdivisions z = 2\nend\n"
+             "subsection Time integration\n set End time = 2000e-6\nend\n"
+             "subsection Output\n set Directory = "
+          << dir << "\n set Log interval = 1\n set Print timing = false\nend\n";
+    }
+    const std::string command =
+      std::string("bash -c '") + FGIMPACT_EXECUTABLE +
+      " pipe.prm 2>&1 | head -c 300 > /dev/null; "
+      "echo ${PIPESTATUS[0]} > pipe.status'";
+    const int         status  = std::system(command.c_str());
+    const std::string code    = read("pipe.status");
+    const std::string summary = read(dir + "/summary.txt");
+    const std::string history = read(dir + "/history.csv");
+    const auto        rows = std::count(history.begin(), history.end(), '\n');
+    const bool        logged =
+      read(dir + "/log.txt").find("fgimpact: results in") != std::string::npos;
+    const bool ok = status == 0 && code == "0\n" &&
+                    value_of(summary, "status") == "completed" &&
+                    rows == 2002 && logged;
+    std::printf("output piped into head -c 300: exit code %s, status = %s, "
+                "history.csv %ld lines (2002), log.txt complete %s: %s\n",
+                code.empty() ? "?" : code.substr(0, code.size() - 1).c_str(),
+                value_of(summary, "status").c_str(),
+                static_cast<long>(rows),
+                logged ? "yes" : "NO",
+                ok ? "yes" : "NO");
+    return ok;
+  }
 } // namespace
 
 
@@ -200,8 +246,10 @@ main()
 {
   const bool term = run_and_stop(SIGTERM, "SIGTERM", false);
   const bool intr = run_and_stop(SIGINT, "SIGINT", false);
+  const bool hup  = run_and_stop(SIGHUP, "SIGHUP", false);
   const bool mpi  = run_and_stop(SIGTERM, "SIGTERM", true);
-  const bool ok   = term && intr && mpi;
+  const bool pipe = piped_into_head();
+  const bool ok   = term && intr && hup && mpi && pipe;
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
   return ok ? 0 : 1;
 }
