@@ -1,12 +1,16 @@
+#include <deal.II/base/timer.h>
+
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <fgimpact/modal_analysis.h>
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/run_control.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
 
 namespace fgimpact
 {
@@ -137,13 +141,55 @@ namespace fgimpact
 
 
   void
+  ModalAnalysis::report_iteration_cost(const double       seconds,
+                                       const unsigned int block) const
+  {
+    // A long request says so after its first iteration (Modal/Max
+    // iterations of them at most), instead of minutes of silence.
+    if (seconds < 2. ||
+        Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
+      return;
+    char text[400];
+    std::snprintf(text,
+                  sizeof(text),
+                  "  modal: the first subspace iteration (a block of %u "
+                  "vectors for %u modes) took %.1f s; up to Modal/Max "
+                  "iterations = %u of them may follow (at most %.0f s); "
+                  "fewer Modal/Number of modes is faster.\n",
+                  block,
+                  parameters.n_modes,
+                  seconds,
+                  parameters.max_iterations,
+                  seconds * parameters.max_iterations);
+    std::cout << text << std::flush;
+  }
+
+
+
+  void
   ModalAnalysis::solve()
   {
     const auto        &K = plate.stiffness_matrix();
     const auto        &M = plate.mass_matrix();
     const unsigned int n = parameters.n_modes;
-    const unsigned int p = std::min<unsigned int>(2 * n + 8, plate.n_dofs());
     const double       sigma = std::pow(2. * M_PI * parameters.shift, 2);
+
+    // Unconstrained DoFs mask: constrained rows of K and M carry
+    // artificial diagonal entries whose ratios are not plate modes.
+    TrilinosWrappers::MPI::Vector mask, w_mask, tmp, Mx;
+    for (auto *v : {&mask, &w_mask, &tmp, &Mx})
+      plate.initialize_vector(*v);
+    make_masks(plate, mask, w_mask);
+    // A mesh has as many modes as free DoFs: asking for more cannot be
+    // answered (the block would be singular and LAPACK return nothing).
+    const auto n_free = static_cast<unsigned int>(mask.l1_norm() + 0.5);
+    AssertThrow(n <= n_free,
+                ExcNumericalFailure(
+                  "Modal/Number of modes = " + std::to_string(n) +
+                  " exceeds the " + std::to_string(n_free) +
+                  " free DoFs of this mesh (its number of modes); ask for "
+                  "at most that many or refine Geometry/Subdivisions."));
+    const unsigned int p = std::min<unsigned int>(2 * n + 8, n_free);
 
     // The shifted operator K - sigma M, factorized once.
     TrilinosWrappers::SparseMatrix shifted;
@@ -152,13 +198,6 @@ namespace fgimpact
       shifted.add(-sigma, M);
     EffectiveMatrixSolver solver(solver_parameters);
     solver.initialize(shifted);
-
-    // Unconstrained DoFs mask: constrained rows of K and M carry
-    // artificial diagonal entries whose ratios are not plate modes.
-    TrilinosWrappers::MPI::Vector mask, w_mask, tmp, Mx;
-    for (auto *v : {&mask, &w_mask, &tmp, &Mx})
-      plate.initialize_vector(*v);
-    make_masks(plate, mask, w_mask);
 
     // Start block: deterministic, all length scales present.
     std::vector<TrilinosWrappers::MPI::Vector> X(p), Y(p);
@@ -173,6 +212,7 @@ namespace fgimpact
       }
 
     std::vector<double> lambda(p, 0.), lambda_old(p, 0.);
+    Timer               first_iteration;
     for (iterations = 1; iterations <= parameters.max_iterations; ++iterations)
       {
         // Y = (K - sigma M)^{-1} M X
@@ -185,6 +225,22 @@ namespace fgimpact
             Y[j].scale(mask);
           }
         rayleigh_ritz(K, M, Y, tmp, Mx, lambda, X);
+        // LAPACK's sygv reports a failure on the screen only and leaves
+        // zeros (a free plate's rigid modes are near zero too, but never
+        // the whole block): never write 0 Hz for modes not found.
+        bool found = *std::max_element(lambda.begin(), lambda.end()) > 0.;
+        for (const double value : lambda)
+          found = found && std::isfinite(value);
+        AssertThrow(found,
+                    ExcNumericalFailure(
+                      "the subspace iteration's Rayleigh-Ritz problem "
+                      "failed at iteration " +
+                      std::to_string(iterations) +
+                      " (no eigenvalues: a singular block); ask for fewer "
+                      "Modal/Number of modes or refine Geometry/"
+                      "Subdivisions."));
+        if (iterations == 1)
+          report_iteration_cost(first_iteration.wall_time(), p);
 
         bool converged = iterations > 1;
         for (unsigned int j = 0; j < n; ++j)

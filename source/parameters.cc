@@ -319,6 +319,17 @@ namespace fgimpact
                   "ball's modulus."));
     AssertThrow(output.directory.find_first_not_of(" \t") != std::string::npos,
                 ExcMessage("Output/Directory is empty."));
+    // parameters.prm must read back as the run was: '#' starts a comment
+    // there (the directory would change, and its cleaning with it).
+    for (const auto &[entry, value] :
+         {std::pair<std::string, std::string>{"Output/Directory",
+                                              output.directory},
+          {"Material/Profile file", material.profile_file}})
+      AssertThrow(value.find('#') == std::string::npos,
+                  ExcMessage(entry + " '" + value +
+                             "' holds '#', which starts a comment in the "
+                             "parameters.prm the run writes (reading it back "
+                             "would give another path); rename it."));
     AssertThrow(2. * impactor.radius <= std::min(a, b),
                 ExcMessage(
                   "Impactor/Radius = " + std::to_string(impactor.radius) +

@@ -73,6 +73,11 @@ namespace fgimpact
                  const VtuFields &fields = VtuFields()) const;
 
   private:
+    /// A log line when the first iteration took long (seconds, block
+    /// size), with the bound that Max iterations puts on the whole.
+    void
+    report_iteration_cost(const double seconds, const unsigned int block) const;
+
     const Parameters                           parameters;
     const EffectiveMatrixSolver::Parameters    solver_parameters;
     const PlateModel                          &plate;

@@ -250,6 +250,17 @@ main()
           code == 1 && n_lines(err) == 1 && contains(err, "include"));
   }
 
+  // A '#' in a path would start a comment in parameters.prm (the path
+  // read back would differ, and so would the directory it cleans).
+  {
+    const int         code = run("cli_base.prm -s 'Output/Directory=cli#x'");
+    const std::string err  = read("cli.stderr");
+    check("'#' in Output/Directory (-s): exit 1, one line naming it, "
+          "nothing written",
+          code == 1 && n_lines(err) == 1 &&
+            contains(err, "Output/Directory") && !fs::exists("cli#x"));
+  }
+
   // A tabulated profile given relative to its .prm (run from another
   // directory): found by the run and by a study's cases, and written into
   // parameters.prm as an absolute path (what --resume DIR reads).
