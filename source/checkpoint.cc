@@ -15,7 +15,7 @@ namespace fgimpact
 
   namespace
   {
-    const char         magic[8] = {'F', 'G', 'I', 'M', 'P', 'C', 'K', 'P'};
+    const char magic[8] = {'F', 'G', 'I', 'M', 'P', 'C', 'K', 'P'};
     // 2: probes.csv's length in the monitor's part; the header hashed.
     const unsigned int format_version = 2;
 
@@ -84,14 +84,15 @@ namespace fgimpact
           // The whole file (header included: ranks, rank, step) is
           // hashed, so that a damaged byte anywhere says so instead of
           // being read as a different step or rank count.
-          const std::string &data = whole.str();
+          const std::string &data      = whole.str();
           std::uint64_t      file_hash = 0;
           AssertThrow(data.size() >= sizeof(file_hash), ExcMessage(damaged));
           std::memcpy(&file_hash,
                       data.data() + data.size() - sizeof(file_hash),
                       sizeof(file_hash));
           AssertThrow(file_hash ==
-                        hash_of(data.substr(0, data.size() - sizeof(file_hash))),
+                        hash_of(
+                          data.substr(0, data.size() - sizeof(file_hash))),
                       ExcMessage(damaged));
           reader.get(header.n_ranks);
           reader.get(header.rank);

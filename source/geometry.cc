@@ -116,14 +116,14 @@ namespace fgimpact
   {
     prm.enter_subsection("Geometry");
     {
-      length                    = prm.get_double("Length a");
-      width                     = prm.get_double("Width b");
-      thickness                 = prm.get_double("Thickness h");
-      subdivisions_x            = prm.get_integer("Subdivisions x");
-      subdivisions_y            = prm.get_integer("Subdivisions y");
-      subdivisions_z            = prm.get_integer("Subdivisions z");
-      const std::string levels  = prm.get("Contact refinement levels");
-      contact_refinement_auto   = (levels == "auto");
+      length                   = prm.get_double("Length a");
+      width                    = prm.get_double("Width b");
+      thickness                = prm.get_double("Thickness h");
+      subdivisions_x           = prm.get_integer("Subdivisions x");
+      subdivisions_y           = prm.get_integer("Subdivisions y");
+      subdivisions_z           = prm.get_integer("Subdivisions z");
+      const std::string levels = prm.get("Contact refinement levels");
+      contact_refinement_auto  = (levels == "auto");
       contact_refinement_levels =
         contact_refinement_auto ? 0 : Utilities::string_to_int(levels);
       contact_refinement_radius = prm.get_double("Contact refinement radius");

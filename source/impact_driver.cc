@@ -227,9 +227,10 @@ namespace fgimpact
         pcout << text;
         return;
       }
-    const double a_max = expected_contact_radius(parameters,
-                                                 plate.get_material(),
-                                                 plate.get_geometry().thickness());
+    const double a_max =
+      expected_contact_radius(parameters,
+                              plate.get_material(),
+                              plate.get_geometry().thickness());
     if (parameters.contact_model.model ==
           ContactModelParameters::Model::resolved_sphere &&
         a_max < contact_elements_per_radius * h)

@@ -13,35 +13,35 @@ namespace fgimpact
                  const PlateModel &plate,
                  const double      time_step)
   {
-    using Model = ContactModelParameters::Model;
+    using Model        = ContactModelParameters::Model;
     const auto      &g = plate.get_geometry();
     const auto      &m = parameters.material;
     ModelDescription d;
-    const Model      model = parameters.contact_model.model;
-    d.contact_model = model == Model::hertz_node     ? "hertz node" :
-                      model == Model::hertz_midplane ? "hertz midplane" :
-                                                       "resolved sphere";
+    const Model      model      = parameters.contact_model.model;
+    d.contact_model             = model == Model::hertz_node ? "hertz node" :
+                                  model == Model::hertz_midplane ? "hertz midplane" :
+                                                                   "resolved sphere";
     d.contact_refinement_levels = plate.contact_refinement().levels;
     const Point<2> p =
       Impactor(parameters.impactor).impact_point(g.length(), g.width());
     d.element_size_under_ball =
       plate.cell_size_at(Point<3>(p[0], p[1], g.thickness()));
-    d.time_step = time_step;
-    d.scheme    = parameters.time_integration.scheme ==
-                     TimeStepper::Scheme::central_difference ?
-                    "explicit" :
-                    "implicit";
-    d.element_degree = plate.get_fe().degree;
+    d.time_step        = time_step;
+    d.scheme           = parameters.time_integration.scheme ==
+                   TimeStepper::Scheme::central_difference ?
+                           "explicit" :
+                           "implicit";
+    d.element_degree   = plate.get_fe().degree;
     const double share = g.share();
-    d.symmetry = share > 0.75 ? "none" : share > 0.3 ? "half" : "quarter";
+    d.symmetry      = share > 0.75 ? "none" : share > 0.3 ? "half" : "quarter";
     d.property_mode = m.property_mode == PropertyMode::graded ? "graded" :
                       m.property_mode == PropertyMode::homogeneous ?
                                                                 "homogeneous" :
                                                                 "pointwise";
-    d.gradation = m.gradation == Gradation::power_law   ? "power law" :
-                  m.gradation == Gradation::exponential ? "exponential" :
-                  m.gradation == Gradation::sigmoid     ? "sigmoid" :
-                                                          "tabulated";
+    d.gradation     = m.gradation == Gradation::power_law   ? "power law" :
+                      m.gradation == Gradation::exponential ? "exponential" :
+                      m.gradation == Gradation::sigmoid     ? "sigmoid" :
+                                                              "tabulated";
     d.power_law_index = m.power_law_index;
     d.impactor_radius = parameters.impactor.radius;
     d.thickness       = g.thickness();
@@ -57,9 +57,9 @@ namespace fgimpact
   resolution_warnings(const ImpactResults &r, const bool contact_area)
   {
     std::vector<std::string> warnings;
-    const double h = r.model.element_size_under_ball;
-    if (contact_area && h > 0. &&
-        r.max_contact_radius < contact_elements_per_radius * h)
+    const double             size = r.model.element_size_under_ball;
+    if (contact_area && size > 0. &&
+        r.max_contact_radius < contact_elements_per_radius * size)
       {
         char text[400];
         std::snprintf(
@@ -70,8 +70,8 @@ namespace fgimpact
           "resolved; raise Geometry/Contact refinement levels (now %u) or "
           "set it to auto",
           r.max_contact_radius * 1e3,
-          r.max_contact_radius / h,
-          h * 1e3,
+          r.max_contact_radius / size,
+          size * 1e3,
           contact_elements_per_radius,
           r.model.contact_refinement_levels);
         warnings.emplace_back(text);
@@ -87,8 +87,8 @@ namespace fgimpact
       std::snprintf(text,
                     sizeof(text),
                     "the %s (%.4g mm) exceeds %.0f %% of %s (%.4g mm): "
-                    "outside the small-strain elastic model; lower "
-                    "Impactor/Initial velocity or check the scene",
+                      "outside the small-strain elastic model; lower "
+                      "Impactor/Initial velocity or check the scene",
                     what,
                     value * 1e3,
                     100. * limit,

@@ -199,6 +199,27 @@ namespace
 
 
 
+  /// Another run's output directory is refused (bad input, exit code 1)
+  /// before the set-up's work; 0 if it is free.
+  int
+  refuse_busy_directory(const fgimpact::OutputParameters &output,
+                        const bool                        root)
+  {
+    try
+      {
+        fgimpact::run_on_root(MPI_COMM_WORLD, [&]() {
+          fgimpact::check_output_directory_free(output.directory);
+        });
+      }
+    catch (...)
+      {
+        return fgimpact::report_failure(std::current_exception(), root, 1);
+      }
+    return 0;
+  }
+
+
+
   /// Set up, write the start files and run one simulation; the exit code.
   int
   simulate(const fgimpact::CommandLine::Options &options,
@@ -213,6 +234,8 @@ namespace
     using namespace dealii;
     using namespace fgimpact;
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    if (const int code = refuse_busy_directory(parameters.output, root))
+      return code;
     try
       {
         Simulator simulator(parameters, MPI_COMM_WORLD);
@@ -292,8 +315,9 @@ main(int argc, char *argv[])
   using namespace fgimpact;
 
   CommandLine::prepare_mpi_environment();
-  ignore_broken_pipe();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // After MPI's start-up, which may install handlers of its own.
+  ignore_broken_pipe();
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   Logger     logger(root);
 

@@ -169,9 +169,9 @@ namespace fgimpact
   void
   ModalAnalysis::solve()
   {
-    const auto        &K = plate.stiffness_matrix();
-    const auto        &M = plate.mass_matrix();
-    const unsigned int n = parameters.n_modes;
+    const auto        &K     = plate.stiffness_matrix();
+    const auto        &M     = plate.mass_matrix();
+    const unsigned int n     = parameters.n_modes;
     const double       sigma = std::pow(2. * M_PI * parameters.shift, 2);
 
     // Unconstrained DoFs mask: constrained rows of K and M carry

@@ -64,7 +64,7 @@ namespace fgimpact
                 {
                   // (t + omega x p)_c: t_c + sum_k omega_k (e_k x p)_c.
                   std::array<double, 6> row = {};
-                  row[c] = 1.;
+                  row[c]                    = 1.;
                   for (unsigned int k = 0; k < 3; ++k)
                     {
                       const unsigned int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
@@ -142,12 +142,10 @@ namespace fgimpact
           name << "translation in " << axes[free];
           return name.str();
         }
-      const double size = std::max({g.length, g.width, g.thickness});
+      const double       size = std::max({g.length, g.width, g.thickness});
       const Tensor<1, 3> t({x[0], x[1], x[2]}), w({x[3], x[4], x[5]});
-      const Tensor<1, 3> p0       = cross_product_3d(w, t) / (w * w);
-      const double       centre[3] = {g.length / 2,
-                                      g.width / 2,
-                                      g.thickness / 2};
+      const Tensor<1, 3> p0  = cross_product_3d(w, t) / (w * w);
+      const double centre[3] = {g.length / 2, g.width / 2, g.thickness / 2};
       name << "rotation about ";
       if (std::abs(w[(free + 1) % 3]) + std::abs(w[(free + 2) % 3]) < 1e-10)
         name << "the " << axes[free - 3] << " axis";

@@ -87,16 +87,15 @@ namespace fgimpact
     for (const auto &cell : triangulation.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const BoundingBox<3> box = cell->bounding_box();
+          const BoundingBox<3> box       = cell->bounding_box();
           const double         tolerance = 1e-10 * cell->diameter();
           bool                 inside    = true;
           for (unsigned int d = 0; d < 3; ++d)
             inside = inside && p[d] >= box.lower_bound(d) - tolerance &&
                      p[d] <= box.upper_bound(d) + tolerance;
           if (inside)
-            h = std::min({h,
-                          cell->extent_in_direction(0),
-                          cell->extent_in_direction(1)});
+            h = std::min(
+              {h, cell->extent_in_direction(0), cell->extent_in_direction(1)});
         }
     return Utilities::MPI::min(h, mpi_communicator);
   }

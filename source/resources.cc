@@ -149,9 +149,9 @@ namespace fgimpact
   estimate_resources(const Parameters      &parameters,
                      const LocalRefinement &refinement)
   {
-    const double core_radius = refinement.radius;
-    const auto        &g = parameters.geometry;
-    const unsigned int p = parameters.finite_element.degree;
+    const double       core_radius = refinement.radius;
+    const auto        &g           = parameters.geometry;
+    const unsigned int p           = parameters.finite_element.degree;
     ResourceEstimate   e;
     // Cells: the brick grid plus, per contact refinement pass k, 7 new
     // cells for every cell of size h_k = hx/2^k that refine_locally()

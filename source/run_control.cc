@@ -7,17 +7,17 @@
 #include <fgimpact/run_control.h>
 
 #include <csignal>
+#include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <map>
-#include <sys/file.h>
-#include <unistd.h>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <new>
 #include <sstream>
+#include <sys/file.h>
+#include <unistd.h>
 
 namespace fgimpact
 {
@@ -408,13 +408,13 @@ namespace fgimpact
     std::vector<fs::path> own, foreign;
     for (const auto &entry : fs::directory_iterator(directory, error))
       if (entry.path().filename() != lock_file_name)
-      ((entry.is_regular_file() &&
-        is_own_output(entry.path().filename().string())) ||
-           (entry.is_directory() &&
-            is_checkpoint_directory(entry.path().filename().string())) ?
-         own :
-         foreign)
-        .push_back(entry.path());
+        ((entry.is_regular_file() &&
+          is_own_output(entry.path().filename().string())) ||
+             (entry.is_directory() &&
+              is_checkpoint_directory(entry.path().filename().string())) ?
+           own :
+           foreign)
+          .push_back(entry.path());
     // A checkpoint directory is replaced as a whole when a checkpoint is
     // written: one that holds a file of the user's is refused, before
     // anything is removed.
@@ -480,6 +480,30 @@ namespace fgimpact
     // the files (log.txt, history.csv, summary.txt) go on.
     std::signal(SIGPIPE, SIG_IGN);
   }
+
+
+  void
+  check_output_directory_free(const std::string &directory)
+  {
+    const std::string name = directory + "/" + lock_file_name;
+    const int         fd   = ::open(name.c_str(), O_RDWR | O_CLOEXEC);
+    if (fd < 0)
+      return; // no lock file: nobody has run there (or it is not usable,
+              // which prepare_output_directory() reports)
+    const bool free    = ::flock(fd, LOCK_EX | LOCK_NB) == 0;
+    char       pid[32] = {};
+    const auto n       = free ? 0 : ::read(fd, pid, sizeof(pid) - 1);
+    ::close(fd); // releases the probe's lock, if it got it
+    AssertThrow(free,
+                ExcMessage("Output/Directory '" + directory +
+                           "' is in use by another fgimpact run (process "
+                           "id " +
+                           (n > 0 ? one_line(std::string(pid, n)) :
+                                    std::string("unknown")) +
+                           "); wait for it to end or choose another "
+                           "directory."));
+  }
+
 
 
   void

@@ -328,9 +328,9 @@ namespace fgimpact
     // The fewest levels whose in-plane element size h0 / 2^L puts
     // contact_elements_per_radius element sizes across the estimated
     // largest contact radius (doc/contact.md derives the number).
-    const auto  &g  = parameters.geometry;
-    const double h0 = std::min(g.length / g.subdivisions_x,
-                               g.width / g.subdivisions_y);
+    const auto  &g = parameters.geometry;
+    const double h0 =
+      std::min(g.length / g.subdivisions_x, g.width / g.subdivisions_y);
     unsigned int levels = 0;
     while (levels < 12 &&
            h0 / std::pow(2., levels) >

@@ -515,13 +515,13 @@ namespace fgimpact
       double                                removed_mass = 0; // kg
       // Declared before the solver, which refers to it: members are
       // destroyed in reverse order (Amesos_Mumps crashed otherwise).
-      TrilinosWrappers::SparseMatrix       effective;
-      EffectiveMatrixSolver                solver;
-      const PlateModel                    &plate;
-      ContactModel                        &contact_model;
-      std::vector<types::global_dof_index> dofs;
-      const double                         m_i;
-      TrilinosWrappers::MPI::Vector        Mu, Mv, Ma, u_new, Mu_new, rhs;
+      TrilinosWrappers::SparseMatrix             effective;
+      EffectiveMatrixSolver                      solver;
+      const PlateModel                          &plate;
+      ContactModel                              &contact_model;
+      std::vector<types::global_dof_index>       dofs;
+      const double                               m_i;
+      TrilinosWrappers::MPI::Vector              Mu, Mv, Ma, u_new, Mu_new, rhs;
       std::vector<TrilinosWrappers::MPI::Vector> c;
       FullMatrix<double>                         compliance;
       bool                                       iterative = false;

@@ -251,7 +251,7 @@ namespace fgimpact
     ConditionalOStream pcout;
     ImpactResults     &impact_results;
 
-    PointProbe                 mid_probe, top_probe;
+    PointProbe mid_probe, top_probe;
     /// The stepper's fields with the constraints distributed: every
     /// probe, VTU snapshot and peak field reads these.
     PlateFields                fields;
@@ -285,9 +285,9 @@ namespace fgimpact
     std::string output_failure_message;
     /// A resumed run: history.csv's length and the PVD entries at the
     /// checkpoint.
-    std::uintmax_t                              history_length = 0;
+    std::uintmax_t history_length = 0;
     /// probes.csv's length at the checkpoint (0: no probes).
-    std::uintmax_t probe_length = 0;
+    std::uintmax_t                              probe_length = 0;
     std::vector<std::pair<double, std::string>> vtu_records, sphere_records,
       contact_records;
     bool rewrite_snapshot = false;

@@ -159,6 +159,12 @@ namespace fgimpact
   void
   lock_output_directory(const std::string &directory);
 
+  /// Before the set-up: refuse at once (ExcMessage, as
+  /// lock_output_directory()) a directory another process holds; writes
+  /// nothing.  lock_output_directory() takes the lock later.
+  void
+  check_output_directory_free(const std::string &directory);
+
   /**
    * Create the output directory, check that a byte can be written there,
    * and clean it: with Output/Overwrite remove exactly the files this
@@ -168,8 +174,9 @@ namespace fgimpact
    * sphere_DDDDD.vtu, contact_DDDDD.vtu, peak_fields.pvtu and .R.vtu,
    * leftover *.tmp, and the rank_DDDD.bin files of the checkpoint
    * directories, which go only if nothing else is in them), otherwise
-   * refuse a non-empty directory (the lock file aside).  Call on one rank, before the run opens its log.txt
-   * there; throws ExcMessage naming Output/Directory or Output/Overwrite.
+   * refuse a non-empty directory (the lock file aside).  Call on one rank,
+   * before the run opens its log.txt there; throws ExcMessage naming
+   * Output/Directory or Output/Overwrite.
    */
   void
   prepare_output_directory(const OutputParameters &output);

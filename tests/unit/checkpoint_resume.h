@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <set>
+#include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <thread>
@@ -189,8 +189,7 @@ namespace checkpoint_test
         const std::string name = entry.path().filename().string();
         if (entry.is_regular_file() && name != "history.csv" &&
             name != "summary.txt" && name != "log.txt" &&
-            name != "parameters.prm" && name != "input.prm" &&
-            name[0] != '.')
+            name != "parameters.prm" && name != "input.prm" && name[0] != '.')
           names.insert(name);
       }
     return names;
@@ -235,8 +234,8 @@ namespace checkpoint_test
         (i >= s1.size() || i >= s2.size() || s1[i] != s2[i]);
     c.same_length = c.same_length && s1.size() == s2.size() && s1.size() > 20 &&
                     h1.size() > 50;
-    const auto names = other_outputs(reference), resumed_names =
-                                                    other_outputs(resumed);
+    const auto names          = other_outputs(reference),
+               resumed_names  = other_outputs(resumed);
     std::set<std::string> all = names;
     all.insert(resumed_names.begin(), resumed_names.end());
     for (const auto &name : all)

@@ -257,8 +257,8 @@ main()
     const std::string err  = read("cli.stderr");
     check("'#' in Output/Directory (-s): exit 1, one line naming it, "
           "nothing written",
-          code == 1 && n_lines(err) == 1 &&
-            contains(err, "Output/Directory") && !fs::exists("cli#x"));
+          code == 1 && n_lines(err) == 1 && contains(err, "Output/Directory") &&
+            !fs::exists("cli#x"));
   }
 
   // A tabulated profile given relative to its .prm (run from another

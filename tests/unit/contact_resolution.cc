@@ -44,7 +44,7 @@ namespace
   std::pair<double, unsigned int>
   expected(const Parameters &p)
   {
-    const double E = p.material.metal_youngs_modulus,
+    const double E  = p.material.metal_youngs_modulus,
                  nu = p.material.poissons_ratio, R = p.impactor.radius;
     double a_H = 0;
     if (p.problem_type == ProblemType::static_load)
@@ -57,10 +57,10 @@ namespace
         const double alpha = std::pow(5. * m * V0 * V0 / (4. * K), 0.4);
         a_H                = std::sqrt(R * alpha);
       }
-    const auto  &g  = p.geometry;
-    const double h0 = std::min(g.length / g.subdivisions_x,
-                               g.width / g.subdivisions_y);
-    unsigned int L  = 0;
+    const auto  &g = p.geometry;
+    const double h0 =
+      std::min(g.length / g.subdivisions_x, g.width / g.subdivisions_y);
+    unsigned int L = 0;
     while (h0 / std::pow(2., L) > a_H / 4. * (1. + 1e-12))
       ++L;
     return {a_H, p.uses_resolved_contact() ? L : 0};
@@ -104,8 +104,9 @@ main(int argc, char **argv)
       const Parameters                 p = parse(settings);
       const FunctionallyGradedMaterial material(p.material,
                                                 p.geometry.thickness);
-      const double a = expected_contact_radius(p, material, p.geometry.thickness);
-      const unsigned int L = automatic_contact_refinement_levels(p, a);
+      const double                     a =
+        expected_contact_radius(p, material, p.geometry.thickness);
+      const unsigned int L         = automatic_contact_refinement_levels(p, a);
       const auto [a_H, L_expected] = expected(p);
       const bool same = std::abs(a - a_H) <= 1e-12 * a_H && L == L_expected;
       std::printf("   %-30s a_H %.4f mm (closed form %.4f), levels %u "
@@ -128,8 +129,9 @@ main(int argc, char **argv)
   const std::string levels = summary_text("contact_refinement_levels"),
                     size   = summary_text("element_size_under_ball_mm"),
                     none   = summary_text("warnings");
-  const bool auto_ok = levels == "5" && std::abs(std::stod(size) - 5. / 32.) <
-                                          1e-6 && none == "none";
+  const bool auto_ok       = levels == "5" &&
+                       std::abs(std::stod(size) - 5. / 32.) < 1e-6 &&
+                       none == "none";
   std::printf("2. auto: contact_model = %s, contact_refinement_levels = %s, "
               "element_size_under_ball_mm = %s (5 mm / 2^5 = 0.156250), "
               "warnings = %s: %s\n",
@@ -150,13 +152,13 @@ main(int argc, char **argv)
               warning.c_str(),
               warned ? "yes" : "NO");
   fgimpact_tests::run_quietly(prm_file, run);
-  const bool node_ok = summary_text("contact_model") == "hertz node" &&
-                       summary_text("contact_refinement_levels") == "0" &&
-                       summary_text("element_size_under_ball_mm") ==
-                         "5.000000" &&
-                       summary_text("symmetry") == "quarter" &&
-                       summary_text("scheme") == "implicit" &&
-                       summary_text("time_step_us") == "1.000000";
+  const bool node_ok =
+    summary_text("contact_model") == "hertz node" &&
+    summary_text("contact_refinement_levels") == "0" &&
+    summary_text("element_size_under_ball_mm") == "5.000000" &&
+    summary_text("symmetry") == "quarter" &&
+    summary_text("scheme") == "implicit" &&
+    summary_text("time_step_us") == "1.000000";
   std::printf("   hertz node: contact_model = %s, levels %s, element size "
               "%s mm, symmetry %s, scheme %s, dt %s us: %s\n",
               summary_text("contact_model").c_str(),

@@ -36,7 +36,7 @@ using namespace dealii;
 
 namespace
 {
-  const unsigned int n_fields = 4; // u, v, a (3 each), sigma_zz
+  const unsigned int n_fields              = 4; // u, v, a (3 each), sigma_zz
   const char *const  field_names[n_fields] = {"displacement_m",
                                               "velocity_m_s",
                                               "acceleration_m_s2",
@@ -71,7 +71,7 @@ namespace
         const std::string file = "out/solution_" +
                                  Utilities::int_to_string(step, 5) + "." +
                                  std::to_string(piece) + ".vtu";
-        const auto xyz = fgimpact_tests::read_points(file);
+        const auto                      xyz = fgimpact_tests::read_points(file);
         std::vector<std::vector<float>> data;
         for (const char *name : field_names)
           data.push_back(fgimpact_tests::read_array(file, name));
@@ -98,11 +98,11 @@ namespace
 
   struct HangingCheck
   {
-    std::set<Key>          vertices;      // the hanging vertices found
-    unsigned int           n_checked = 0; // (vertex, fine cell) pairs
-    std::array<double, 4>  largest{};     // |difference| per field
-    std::array<double, 4>  scale{};       // largest |value| per field
-    std::vector<PointValues> top;         // hanging vertices on z = h
+    std::set<Key>            vertices;      // the hanging vertices found
+    unsigned int             n_checked = 0; // (vertex, fine cell) pairs
+    std::array<double, 4>    largest{};     // |difference| per field
+    std::array<double, 4>    scale{};       // largest |value| per field
+    std::vector<PointValues> top;           // hanging vertices on z = h
   };
 
   /// Check every hanging vertex of one snapshot against its coarse cell.
@@ -159,8 +159,8 @@ namespace
               {
                 bool between = true;
                 for (unsigned int d = 0; d < 3; ++d)
-                  between = between &&
-                            (t[d] == 1 || ((c >> d) & 1u) == t[d] / 2);
+                  between =
+                    between && (t[d] == 1 || ((c >> d) & 1u) == t[d] / 2);
                 if (!between)
                   continue;
                 ++n;
@@ -216,7 +216,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-  const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const bool root       = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   const std::string prm = FGIMPACT_SOURCE_DIR "/prm/default.prm";
   const double      h   = 0.02; // m
   bool              ok  = true;
@@ -300,8 +300,8 @@ main(int argc, char **argv)
       std::ifstream in("out/probes.csv");
       std::string   line;
       std::getline(in, line);
-      const auto   header = Utilities::split_string_list(line, ',');
-      const auto   column = [&](const std::string &name) {
+      const auto header = Utilities::split_string_list(line, ',');
+      const auto column = [&](const std::string &name) {
         return std::find(header.begin(), header.end(), name) - header.begin();
       };
       double       largest_u = 0, largest_v = 0, uz_peak = 0;
@@ -322,7 +322,8 @@ main(int argc, char **argv)
                          std::abs(std::stod(cells[column("hanging" + v)]) -
                                   std::stod(cells[column("beside" + v)])));
             }
-          uz_peak = std::min(uz_peak, std::stod(cells[column("hanging_uz_um")]));
+          uz_peak =
+            std::min(uz_peak, std::stod(cells[column("hanging_uz_um")]));
           ++rows;
         }
       const bool same = rows == 61 && largest_u <= 2e-6 && largest_v <= 2e-6;

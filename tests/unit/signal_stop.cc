@@ -214,10 +214,9 @@ namespace
              "subsection Output\n set Directory = "
           << dir << "\n set Log interval = 1\n set Print timing = false\nend\n";
     }
-    const std::string command =
-      std::string("bash -c '") + FGIMPACT_EXECUTABLE +
-      " pipe.prm 2>&1 | head -c 300 > /dev/null; "
-      "echo ${PIPESTATUS[0]} > pipe.status'";
+    const std::string command = std::string("bash -c '") + FGIMPACT_EXECUTABLE +
+                                " pipe.prm 2>&1 | head -c 300 > /dev/null; "
+                                "echo ${PIPESTATUS[0]} > pipe.status'";
     const int         status  = std::system(command.c_str());
     const std::string code    = read("pipe.status");
     const std::string summary = read(dir + "/summary.txt");

@@ -76,10 +76,10 @@ main(int argc, char **argv)
 
   // (2) The mid-plane centre (0.1, 0.05, 0.01) m against probes.csv at
   // t = 20 us (step 10).
-  const auto         points = read_array(snapshot(10), "acceleration_m_s2");
-  const std::string  file   = snapshot(10);
+  const auto        points = read_array(snapshot(10), "acceleration_m_s2");
+  const std::string file   = snapshot(10);
   const std::vector<float> coordinates = fgimpact_tests::read_points(file);
-  double a_z  = std::nan("");
+  double                   a_z         = std::nan("");
   for (std::size_t k = 0; 3 * k + 2 < coordinates.size(); ++k)
     if (std::abs(coordinates[3 * k] - 0.1) < 1e-6 &&
         std::abs(coordinates[3 * k + 1] - 0.05) < 1e-6 &&
