@@ -396,7 +396,7 @@ namespace fgimpact
 
 
   void
-  ImpactDriver::write_failed_summary() const
+  ImpactDriver::write_failed_summary(const std::string &status) const
   {
     if (monitor || !checkpoint_settings.resume_directory.empty() ||
         Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
@@ -411,7 +411,7 @@ namespace fgimpact
                          r,
                          contact && contact->reports_contact_area(),
                          parameters.output.instrumentation,
-                         "failed",
+                         status,
                          0.);
   }
 

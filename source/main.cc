@@ -199,15 +199,36 @@ namespace
 
 
 
-  /// Another run's output directory is refused (bad input, exit code 1)
-  /// before the set-up's work; 0 if it is free.
+  /// A stop signal (SIGINT, SIGTERM, SIGHUP, SIGXFSZ) that came during the
+  /// set-up or the start files (it only set a flag): nothing computed,
+  /// summary.txt says interrupted; RunInterrupted on every rank.
+  void
+  stop_if_signalled_in_setup(const fgimpact::Simulator &simulator)
+  {
+    const int stop = fgimpact::agreed_stop(MPI_COMM_WORLD, false);
+    if (stop <= 0)
+      return;
+    simulator.write_failed_summary("interrupted");
+    throw fgimpact::RunInterrupted(
+      stop,
+      std::string("interrupted by ") + fgimpact::signal_name(stop) +
+        " during the set-up (nothing computed); summary.txt says status = "
+        "interrupted; run it again.");
+  }
+
+
+
+  /// An output directory that cannot be used, or that another run holds,
+  /// is refused (bad input, exit code 1) before the set-up's work (and by
+  /// --validate); 0 if it is usable and free.
   int
-  refuse_busy_directory(const fgimpact::OutputParameters &output,
-                        const bool                        root)
+  refuse_unusable_directory(const fgimpact::OutputParameters &output,
+                            const bool                        root)
   {
     try
       {
         fgimpact::run_on_root(MPI_COMM_WORLD, [&]() {
+          fgimpact::check_output_directory_usable(output.directory);
           fgimpact::check_output_directory_free(output.directory);
         });
       }
@@ -234,7 +255,7 @@ namespace
     using namespace dealii;
     using namespace fgimpact;
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    if (const int code = refuse_busy_directory(parameters.output, root))
+    if (const int code = refuse_unusable_directory(parameters.output, root))
       return code;
     try
       {
@@ -293,6 +314,7 @@ namespace
             return fail_before_run(
               std::current_exception(), simulator, true, nullptr, root);
           }
+        stop_if_signalled_in_setup(simulator);
         simulator.run();
         if (root)
           std::cout << "fgimpact: results in " << parameters.output.directory
@@ -314,10 +336,17 @@ main(int argc, char *argv[])
   using namespace dealii;
   using namespace fgimpact;
 
+  // Before any thread exists (MPI's, the thread pools'): the stop signals
+  // go to the main thread only (its SignalGuard below unblocks them).
+  block_stop_signals_in_new_threads();
   CommandLine::prepare_mpi_environment();
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // After MPI's start-up, which may install handlers of its own.
   ignore_broken_pipe();
+  // From here on SIGINT, SIGTERM, SIGHUP and SIGXFSZ only set a flag, which
+  // the set-up, the time loop and the static and modal solves look at: no
+  // signal is lost, and every run that ends has a summary.txt.
+  const SignalGuard signals;
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   Logger     logger(root);
 

@@ -17,6 +17,7 @@
 #include <new>
 #include <sstream>
 #include <sys/file.h>
+#include <sys/statfs.h>
 #include <unistd.h>
 
 namespace fgimpact
@@ -313,15 +314,77 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The stop signals as a set.
+    sigset_t
+    stop_signal_set()
+    {
+      sigset_t set;
+      sigemptyset(&set);
+      for (const int s : stop_signals)
+        sigaddset(&set, s);
+      return set;
+    }
+
+    /// Whether a SignalGuard is active (its handler is to be put back).
+    int guard_depth = 0;
+
+    void
+    install_stop_handler()
+    {
+      struct sigaction action = {};
+      action.sa_handler       = on_stop_signal;
+      sigemptyset(&action.sa_mask);
+      action.sa_flags = SA_RESTART;
+      for (const int s : stop_signals)
+        sigaction(s, &action, nullptr);
+    }
+  } // namespace
+
+
+
+  void
+  block_stop_signals_in_new_threads()
+  {
+    const sigset_t set = stop_signal_set();
+    pthread_sigmask(SIG_BLOCK, &set, nullptr);
+  }
+
+
+
+  DeferStopSignals::DeferStopSignals()
+  {
+    const sigset_t set = stop_signal_set();
+    pthread_sigmask(SIG_BLOCK, &set, &previous_mask);
+  }
+
+
+
+  DeferStopSignals::~DeferStopSignals()
+  {
+    if (guard_depth > 0)
+      install_stop_handler();
+    pthread_sigmask(SIG_SETMASK, &previous_mask, nullptr);
+  }
+
+
+
   SignalGuard::SignalGuard()
   {
-    stop_signal             = 0;
+    // No reset of stop_signal: a nested guard (the time loop's) must not
+    // lose a signal that came during the set-up.
     struct sigaction action = {};
     action.sa_handler       = on_stop_signal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART;
     for (unsigned int i = 0; i < 4; ++i)
       sigaction(stop_signals[i], &action, &previous[i]);
+    ++guard_depth;
+    // The main thread receives them (block_stop_signals_in_new_threads()
+    // blocked them for every thread).
+    const sigset_t set = stop_signal_set();
+    pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
   }
 
 
@@ -330,6 +393,7 @@ namespace fgimpact
   {
     for (unsigned int i = 0; i < 4; ++i)
       sigaction(stop_signals[i], &previous[i], nullptr);
+    --guard_depth;
   }
 
 
@@ -480,6 +544,50 @@ namespace fgimpact
     // the files (log.txt, history.csv, summary.txt) go on.
     std::signal(SIGPIPE, SIG_IGN);
   }
+
+
+  void
+  check_output_directory_usable(const std::string &directory)
+  {
+    namespace fs = std::filesystem;
+    const std::string where =
+      "Output/Directory '" +
+      (directory.size() > 80 ? directory.substr(0, 80) + "..." : directory) +
+      "'";
+    AssertThrow(directory.size() <= 1024,
+                ExcMessage(where + " is longer than 1024 characters (" +
+                           std::to_string(directory.size()) + ")."));
+    // The directory, or the nearest ancestor that exists: a directory the
+    // program may write into, on a real file system.
+    std::error_code error;
+    fs::path        path = fs::absolute(directory, error);
+    for (;;)
+      {
+        const auto status = fs::status(path, error);
+        if (!error && fs::exists(status))
+          {
+            AssertThrow(fs::is_directory(status),
+                        ExcMessage(where + ": " + path.string() +
+                                   " is not a directory."));
+            break;
+          }
+        AssertThrow(!error || error == std::errc::no_such_file_or_directory,
+                    ExcMessage(where + " cannot be used: " + error.message() +
+                               "."));
+        AssertThrow(path.has_parent_path() && path != path.parent_path(),
+                    ExcMessage(where + " cannot be created."));
+        path = path.parent_path();
+      }
+    struct statfs file_system;
+    const bool    virtual_fs = ::statfs(path.c_str(), &file_system) == 0 &&
+                            (file_system.f_type == 0x9fa0 /* proc */ ||
+                             file_system.f_type == 0x62656572 /* sysfs */);
+    AssertThrow(!virtual_fs && ::access(path.c_str(), W_OK | X_OK) == 0,
+                ExcMessage(where + " is not writable (" + path.string() +
+                           (virtual_fs ? " is a virtual file system)." :
+                                         ": no permission).")));
+  }
+
 
 
   void

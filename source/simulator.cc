@@ -32,12 +32,12 @@ namespace fgimpact
 
       /// Only the status and the problem size: the results do not exist.
       void
-      write_failed_summary() const override
+      write_failed_summary(const std::string &status) const override
       {
         if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
           return;
         SummaryWriter out;
-        out.add_text("status", "failed");
+        out.add_text("status", status);
         out.add("n_dofs", plate.n_dofs(), 0);
         out.write(parameters.output.directory + "/summary.txt");
       }
@@ -72,6 +72,24 @@ namespace fgimpact
                         ExcNumericalFailure("in the " + phase + ": " +
                                             message_of(e)));
           }
+        stop_if_signalled(phase);
+      }
+
+      /// SIGINT/SIGTERM/SIGHUP during the solve (which cannot stop midway,
+      /// and the signal only set a flag): no results, summary.txt says
+      /// interrupted, RunInterrupted on every rank.
+      void
+      stop_if_signalled(const std::string &phase) const
+      {
+        const int stop = agreed_stop(plate.get_mpi_communicator(), false);
+        if (stop <= 0)
+          return;
+        write_failed_summary("interrupted");
+        throw RunInterrupted(stop,
+                             std::string("interrupted by ") +
+                               signal_name(stop) + " during the " + phase +
+                               "; no results written, summary.txt says "
+                               "status = interrupted; run it again.");
       }
 
       const Parameters  &parameters;
@@ -368,6 +386,10 @@ namespace fgimpact
       {
         driver->run();
       }
+    catch (const RunInterrupted &)
+      {
+        throw; // its summary.txt says interrupted already
+      }
     catch (...)
       {
         // The impact driver writes its own failed summary once its outputs
@@ -380,7 +402,7 @@ namespace fgimpact
 
 
   void
-  Simulator::write_failed_summary() const
+  Simulator::write_failed_summary(const std::string &status) const
   {
     if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
       return;
@@ -388,11 +410,11 @@ namespace fgimpact
     try
       {
         if (driver)
-          driver->write_failed_summary();
+          driver->write_failed_summary(status);
         else
           {
             SummaryWriter out;
-            out.add_text("status", "failed");
+            out.add_text("status", status);
             out.write(parameters.output.directory + "/summary.txt");
           }
       }

@@ -10,8 +10,10 @@
 #include <fgimpact/simulator.h>
 #include <fgimpact/study.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <set>
@@ -94,7 +96,12 @@ namespace fgimpact
         AssertThrow(eq != std::string::npos && eq > 0,
                     ExcMessage("Study/Entries: '" + entry +
                                "' is not 'Section/Entry = v1, v2, ...'"));
-        paths.push_back(Utilities::trim(entry.substr(0, eq)));
+        const std::string path = Utilities::trim(entry.substr(0, eq));
+        AssertThrow(std::find(paths.begin(), paths.end(), path) == paths.end(),
+                    ExcMessage("Study/Entries: '" + path +
+                               "' is listed twice (the second list would "
+                               "replace the first); give it once."));
+        paths.push_back(path);
         lists.push_back(
           Utilities::split_string_list(entry.substr(eq + 1), ','));
         AssertThrow(!lists.back().empty() && !paths.back().empty(),
@@ -248,12 +255,65 @@ namespace fgimpact
       simulator.run();
     }
 
-    /// The group's cases: by convolution if the engine applies.
+    /// "case_NNN" of a case's output directory.
+    std::string
+    case_name(const std::string &directory)
+    {
+      return directory.substr(directory.find_last_of('/') + 1);
+    }
+
+    /// The one-line text of a failure (as report_failure() prints it).
+    std::string
+    failure_text(const std::exception_ptr &failure)
+    {
+      try
+        {
+          std::rethrow_exception(failure);
+        }
+      catch (const ExceptionBase &e)
+        {
+          return message_of(e);
+        }
+      catch (const std::exception &e)
+        {
+          return one_line(e.what());
+        }
+      catch (...)
+        {
+          return "unknown exception";
+        }
+    }
+
+    /// A failed case whose summary.txt was not written (the convolution
+    /// engine's failures): status = failed, as a failed single run's.
     void
-    run_group(const StudyParameters                 &study,
-              const std::vector<const ParsedCase *> &cases,
-              const InputFile                       &input,
-              const Timer                           &study_timer)
+    ensure_failed_summary(const std::string &directory)
+    {
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      std::ifstream in(directory + "/summary.txt");
+      std::string   text((std::istreambuf_iterator<char>(in)),
+                       std::istreambuf_iterator<char>());
+      if (text.find("status = failed") != std::string::npos)
+        return;
+      try
+        {
+          SummaryWriter out;
+          out.add_text("status", "failed");
+          out.write(directory + "/summary.txt");
+        }
+      catch (...)
+        {}
+    }
+
+    /// The group's cases: by convolution if the engine applies; a case
+    /// that fails is added to failures (name, one-line reason).
+    void
+    run_group(const StudyParameters                            &study,
+              const std::vector<const ParsedCase *>            &cases,
+              const InputFile                                  &input,
+              const Timer                                      &study_timer,
+              std::vector<std::pair<std::string, std::string>> &failures)
     {
       ConditionalOStream pcout(
         std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
@@ -291,13 +351,29 @@ namespace fgimpact
           for (unsigned int e = 0; e < c->study_case.paths.size(); ++e)
             pcout << ' ' << c->study_case.assignment(e) << ';';
           pcout << '\n';
-          if (engine && reason.empty())
+          try
             {
-              start_case_files(*c, input);
-              engine->run_case(c->parameters);
+              if (engine && reason.empty())
+                {
+                  start_case_files(*c, input);
+                  engine->run_case(c->parameters);
+                }
+              else
+                run_time_loop(*c, input);
             }
-          else
-            run_time_loop(*c, input);
+          catch (const RunInterrupted &)
+            {
+              throw; // a signal stops the study
+            }
+          catch (...)
+            {
+              // The case failed (its summary.txt says so); the others run.
+              failures.push_back({case_name(c->parameters.output.directory),
+                                  failure_text(std::current_exception())});
+              pcout << "  study case failed: " << failures.back().second
+                    << '\n';
+              ensure_failed_summary(c->parameters.output.directory);
+            }
         }
     }
 
@@ -326,9 +402,11 @@ namespace fgimpact
                     const std::string             &filename)
     {
       std::vector<std::string> keys;
-      for (const auto &[key, value] :
-           read_summary(cases[0].parameters.output.directory + "/summary.txt"))
-        keys.push_back(key);
+      for (const auto &c : cases)
+        for (const auto &[key, value] :
+             read_summary(c.parameters.output.directory + "/summary.txt"))
+          if (std::find(keys.begin(), keys.end(), key) == keys.end())
+            keys.push_back(key);
       std::ostringstream csv;
       csv << "case";
       for (const auto &path : cases[0].study_case.paths)
@@ -401,9 +479,24 @@ namespace fgimpact
                         << cases[only_case].parameters.output.directory << '\n';
             return 0;
           }
+        try
+          {
+            run_on_root(MPI_COMM_WORLD, [&]() {
+              check_output_directory_usable(base.output.directory);
+              lock_output_directory(base.output.directory);
+              prepare_output_directory(base.output);
+            });
+          }
+        catch (const ExcOutputFailure &)
+          {
+            throw;
+          }
+        catch (...)
+          {
+            // An unusable directory is bad input, as for a single run.
+            return report_failure(std::current_exception(), root, 1);
+          }
         run_on_root(MPI_COMM_WORLD, [&]() {
-          lock_output_directory(base.output.directory);
-          prepare_output_directory(base.output);
           logger.open(base.output.directory + "/log.txt", provenance);
           SummaryWriter::set_preamble(provenance);
         });
@@ -418,8 +511,9 @@ namespace fgimpact
               order.push_back(c.group);
             groups[c.group].push_back(&c);
           }
+        std::vector<std::pair<std::string, std::string>> failures;
         for (const auto &key : order)
-          run_group(study, groups[key], input, study_timer);
+          run_group(study, groups[key], input, study_timer, failures);
         run_on_root(MPI_COMM_WORLD, [&]() {
           write_study_csv(cases, base.output.directory + "/study.csv");
         });
@@ -429,6 +523,14 @@ namespace fgimpact
                     << base.output.directory
                     << " (study.csv; figures: scripts/plot_study.py "
                     << base.output.directory << "/study.csv)\n";
+        // Every case ran; the failed ones make the study a failed run.
+        AssertThrow(failures.empty(),
+                    ExcNumericalFailure(
+                      std::to_string(failures.size()) + " of " +
+                      std::to_string(cases.size()) +
+                      " study cases failed (study.csv gives every case's "
+                      "status); " +
+                      failures[0].first + ": " + failures[0].second));
       }
     catch (...)
       {

@@ -40,7 +40,7 @@ namespace fgimpact
     /// or in run() before its own outputs): summary.txt with status =
     /// failed.  Throws ExcOutputFailure if it cannot be written.
     virtual void
-    write_failed_summary() const = 0;
+    write_failed_summary(const std::string &status = "failed") const = 0;
   };
 
 
@@ -70,7 +70,7 @@ namespace fgimpact
     /// monitor exists (it wrote its own) or when resuming (the run being
     /// continued keeps its files).
     void
-    write_failed_summary() const override;
+    write_failed_summary(const std::string &status = "failed") const override;
 
     /// Subscribe to the history rows (before run()).
     void

@@ -4,6 +4,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
+#include <csignal>
 #include <exception>
 #include <functional>
 #include <string>
@@ -99,6 +100,33 @@ namespace fgimpact
    * handlers come back when the guard is destroyed.
    */
   /** @{ */
+  /**
+   * The stop signals blocked in the calling thread while this lives (a
+   * signal then waits), and our handler put back before they are unblocked:
+   * around library code that installs handlers of its own (METIS traps
+   * SIGTERM and swallows it, and restores a one-shot handler).  Together
+   * with block_stop_signals_in_new_threads(), no other thread receives
+   * them meanwhile.
+   */
+  class DeferStopSignals
+  {
+  public:
+    DeferStopSignals();
+    ~DeferStopSignals();
+    DeferStopSignals(const DeferStopSignals &) = delete;
+    DeferStopSignals &
+    operator=(const DeferStopSignals &) = delete;
+
+  private:
+    sigset_t previous_mask;
+  };
+
+  /// At the start of main(), before MPI and the thread pools start: the
+  /// stop signals blocked in every thread created from then on, so that
+  /// only the main thread (whose SignalGuard unblocks them) receives them.
+  void
+  block_stop_signals_in_new_threads();
+
   /// "SIGTERM", ... for the stop signals, else "a signal".
   const char *
   signal_name(const int signal);
@@ -164,6 +192,17 @@ namespace fgimpact
   /// nothing.  lock_output_directory() takes the lock later.
   void
   check_output_directory_free(const std::string &directory);
+
+  /**
+   * Before the set-up (and with --validate): refuse an output directory
+   * that cannot be used, writing nothing: a name longer than 1024
+   * characters, a path through a file or a symbolic-link loop, a
+   * directory (or the nearest existing ancestor) that is not writable or
+   * on a virtual file system (/proc, /sys).  ExcMessage naming
+   * Output/Directory.
+   */
+  void
+  check_output_directory_usable(const std::string &directory);
 
   /**
    * Create the output directory, check that a byte can be written there,

@@ -79,7 +79,7 @@ namespace fgimpact
     /// static or modal run): summary.txt with status = failed, best effort
     /// (a failure to write it is swallowed: the first failure counts).
     void
-    write_failed_summary() const;
+    write_failed_summary(const std::string &status = "failed") const;
 
     /// The impact's results (Problem type = impact only).
     const ImpactResults &

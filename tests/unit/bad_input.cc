@@ -53,6 +53,7 @@ namespace
     stale_files,     // Overwrite = true removes an earlier run's files
     user_checkpoint, // a user's file in Output/Directory/checkpoint/
     fifo_profile,    // profile.fifo: a FIFO with no writer
+    symlink_loop,    // loop_a -> loop_b -> loop_a
     dev_full         // Output/Directory/<full_file> is a link to /dev/full
   };
 
@@ -215,6 +216,16 @@ namespace
           for (const auto &name : decoy_names())
             write(dir + "/" + name, "mine\n");
           break;
+        case Setup::symlink_loop:
+          fs::remove("loop_a");
+          fs::remove("loop_b");
+          fs::create_symlink("loop_b", "loop_a");
+          fs::create_symlink("loop_a", "loop_b");
+          // The case's Output/Directory last: it wins.
+          write("case.prm",
+                "subsection Output\n set Directory = " + dir + "\nend\n" +
+                  c.prm);
+          return "case.prm";
         case Setup::fifo_profile:
           fs::remove("profile.fifo");
           mkfifo("profile.fifo", 0644);
@@ -391,6 +402,22 @@ namespace
          short_run,
        2,
        "Geometry/Contact refinement levels"},
+      {"output directory under a file",
+       "subsection Output\n set Directory = case.prm/sub\nend\n",
+       1,
+       "Output/Directory",
+       Setup::output_first},
+      {"output directory of 5000 characters",
+       "subsection Output\n set Directory = " + std::string(5000, 'x') +
+         "\nend\n",
+       1,
+       "Output/Directory",
+       Setup::output_first},
+      {"output directory through a symbolic-link loop",
+       "subsection Output\n set Directory = loop_a/out\nend\n",
+       1,
+       "Output/Directory",
+       Setup::symlink_loop},
       {"profile file is /dev/zero",
        "subsection Material\n set Gradation = tabulated\n set Profile file = /dev/zero\nend\n",
        1,

@@ -229,6 +229,36 @@ main()
           rerun == 0 && !first.empty() && history("cli_zip/case_001") == first);
   }
 
+  // A study whose second case fails (a time step far longer than the
+  // contact: the energy watchdog): the first case completes, the second
+  // has a failed summary.txt, study.csv lists both with their status, and
+  // the study exits 2 with one line naming the failed case.
+  write("cli_fail.prm", scene("cli_fail"));
+  {
+    const int code =
+      run("cli_fail.prm --study 'Time integration/Time step=2e-6,1e-4' "
+          "-s 'Time integration/End time=4e-3'");
+    const std::string err = read("cli.stderr");
+    const std::string csv = read("cli_fail/study.csv");
+    check(
+      "a study with a failing case: exit 2, one line naming case_001, "
+      "case_000 completed, case_001's summary failed, study.csv lists "
+      "both with their status",
+      code == 2 && n_lines(err) == 1 && contains(err, "case_001") &&
+        contains(read("cli_fail/case_000/summary.txt"), "status = completed") &&
+        contains(read("cli_fail/case_001/summary.txt"), "status = failed") &&
+        n_lines(csv) == 3 && contains(csv, ", completed") &&
+        contains(csv, ", failed"));
+  }
+  {
+    const int         code = run("cli_fail.prm --study 'Impactor/Initial "
+                                 "velocity=1,2' --study 'Impactor/Initial "
+                                 "velocity=3'");
+    const std::string err  = read("cli.stderr");
+    check("the same entry twice in a study: exit 1, one line saying so",
+          code == 1 && n_lines(err) == 1 && contains(err, "listed twice"));
+  }
+
   // The .prm from standard input.
   write("cli_stdin.prm", scene("cli_stdin", velocity_2));
   check("'-' reads standard input: the same history",

@@ -196,6 +196,66 @@ namespace
   }
 
   /**
+   * A signal before the time loop or during a static or modal solve (no
+   * time steps to stop after): SIGTERM `delay_ms` after the set-up began
+   * (the log's first line); the run stops with exit code 143, one line
+   * saying where, and summary.txt with status = interrupted.
+   */
+  bool
+  interrupt_early(const std::string &name,
+                  const std::string &prm_text,
+                  const unsigned int delay_ms)
+  {
+    const std::string dir = "early_" + name;
+    fs::remove_all(dir);
+    {
+      std::ofstream prm("early.prm");
+      prm << prm_text << "subsection Output\n set Directory = " << dir
+          << "\n set Log interval = 0\n set Print timing = false\n"
+             " set VTU interval = 0\nend\n";
+    }
+    std::fflush(stdout);
+    const pid_t pid = fork();
+    if (pid == 0)
+      {
+        std::freopen("early.stdout", "w", stdout);
+        std::freopen("early.stderr", "w", stderr);
+        execl(FGIMPACT_EXECUTABLE,
+              FGIMPACT_EXECUTABLE,
+              "early.prm",
+              static_cast<char *>(nullptr));
+        _exit(127);
+      }
+    for (unsigned int i = 0;
+         i < 6000 &&
+         read("early.stdout").find("fgimpact: FGM plate") == std::string::npos;
+         ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    std::this_thread::sleep_for(std::chrono::milliseconds(delay_ms));
+    kill(pid, SIGTERM);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    const bool        code = WIFEXITED(status) && WEXITSTATUS(status) == 143;
+    const std::string err  = read("early.stderr");
+    // Where it landed depends on the machine (the set-up, the solve, or
+    // for an impact the first time steps): each says so in its line.
+    const bool one = std::count(err.begin(), err.end(), '\n') == 1 &&
+                     err.find("interrupted by SIGTERM") != std::string::npos;
+    const bool interrupted =
+      value_of(read(dir + "/summary.txt"), "status") == "interrupted";
+    std::printf("SIGTERM %u ms into the %s run's set-up: exit code 143 %s, "
+                "one line %s, status = interrupted %s\n",
+                delay_ms,
+                name.c_str(),
+                code ? "yes" : "NO",
+                one ? "yes" : "NO",
+                interrupted ? "yes" : "NO");
+    if (!(code && one && interrupted))
+      std::printf("  status %d, stderr: %s\n", status, err.c_str());
+    return code && one && interrupted;
+  }
+
+  /**
    * The screen output piped into `head -c 300`, which exits after 300
    * bytes: the run must not die of SIGPIPE; it completes, with exit code
    * 0, summary.txt completed, every row of history.csv and log.txt to
@@ -248,7 +308,21 @@ main()
   const bool hup  = run_and_stop(SIGHUP, "SIGHUP", false);
   const bool mpi  = run_and_stop(SIGTERM, "SIGTERM", true);
   const bool pipe = piped_into_head();
-  const bool ok   = term && intr && hup && mpi && pipe;
+  // A mesh whose set-up takes about a second (whole plate), and signals
+  // at several moments of it; static and modal runs of it.
+  const std::string big =
+    "subsection Geometry\n set Subdivisions x = 80\n set Subdivisions y = "
+    "40\n set Subdivisions z = 4\n set Symmetry = none\nend\n";
+  bool early = true;
+  for (const unsigned int delay : {0u, 150u, 400u})
+    early = interrupt_early("impact", big, delay) && early;
+  // (A solve cannot stop midway: the modal one on the default mesh.)
+  const std::string plate = "subsection Geometry\n set Symmetry = none\nend\n";
+  early =
+    interrupt_early("static", "set Problem type = static\n" + big, 0) && early;
+  early = interrupt_early("modal", "set Problem type = modal\n" + plate, 100) &&
+          early;
+  const bool ok = term && intr && hup && mpi && pipe && early;
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
   return ok ? 0 : 1;
 }
