@@ -214,6 +214,8 @@ namespace
           << "\n set Log interval = 0\n set Print timing = false\n"
              " set VTU interval = 0\nend\n";
     }
+    // No earlier run's log may be read as this one's start.
+    fs::remove("early.stdout");
     std::fflush(stdout);
     const pid_t pid = fork();
     if (pid == 0)
