@@ -285,9 +285,7 @@ namespace fgimpact
   EffectiveMatrixSolver::initialize(const TrilinosWrappers::SparseMatrix &A,
                                     const DoFHandler<3> *dof_handler)
   {
-    // METIS (CHOLMOD's and MUMPS's ordering) traps SIGTERM and SIGABRT
-    // while it runs and swallows them (gk_sigtrap), then puts a one-shot
-    // handler back: a stop signal waits here and comes after.
+    // METIS (the orderings) swallows SIGTERM: stop signals wait here.
     const DeferStopSignals defer;
     matrix        = &A;
     resolved_type = parameters.type;

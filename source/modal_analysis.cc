@@ -136,6 +136,43 @@ namespace fgimpact
             X[j].add(q[j](i), Y[i]);
         }
     }
+
+    /// The subspace's size for n modes: 2 n + 8, at most the free DoFs
+    /// (mask's ones).  A mesh has as many modes as free DoFs: asking for
+    /// more cannot be answered (the block would be singular and LAPACK
+    /// return nothing).
+    unsigned int
+    block_size(const unsigned int n, const TrilinosWrappers::MPI::Vector &mask)
+    {
+      const auto n_free = static_cast<unsigned int>(mask.l1_norm() + 0.5);
+      AssertThrow(n <= n_free,
+                  ExcNumericalFailure(
+                    "Modal/Number of modes = " + std::to_string(n) +
+                    " exceeds the " + std::to_string(n_free) +
+                    " free DoFs of this mesh (its number of modes); ask for "
+                    "at most that many or refine Geometry/Subdivisions."));
+      return std::min<unsigned int>(2 * n + 8, n_free);
+    }
+
+    /// LAPACK's sygv reports a failure on the screen only and leaves
+    /// zeros (a free plate's rigid modes are near zero too, but never the
+    /// whole block): never write 0 Hz for modes not found.
+    void
+    check_ritz_values(const std::vector<double> &lambda,
+                      const unsigned int         iteration)
+    {
+      bool found = *std::max_element(lambda.begin(), lambda.end()) > 0.;
+      for (const double value : lambda)
+        found = found && std::isfinite(value);
+      AssertThrow(found,
+                  ExcNumericalFailure(
+                    "the subspace iteration's Rayleigh-Ritz problem failed "
+                    "at iteration " +
+                    std::to_string(iteration) +
+                    " (no eigenvalues: a singular block); ask for fewer "
+                    "Modal/Number of modes or refine Geometry/"
+                    "Subdivisions."));
+    }
   } // namespace
 
 
@@ -180,16 +217,7 @@ namespace fgimpact
     for (auto *v : {&mask, &w_mask, &tmp, &Mx})
       plate.initialize_vector(*v);
     make_masks(plate, mask, w_mask);
-    // A mesh has as many modes as free DoFs: asking for more cannot be
-    // answered (the block would be singular and LAPACK return nothing).
-    const auto n_free = static_cast<unsigned int>(mask.l1_norm() + 0.5);
-    AssertThrow(n <= n_free,
-                ExcNumericalFailure(
-                  "Modal/Number of modes = " + std::to_string(n) +
-                  " exceeds the " + std::to_string(n_free) +
-                  " free DoFs of this mesh (its number of modes); ask for "
-                  "at most that many or refine Geometry/Subdivisions."));
-    const unsigned int p = std::min<unsigned int>(2 * n + 8, n_free);
+    const unsigned int p = block_size(n, mask);
 
     // The shifted operator K - sigma M, factorized once.
     TrilinosWrappers::SparseMatrix shifted;
@@ -225,20 +253,7 @@ namespace fgimpact
             Y[j].scale(mask);
           }
         rayleigh_ritz(K, M, Y, tmp, Mx, lambda, X);
-        // LAPACK's sygv reports a failure on the screen only and leaves
-        // zeros (a free plate's rigid modes are near zero too, but never
-        // the whole block): never write 0 Hz for modes not found.
-        bool found = *std::max_element(lambda.begin(), lambda.end()) > 0.;
-        for (const double value : lambda)
-          found = found && std::isfinite(value);
-        AssertThrow(found,
-                    ExcNumericalFailure(
-                      "the subspace iteration's Rayleigh-Ritz problem "
-                      "failed at iteration " +
-                      std::to_string(iterations) +
-                      " (no eigenvalues: a singular block); ask for fewer "
-                      "Modal/Number of modes or refine Geometry/"
-                      "Subdivisions."));
+        check_ritz_values(lambda, iterations);
         if (iterations == 1)
           report_iteration_cost(first_iteration.wall_time(), p);
 

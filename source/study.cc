@@ -429,6 +429,30 @@ namespace fgimpact
         }
       write_file_atomically(filename, csv.str());
     }
+
+    /// The study's directory checked, locked and cleaned; an unusable one
+    /// is bad input (exit code 1, as for a single run), 0 if all went well.
+    int
+    prepare_study_directory(const OutputParameters &output, const bool root)
+    {
+      try
+        {
+          run_on_root(MPI_COMM_WORLD, [&]() {
+            check_output_directory_usable(output.directory);
+            lock_output_directory(output.directory);
+            prepare_output_directory(output);
+          });
+        }
+      catch (const ExcOutputFailure &)
+        {
+          throw;
+        }
+      catch (...)
+        {
+          return report_failure(std::current_exception(), root, 1);
+        }
+      return 0;
+    }
   } // namespace
 
 
@@ -479,23 +503,8 @@ namespace fgimpact
                         << cases[only_case].parameters.output.directory << '\n';
             return 0;
           }
-        try
-          {
-            run_on_root(MPI_COMM_WORLD, [&]() {
-              check_output_directory_usable(base.output.directory);
-              lock_output_directory(base.output.directory);
-              prepare_output_directory(base.output);
-            });
-          }
-        catch (const ExcOutputFailure &)
-          {
-            throw;
-          }
-        catch (...)
-          {
-            // An unusable directory is bad input, as for a single run.
-            return report_failure(std::current_exception(), root, 1);
-          }
+        if (const int code = prepare_study_directory(base.output, root))
+          return code;
         run_on_root(MPI_COMM_WORLD, [&]() {
           logger.open(base.output.directory + "/log.txt", provenance);
           SummaryWriter::set_preamble(provenance);
