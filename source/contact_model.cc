@@ -284,7 +284,8 @@ namespace fgimpact
         "plate theories' alpha; converges; needs an even Subdivisions z); "
         "the force is still a point force at the top node. resolved sphere: a rigid sphere in frictionless "
         "unilateral contact with every top node near the impact point (no "
-        "contact law; converges with Geometry/Contact refinement levels; "
+        "contact law; converges with Geometry/Contact refinement levels, "
+        "whose default auto resolves the contact radius; rigid ball only; "
         "implicit scheme only).");
       prm.declare_entry(
         "Gap shape",

@@ -7,6 +7,7 @@
 #include <fgimpact/run_control.h>
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
@@ -113,6 +114,25 @@ namespace fgimpact
           }
       if (fs::is_empty(directory, error))
         fs::remove(directory, error);
+    }
+
+    /// Close fd (a lock file another process holds) and throw the one
+    /// line naming the directory and the holder's process id (in the file).
+    [[noreturn]] void
+    refuse_busy(const std::string &directory, const int fd)
+    {
+      char          pid[32] = {};
+      const ssize_t n       = ::read(fd, pid, sizeof(pid) - 1);
+      ::close(fd);
+      AssertThrow(false,
+                  ExcMessage("Output/Directory '" + directory +
+                             "' is in use by another fgimpact run (process "
+                             "id " +
+                             (n > 0 ? one_line(std::string(pid, n)) :
+                                      std::string("unknown")) +
+                             "); wait for it to end or choose another "
+                             "directory."));
+      std::abort(); // not reached
     }
 
     /// The lock files this process holds (directory -> descriptor): one
@@ -273,18 +293,9 @@ namespace fgimpact
     if (fd < 0)
       return; // no lock file: nobody has run there (or it is not usable,
               // which prepare_output_directory() reports)
-    const bool free    = ::flock(fd, LOCK_EX | LOCK_NB) == 0;
-    char       pid[32] = {};
-    const auto n       = free ? 0 : ::read(fd, pid, sizeof(pid) - 1);
-    ::close(fd); // releases the probe's lock, if it got it
-    AssertThrow(free,
-                ExcMessage("Output/Directory '" + directory +
-                           "' is in use by another fgimpact run (process "
-                           "id " +
-                           (n > 0 ? one_line(std::string(pid, n)) :
-                                    std::string("unknown")) +
-                           "); wait for it to end or choose another "
-                           "directory."));
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+      refuse_busy(directory, fd);
+    ::close(fd); // releases the probe's lock
   }
 
 
@@ -305,20 +316,7 @@ namespace fgimpact
                            "': cannot create the lock file " + name + ": " +
                            std::strerror(errno)));
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
-      {
-        char              pid[32] = {};
-        const ssize_t     n       = ::read(fd, pid, sizeof(pid) - 1);
-        const std::string holder =
-          n > 0 ? one_line(std::string(pid, n)) : "unknown";
-        ::close(fd);
-        AssertThrow(false,
-                    ExcMessage("Output/Directory '" + directory +
-                               "' is in use by another fgimpact run "
-                               "(process id " +
-                               holder +
-                               "); wait for it to end or choose another "
-                               "directory."));
-      }
+      refuse_busy(directory, fd);
     // The holder's process id, for the message above; the kernel releases
     // the lock when this process ends, however it ends.
     const std::string pid = std::to_string(::getpid()) + "\n";

@@ -9,16 +9,11 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <map>
 #include <new>
 #include <sstream>
-#include <sys/file.h>
-#include <sys/statfs.h>
-#include <unistd.h>
 
 namespace fgimpact
 {

@@ -129,15 +129,20 @@ main(int argc, char **argv)
   const std::string levels = summary_text("contact_refinement_levels"),
                     size   = summary_text("element_size_under_ball_mm"),
                     none   = summary_text("warnings");
-  const bool auto_ok       = levels == "5" &&
-                       std::abs(std::stod(size) - 5. / 32.) < 1e-6 &&
-                       none == "none";
+  // The closed form's levels for this scene, and its element size (mm).
+  const unsigned int L = expected(parse(resolved)).second;
+  const bool         auto_ok =
+    levels == std::to_string(L) &&
+    std::abs(std::stod(size) - 5. / std::pow(2., L)) < 1e-6 && none == "none";
   std::printf("2. auto: contact_model = %s, contact_refinement_levels = %s, "
-              "element_size_under_ball_mm = %s (5 mm / 2^5 = 0.156250), "
+              "element_size_under_ball_mm = %s (closed form: level %u, 5 mm / "
+              "2^%u), "
               "warnings = %s: %s\n",
               summary_text("contact_model").c_str(),
               levels.c_str(),
               size.c_str(),
+              L,
+              L,
               none.c_str(),
               auto_ok ? "yes" : "NO");
   fgimpact_tests::run_quietly(
