@@ -66,7 +66,6 @@ namespace fgimpact
                           "(automatic) or the implicit scheme."));
             dt = requested_dt;
           }
-        measured_costs.initialization = timer.wall_time();
 
         if (measure_reference_costs)
           {

@@ -40,8 +40,9 @@ namespace fgimpact
 
 
     /// Projected Gauss-Seidel to a relative change of 1e-14: converges for
-    /// any SPD A (it is coordinate descent on the convex QP).
-    void
+    /// any SPD A (it is coordinate descent on the convex QP); false if
+    /// 100,000 sweeps did not get there.
+    bool
     projected_gauss_seidel(const FullMatrix<double> &A,
                            const Vector<double>     &q,
                            Vector<double>           &lambda)
@@ -61,8 +62,9 @@ namespace fgimpact
               lambda[i] = updated;
             }
           if (change <= 1e-14 * size)
-            return;
+            return true;
         }
+      return false;
     }
   } // namespace
 
@@ -115,7 +117,7 @@ namespace fgimpact
         statistics.used_fallback = true;
         for (unsigned int j = 0; j < m; ++j)
           lambda[j] = std::max(0., lambda[j]);
-        projected_gauss_seidel(A, q, lambda);
+        statistics.converged = projected_gauss_seidel(A, q, lambda);
         for (unsigned int j = 0; j < m; ++j)
           active[j] = (lambda[j] > 0.);
         A.vmult(g, lambda);

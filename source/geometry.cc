@@ -14,6 +14,40 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// Subsection "Boundary conditions": the supports of the six faces.
+    void
+    declare_supports(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      {
+        for (const auto &name : PlateGeometry::side_names)
+          prm.declare_entry(
+            name,
+            "simply supported",
+            Patterns::Selection("simply supported|clamped|free"),
+            "Support of this whole side face (x min: x = 0, x max: x = a, y "
+            "min: y = 0, y max: y = b). simply supported (Eq. 2.15): "
+            "w = 0 and the tangential in-plane displacement = 0 on the face "
+            "(v on x = const, u on y = const); the normal in-plane "
+            "displacement is free. clamped: u = v = w = 0. free: traction "
+            "free.");
+        prm.declare_entry(
+          "Face z min",
+          "free",
+          Patterns::Selection("simply supported|clamped|free"),
+          "Support of the bottom face z = 0: free (a plate), clamped "
+          "(u = v = w = 0: bonded to a rigid base) or simply supported "
+          "(w = 0 only: resting on a frictionless rigid base, which can pull "
+          "as well as push).");
+      }
+      prm.leave_subsection();
+    }
+  } // namespace
+
+
+
   void
   PlateGeometry::Parameters::declare_parameters(ParameterHandler &prm)
   {
@@ -84,29 +118,7 @@ namespace fgimpact
     }
     prm.leave_subsection();
 
-    prm.enter_subsection("Boundary conditions");
-    {
-      for (const auto &name : side_names)
-        prm.declare_entry(
-          name,
-          "simply supported",
-          Patterns::Selection("simply supported|clamped|free"),
-          "Support of this whole side face (x min: x = 0, x max: x = a, y "
-          "min: y = 0, y max: y = b). simply supported (Eq. 2.15): "
-          "w = 0 and the tangential in-plane displacement = 0 on the face "
-          "(v on x = const, u on y = const); the normal in-plane "
-          "displacement is free. clamped: u = v = w = 0. free: traction "
-          "free.");
-      prm.declare_entry(
-        "Face z min",
-        "free",
-        Patterns::Selection("simply supported|clamped|free"),
-        "Support of the bottom face z = 0: free (a plate), clamped "
-        "(u = v = w = 0: bonded to a rigid base) or simply supported "
-        "(w = 0 only: resting on a frictionless rigid base, which can pull "
-        "as well as push).");
-    }
-    prm.leave_subsection();
+    declare_supports(prm);
   }
 
 

@@ -53,7 +53,8 @@ namespace fgimpact
                          const unsigned int n_steps,
                          const double       dt,
                          const std::string &directory,
-                         const std::string &checkpoint_failure)
+                         const std::string &checkpoint_failure,
+                         const unsigned int n_ranks)
     {
       char text[400];
       std::snprintf(text,
@@ -65,8 +66,12 @@ namespace fgimpact
                     steps_done,
                     n_steps,
                     steps_done * dt * 1e6);
+      // A checkpoint is resumed on as many ranks as wrote it.
+      const std::string launcher =
+        n_ranks > 1 ? "mpirun -n " + std::to_string(n_ranks) + " " : "";
       return text + (checkpoint_failure.empty() ?
-                       "continue with: fgimpact --resume " + directory :
+                       "continue with: " + launcher + "fgimpact --resume " +
+                         directory :
                        "no checkpoint (" + checkpoint_failure + ")");
     }
   } // namespace
@@ -272,25 +277,7 @@ namespace fgimpact
     // A resumed run restores the state of the checkpoint first (the
     // monitor reads its part when it reopens the output files).
     const std::unique_ptr<CheckpointReader> resume = load_checkpoint();
-    // The monitor opens the output files: only now, after setup() passed.
-    monitor = std::make_unique<ImpactMonitor>(parameters.output,
-                                              plate,
-                                              *contact,
-                                              impactor.mass(),
-                                              impactor.initial_velocity(),
-                                              dt,
-                                              n_steps,
-                                              results,
-                                              resume.get());
-    for (const auto &observer : observers)
-      monitor->add_row_observer(observer);
-    const PlateGeometry &g = plate.get_geometry();
-    const Point<2>       p = impactor.impact_point(g.length(), g.width());
-    monitor->add_contact_output(Point<3>(p[0], p[1], g.thickness()),
-                                impactor.radius());
-    // Rank 0 alone has opened history.csv (and probes.csv): every rank
-    // learns whether that worked before the first collective output.
-    stop_on_output_failure(resume ? resume->step : 0, 0.);
+    open_monitor(resume.get());
     // Plain timers (not TimerOutput, whose destructor writes to the screen
     // when an exception such as a Newton failure is on its way out).  The
     // loop timer includes the initial state's output, which the monitor
@@ -347,13 +334,42 @@ namespace fgimpact
                     total_timer.wall_time());
     report_checkpoints(loop_timer.wall_time());
     if (stop > 0)
-      throw RunInterrupted(stop,
-                           interruption_message(stop,
-                                                steps_done,
-                                                n_steps,
-                                                dt,
-                                                parameters.output.directory,
-                                                checkpoint_failure));
+      throw RunInterrupted(
+        stop,
+        interruption_message(stop,
+                             steps_done,
+                             n_steps,
+                             dt,
+                             parameters.output.directory,
+                             checkpoint_failure,
+                             Utilities::MPI::n_mpi_processes(
+                               plate.get_mpi_communicator())));
+  }
+
+
+
+  void
+  ImpactDriver::open_monitor(CheckpointReader *resume)
+  {
+    // The monitor opens the output files: only now, after setup() passed.
+    monitor = std::make_unique<ImpactMonitor>(parameters.output,
+                                              plate,
+                                              *contact,
+                                              impactor.mass(),
+                                              impactor.initial_velocity(),
+                                              dt,
+                                              n_steps,
+                                              results,
+                                              resume);
+    for (const auto &observer : observers)
+      monitor->add_row_observer(observer);
+    const PlateGeometry &g = plate.get_geometry();
+    const Point<2>       p = impactor.impact_point(g.length(), g.width());
+    monitor->add_contact_output(Point<3>(p[0], p[1], g.thickness()),
+                                impactor.radius());
+    // Rank 0 alone has opened history.csv (and probes.csv): every rank
+    // learns whether that worked before the first collective output.
+    stop_on_output_failure(resume ? resume->step : 0, 0.);
   }
 
 

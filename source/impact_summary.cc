@@ -1,5 +1,6 @@
 #include <fgimpact/impact_summary.h>
 #include <fgimpact/impactor.h>
+#include <fgimpact/output_files.h>
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/simulator.h>
 

@@ -478,9 +478,11 @@ namespace fgimpact
 
 
   void
-  apply_override(ParameterHandler &prm, const std::string &assignment)
+  apply_override(ParameterHandler  &prm,
+                 const std::string &assignment,
+                 const std::string &option)
   {
-    const std::string what = "-s '" + assignment + "': ";
+    const std::string what = option + " '" + assignment + "': ";
     const auto        eq   = assignment.find('=');
     AssertThrow(eq != std::string::npos,
                 ExcMessage(what + "expected \"Section/Entry=value\""));

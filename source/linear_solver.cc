@@ -298,50 +298,7 @@ namespace fgimpact
       resolved_type = (A.m() > parameters.auto_limit ? "cg" : "mumps");
 
     if (resolved_type == "cholmod" || resolved_type == "auto")
-      {
-        AssertThrow(n_ranks == 1,
-                    ExcMessage("Linear solver/Type = cholmod runs on one MPI "
-                               "rank only; use mumps, cg or auto on " +
-                               std::to_string(n_ranks) + " ranks."));
-        std::vector<int>    rows, columns;
-        std::vector<double> values;
-        lower_triangle(A, rows, columns, values);
-        cholmod = std::make_unique<Cholmod>(parameters.cholmod_ordering);
-        cholmod->analyze(A.m(), rows, columns, values);
-        // The factor against what is left now (mesh, matrices and vectors
-        // are allocated): CHOLMOD's numeric factorization needs the factor
-        // plus a small workspace.
-        const double          need      = cholmod->factor_bytes();
-        const AvailableMemory available = available_memory();
-        const bool            fits      = 1.1 * need < available.bytes;
-        std::ostringstream    report;
-        report << "CHOLMOD symbolic analysis: nnz(L) = " << std::setprecision(4)
-               << cholmod->factor_nnz() << ", factor " << gigabytes(need)
-               << ", " << gigabytes(available.bytes) << " available ("
-               << available.source << ")";
-        if (resolved_type == "auto")
-          {
-            resolved_type = fits ? "cholmod" : "cg";
-            report << (fits ? "; auto: cholmod" :
-                              "; auto: cg (the factor does not fit)");
-          }
-        else
-          AssertThrow(fits,
-                      ExcMessage("Linear solver/Type = cholmod: the factor "
-                                 "needs " +
-                                 gigabytes(1.1 * need) + " (nnz(L) = " +
-                                 std::to_string(static_cast<long long>(
-                                   cholmod->factor_nnz())) +
-                                 ") but " + gigabytes(available.bytes) +
-                                 " are available (" + available.source +
-                                 "); use Linear solver/Type = cg or auto, or "
-                                 "fewer Geometry/Subdivisions."));
-        memory_report = report.str();
-        if (resolved_type == "cholmod")
-          cholmod->factorize();
-        else
-          cholmod.reset();
-      }
+      initialize_cholmod(A, n_ranks);
     if (resolved_type == "klu" || resolved_type == "mumps")
       {
         amesos = std::make_unique<TrilinosWrappers::SolverDirect>(
@@ -351,36 +308,95 @@ namespace fgimpact
         amesos->initialize(A);
       }
     else if (resolved_type == "cg")
+      initialize_preconditioner(A, dof_handler);
+  }
+
+
+
+  void
+  EffectiveMatrixSolver::initialize_cholmod(
+    const TrilinosWrappers::SparseMatrix &A,
+    const unsigned int                    n_ranks)
+  {
+    AssertThrow(n_ranks == 1,
+                ExcMessage("Linear solver/Type = cholmod runs on one MPI "
+                           "rank only; use mumps, cg or auto on " +
+                           std::to_string(n_ranks) + " ranks."));
+    std::vector<int>    rows, columns;
+    std::vector<double> values;
+    lower_triangle(A, rows, columns, values);
+    cholmod = std::make_unique<Cholmod>(parameters.cholmod_ordering);
+    cholmod->analyze(A.m(), rows, columns, values);
+    // The factor against what is left now (mesh, matrices and vectors
+    // are allocated): CHOLMOD's numeric factorization needs the factor
+    // plus a small workspace.
+    const double          need      = cholmod->factor_bytes();
+    const AvailableMemory available = available_memory();
+    const bool            fits      = 1.1 * need < available.bytes;
+    std::ostringstream    report;
+    report << "CHOLMOD symbolic analysis: nnz(L) = " << std::setprecision(4)
+           << cholmod->factor_nnz() << ", factor " << gigabytes(need) << ", "
+           << gigabytes(available.bytes) << " available (" << available.source
+           << ")";
+    if (resolved_type == "auto")
       {
-        if (parameters.preconditioner == "jacobi")
-          {
-            auto p = std::make_unique<TrilinosWrappers::PreconditionJacobi>();
-            p->initialize(A);
-            preconditioner = std::move(p);
-          }
-        else if (parameters.preconditioner == "ssor")
-          {
-            auto p = std::make_unique<TrilinosWrappers::PreconditionSSOR>();
-            p->initialize(A);
-            preconditioner = std::move(p);
-          }
-        else
-          {
-            auto p = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-            TrilinosWrappers::PreconditionAMG::AdditionalData data;
-            // The near null space of elasticity: at least the three
-            // translations (rotations are not extracted by deal.II 9.4).
-            if (dof_handler)
-              DoFTools::extract_constant_modes(*dof_handler,
-                                               ComponentMask(3, true),
-                                               data.constant_modes);
-            data.elliptic              = true;
-            data.higher_order_elements = false;
-            data.smoother_sweeps       = 2;
-            data.aggregation_threshold = 0.02;
-            p->initialize(A, data);
-            preconditioner = std::move(p);
-          }
+        resolved_type = fits ? "cholmod" : "cg";
+        report << (fits ? "; auto: cholmod" :
+                          "; auto: cg (the factor does not fit)");
+      }
+    else
+      AssertThrow(fits,
+                  ExcMessage("Linear solver/Type = cholmod: the factor "
+                             "needs " +
+                             gigabytes(1.1 * need) + " (nnz(L) = " +
+                             std::to_string(
+                               static_cast<long long>(cholmod->factor_nnz())) +
+                             ") but " + gigabytes(available.bytes) +
+                             " are available (" + available.source +
+                             "); use Linear solver/Type = cg or auto, or "
+                             "fewer Geometry/Subdivisions."));
+    memory_report = report.str();
+    if (resolved_type == "cholmod")
+      cholmod->factorize();
+    else
+      cholmod.reset();
+  }
+
+
+
+  void
+  EffectiveMatrixSolver::initialize_preconditioner(
+    const TrilinosWrappers::SparseMatrix &A,
+    const DoFHandler<3>                  *dof_handler)
+  {
+    if (parameters.preconditioner == "jacobi")
+      {
+        auto p = std::make_unique<TrilinosWrappers::PreconditionJacobi>();
+        p->initialize(A);
+        preconditioner = std::move(p);
+      }
+    else if (parameters.preconditioner == "ssor")
+      {
+        auto p = std::make_unique<TrilinosWrappers::PreconditionSSOR>();
+        p->initialize(A);
+        preconditioner = std::move(p);
+      }
+    else
+      {
+        auto p = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        // The near null space of elasticity: at least the three
+        // translations (rotations are not extracted by deal.II 9.4).
+        if (dof_handler)
+          DoFTools::extract_constant_modes(*dof_handler,
+                                           ComponentMask(3, true),
+                                           data.constant_modes);
+        data.elliptic              = true;
+        data.higher_order_elements = false;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        p->initialize(A, data);
+        preconditioner = std::move(p);
       }
   }
 

@@ -145,19 +145,28 @@ namespace fgimpact
   {
     if (!enabled)
       return;
-    if (step == 0)
+    const auto crossed = [&]() {
+      return next_tenth <= 10 && 10ul * step >= next_tenth * 1ul * n_steps;
+    };
+    if (!started)
       {
-        start = std::chrono::steady_clock::now();
+        // A resumed run starts at its checkpoint: the tenths before it
+        // were reported by the earlier process.
+        started    = true;
+        first_step = step;
+        start      = std::chrono::steady_clock::now();
+        while (crossed())
+          ++next_tenth;
         return;
       }
-    if (next_tenth > 10 || 10ul * step < next_tenth * 1ul * n_steps)
+    if (!crossed())
       return;
-    while (next_tenth <= 10 && 10ul * step >= next_tenth * 1ul * n_steps)
+    while (crossed())
       ++next_tenth;
     const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
-    const double eta = elapsed * (n_steps - step) / step;
+    const double eta = elapsed * (n_steps - step) / (step - first_step);
     char         line[160];
     std::snprintf(line,
                   sizeof(line),

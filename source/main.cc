@@ -9,6 +9,7 @@
 #include <fgimpact/command_line.h>
 #include <fgimpact/input_file.h>
 #include <fgimpact/logger.h>
+#include <fgimpact/output_files.h>
 #include <fgimpact/run_control.h>
 #include <fgimpact/simulator.h>
 #include <fgimpact/study.h>
@@ -102,9 +103,7 @@ namespace
     parameters.parse_parameters(prm);
     parameters.validate();
     study.parse_parameters(prm);
-    study.entries.insert(study.entries.end(),
-                         options.study.begin(),
-                         options.study.end());
+    study.append_command_line(options.study);
     for (const auto &warning : parameters.warnings())
       if (root)
         std::cerr << "fgimpact: warning: " << warning << std::endl;

@@ -293,13 +293,4 @@ namespace fgimpact
              1. / (1. + parameters.power_law_index);
   }
 
-
-
-  double
-  FunctionallyGradedMaterial::mass_per_unit_area() const
-  {
-    const double Vm = total_metal_volume_fraction();
-    return h * (parameters.ceramic_density * (1. - Vm) +
-                parameters.metal_density * Vm);
-  }
 } // namespace fgimpact

@@ -3,6 +3,7 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <fgimpact/modal_analysis.h>
+#include <fgimpact/output_files.h>
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/run_control.h>
 
@@ -173,7 +174,37 @@ namespace fgimpact
                     "Modal/Number of modes or refine Geometry/"
                     "Subdivisions."));
     }
+
+    /// The start block X (p vectors, zero on constrained DoFs):
+    /// deterministic, all length scales present; Y sized alike.
+    void
+    start_block(const PlateModel                           &plate,
+                const TrilinosWrappers::MPI::Vector        &mask,
+                const unsigned int                          p,
+                std::vector<TrilinosWrappers::MPI::Vector> &X,
+                std::vector<TrilinosWrappers::MPI::Vector> &Y)
+    {
+      X.resize(p);
+      Y.resize(p);
+      for (unsigned int j = 0; j < p; ++j)
+        {
+          plate.initialize_vector(X[j]);
+          plate.initialize_vector(Y[j]);
+          for (const auto i : X[j].locally_owned_elements())
+            X[j](i) = std::sin(0.37 + 1.7 * j + 12.9898 * i * (j + 1));
+          X[j].compress(VectorOperation::insert);
+          X[j].scale(mask);
+        }
+    }
   } // namespace
+
+
+
+  void
+  ModalAnalysis::report_costs(const bool report)
+  {
+    print_costs = report;
+  }
 
 
 
@@ -183,7 +214,7 @@ namespace fgimpact
   {
     // A long request says so after its first iteration (Modal/Max
     // iterations of them at most), instead of minutes of silence.
-    if (seconds < 2. ||
+    if (!print_costs || seconds < 2. ||
         Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
       return;
     char text[400];
@@ -198,6 +229,34 @@ namespace fgimpact
                   seconds,
                   parameters.max_iterations,
                   seconds * parameters.max_iterations);
+    std::cout << text << std::flush;
+  }
+
+
+
+  void
+  ModalAnalysis::report_estimated_cost(const double       solve_seconds,
+                                       const unsigned int block) const
+  {
+    // The block's solves are most of an iteration: a request that takes
+    // minutes says so before its first iteration, not after it.
+    const double iteration = solve_seconds * block;
+    if (!print_costs || iteration < 2. ||
+        Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
+      return;
+    char text[400];
+    std::snprintf(text,
+                  sizeof(text),
+                  "  modal: estimated %.1f s per subspace iteration (%u "
+                  "solves of %.3f s, for %u modes), at most %.0f s in all "
+                  "(Modal/Max iterations = %u); fewer Modal/Number of modes "
+                  "is faster.\n",
+                  iteration,
+                  block,
+                  solve_seconds,
+                  parameters.n_modes,
+                  iteration * parameters.max_iterations,
+                  parameters.max_iterations);
     std::cout << text << std::flush;
   }
 
@@ -227,17 +286,8 @@ namespace fgimpact
     EffectiveMatrixSolver solver(solver_parameters);
     solver.initialize(shifted);
 
-    // Start block: deterministic, all length scales present.
-    std::vector<TrilinosWrappers::MPI::Vector> X(p), Y(p);
-    for (unsigned int j = 0; j < p; ++j)
-      {
-        plate.initialize_vector(X[j]);
-        plate.initialize_vector(Y[j]);
-        for (const auto i : X[j].locally_owned_elements())
-          X[j](i) = std::sin(0.37 + 1.7 * j + 12.9898 * i * (j + 1));
-        X[j].compress(VectorOperation::insert);
-        X[j].scale(mask);
-      }
+    std::vector<TrilinosWrappers::MPI::Vector> X, Y;
+    start_block(plate, mask, p, X, Y);
 
     std::vector<double> lambda(p, 0.), lambda_old(p, 0.);
     Timer               first_iteration;
@@ -251,6 +301,8 @@ namespace fgimpact
             Y[j] = 0.;
             solver.solve(Y[j], Mx);
             Y[j].scale(mask);
+            if (iterations == 1 && j == 0)
+              report_estimated_cost(first_iteration.wall_time(), p);
           }
         rayleigh_ritz(K, M, Y, tmp, Mx, lambda, X);
         check_ritz_values(lambda, iterations);

@@ -1,10 +1,10 @@
 // The plain-text outputs: CsvWriter (history.csv, probes.csv: rows handed to
-// the disk whole) and SummaryWriter (summary.txt, written atomically).  The
-// VTU output is in postprocessing.cc.
+// the disk whole) and SummaryWriter (summary.txt, written atomically),
+// declared in output_files.h.  The VTU output is in postprocessing.cc.
 
 #include <deal.II/base/exceptions.h>
 
-#include <fgimpact/postprocessing.h>
+#include <fgimpact/output_files.h>
 #include <fgimpact/run_control.h>
 
 #include <chrono>

@@ -216,7 +216,10 @@ namespace fgimpact
       }
     Vector<double>      lambda;
     const LcpStatistics statistics = solve_lcp(A, q, lambda, active);
-    state.newton_iterations        = statistics.iterations;
+    // Not solved: the time stepper reports the step (as for Newton).
+    state.newton_iterations = statistics.converged ?
+                                statistics.iterations :
+                                numbers::invalid_unsigned_int;
     state.forces.assign(lambda.begin(), lambda.end());
     state.force = std::accumulate(lambda.begin(), lambda.end(), 0.);
 

@@ -48,23 +48,64 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// A word (no spaces) of a message longer than this is shortened: a
+    /// user's 5 MB value must not become a 5 MB error line.
+    constexpr std::size_t max_word_length = 200;
+
+    /// Position near `at` that does not split a UTF-8 character.
+    std::size_t
+    character_boundary(const std::string &text, std::size_t at)
+    {
+      while (at > 0 && at < text.size() &&
+             (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80)
+        --at;
+      return at;
+    }
+
+    /// The word as printed: its head and tail around the count of the
+    /// characters left out.
+    std::string
+    shortened(const std::string &word)
+    {
+      if (word.size() <= max_word_length)
+        return word;
+      const std::size_t head = character_boundary(word, 120);
+      const std::size_t tail = character_boundary(word, word.size() - 40);
+      return word.substr(0, head) + "[... " + std::to_string(tail - head) +
+             " characters left out ...]" + word.substr(tail);
+    }
+  } // namespace
+
+
+
   std::string
   one_line(const std::string &text)
   {
-    std::string out;
-    bool        space = false;
+    std::string out, word;
+    const auto  end_word = [&]() {
+      if (!word.empty() && !out.empty())
+        out += ' ';
+      out += shortened(word);
+      word.clear();
+    };
     for (const char ch : text)
       {
+        const auto byte = static_cast<unsigned char>(ch);
         if (ch == '\n' || ch == '\r' || ch == '\t' || ch == ' ')
-          space = !out.empty();
-        else
+          end_word();
+        else if (byte < 0x20 || byte == 0x7f)
           {
-            if (space)
-              out += ' ';
-            out += ch;
-            space = false;
+            // A control character (a NUL byte of a file) as \xNN.
+            char escaped[8];
+            std::snprintf(escaped, sizeof(escaped), "\\x%02X", byte);
+            word += escaped;
           }
+        else
+          word += ch;
       }
+    end_word();
     return out;
   }
 

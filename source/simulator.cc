@@ -2,6 +2,7 @@
 
 #include <fgimpact/constitutive_law.h>
 #include <fgimpact/modal_analysis.h>
+#include <fgimpact/output_files.h>
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/run_control.h>
 #include <fgimpact/simulator.h>
@@ -169,6 +170,7 @@ namespace fgimpact
         ModalAnalysis analysis(parameters.modal,
                                parameters.linear_solver,
                                plate);
+        analysis.report_costs(parameters.output.print_timing);
         solve_in_phase("modal subspace iteration", [&]() { analysis.solve(); });
         analysis.write_output(parameters.output.directory,
                               parameters.output.vtu_compression,

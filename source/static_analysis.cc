@@ -4,6 +4,7 @@
 
 #include <fgimpact/compliance.h>
 #include <fgimpact/contact_law.h>
+#include <fgimpact/output_files.h>
 #include <fgimpact/postprocessing.h>
 #include <fgimpact/probes.h>
 #include <fgimpact/resolved_contact.h>

@@ -150,7 +150,8 @@ namespace fgimpact
 
 
   void
-  StressRecovery::recover(const TrilinosWrappers::MPI::Vector &u_ghosted)
+  StressRecovery::accumulate_cell_values(
+    const TrilinosWrappers::MPI::Vector &u_ghosted)
   {
     const FiniteElement<3> &scalar_fe = dof_handler.get_fe();
     // The strain and stress of every cell at its scalar support points,
@@ -196,9 +197,15 @@ namespace fgimpact
                 }
             }
         }
-
     for (unsigned int s = 0; s < 12; ++s)
       sums[s].compress(VectorOperation::add);
+  }
+
+
+
+  void
+  StressRecovery::average_and_derive()
+  {
     for (const auto dof : owned)
       {
         const double w      = inverse_count(dof);
@@ -233,6 +240,15 @@ namespace fgimpact
             abs_zz :
             std::max<double>(owned_values[peak_abs_stress_zz](dof), abs_zz);
       }
+  }
+
+
+
+  void
+  StressRecovery::recover(const TrilinosWrappers::MPI::Vector &u_ghosted)
+  {
+    accumulate_cell_values(u_ghosted);
+    average_and_derive();
     // A hanging node's average holds only its fine cells: its value is
     // its parents' interpolation instead, as for the displacement, so that
     // the coarse and the fine cells show the same field there.

@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fgimpact/impact_study_engine.h>
+#include <fgimpact/output_files.h>
 #include <fgimpact/parameters.h>
 #include <fgimpact/run_control.h>
 #include <fgimpact/simulator.h>
@@ -81,6 +82,24 @@ namespace fgimpact
                                                       Method::automatic);
     write_vtu   = prm.get_bool("Write VTU");
     prm.leave_subsection();
+    n_file_entries = entries.size();
+  }
+
+
+
+  void
+  StudyParameters::append_command_line(
+    const std::vector<std::string> &study_options)
+  {
+    entries.insert(entries.end(), study_options.begin(), study_options.end());
+  }
+
+
+
+  std::string
+  StudyParameters::origin(const std::size_t i) const
+  {
+    return i < n_file_entries ? "Study/Entries" : "--study";
   }
 
 
@@ -89,23 +108,27 @@ namespace fgimpact
   expand_study(const StudyParameters &study)
   {
     std::vector<std::string>              paths;
+    std::vector<std::string>              origins;
     std::vector<std::vector<std::string>> lists;
-    for (const auto &entry : study.entries)
+    for (std::size_t i = 0; i < study.entries.size(); ++i)
       {
-        const auto eq = entry.find('=');
+        const std::string &entry = study.entries[i];
+        const std::string  where = study.origin(i) + ": '";
+        const auto         eq    = entry.find('=');
         AssertThrow(eq != std::string::npos && eq > 0,
-                    ExcMessage("Study/Entries: '" + entry +
+                    ExcMessage(where + entry +
                                "' is not 'Section/Entry = v1, v2, ...'"));
         const std::string path = Utilities::trim(entry.substr(0, eq));
         AssertThrow(std::find(paths.begin(), paths.end(), path) == paths.end(),
-                    ExcMessage("Study/Entries: '" + path +
+                    ExcMessage(where + path +
                                "' is listed twice (the second list would "
                                "replace the first); give it once."));
         paths.push_back(path);
+        origins.push_back(study.origin(i));
         lists.push_back(
           Utilities::split_string_list(entry.substr(eq + 1), ','));
         AssertThrow(!lists.back().empty() && !paths.back().empty(),
-                    ExcMessage("Study/Entries: '" + entry + "' has no values"));
+                    ExcMessage(where + entry + "' has no values"));
       }
     std::vector<StudyCase> cases;
     if (paths.empty())
@@ -119,7 +142,8 @@ namespace fgimpact
         for (std::size_t i = 0; i < lists[0].size(); ++i)
           {
             StudyCase c;
-            c.paths = paths;
+            c.paths   = paths;
+            c.origins = origins;
             for (const auto &list : lists)
               c.values.push_back(list[i]);
             cases.push_back(c);
@@ -131,7 +155,8 @@ namespace fgimpact
     while (true)
       {
         StudyCase c;
-        c.paths = paths;
+        c.paths   = paths;
+        c.origins = origins;
         for (std::size_t e = 0; e < paths.size(); ++e)
           c.values.push_back(lists[e][index[e]]);
         cases.push_back(c);
@@ -153,7 +178,11 @@ namespace fgimpact
       StudyCase   study_case;
       Parameters  parameters;
       std::string prm_text; // parameters.prm
-      std::string group;    // the plate's key
+      // The checkpoints' copy (PRM | Short), as main.cc stores it, so that
+      // the resume command printed after a signal (--resume case_NNN,
+      // which reads parameters.prm) finds the same parameters.
+      std::string checkpoint_text;
+      std::string group; // the plate's key
     };
 
     /**
@@ -204,17 +233,17 @@ namespace fgimpact
       const auto              cases = expand_study(study);
       for (unsigned int i = 0; i < cases.size(); ++i)
         {
-          std::vector<std::string> all = overrides;
-          for (unsigned int e = 0; e < cases[i].paths.size(); ++e)
-            all.push_back(cases[i].assignment(e));
-          all.push_back("Output/Directory=" +
-                        case_directory(base_directory, i));
-          all.push_back("Study/Entries=");
-          if (!study.write_vtu)
-            all.push_back("Output/VTU interval=0");
           ParameterHandler prm;
           Parameters::declare_parameters(prm);
-          input.parse_into(prm, all);
+          input.parse_into(prm, overrides);
+          for (unsigned int e = 0; e < cases[i].paths.size(); ++e)
+            apply_override(prm, cases[i].assignment(e), cases[i].origins[e]);
+          apply_override(prm,
+                         "Output/Directory=" +
+                           case_directory(base_directory, i));
+          apply_override(prm, "Study/Entries=");
+          if (!study.write_vtu)
+            apply_override(prm, "Output/VTU interval=0");
           FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
             prm, input.input_name());
           ParsedCase c;
@@ -224,6 +253,12 @@ namespace fgimpact
           std::ostringstream text;
           prm.print_parameters(text, ParameterHandler::PRM);
           c.prm_text = text.str();
+          std::ostringstream short_text;
+          prm.print_parameters(short_text,
+                               ParameterHandler::OutputStyle(
+                                 ParameterHandler::PRM |
+                                 ParameterHandler::Short));
+          c.checkpoint_text = short_text.str();
           for (unsigned int e = 0; e < cases[i].paths.size(); ++e)
             if (!is_case_entry(cases[i].paths[e], c.parameters))
               c.group += cases[i].assignment(e) + ";";
@@ -249,7 +284,10 @@ namespace fgimpact
     void
     run_time_loop(const ParsedCase &c, const InputFile &input)
     {
-      Simulator simulator(c.parameters, MPI_COMM_WORLD);
+      Simulator          simulator(c.parameters, MPI_COMM_WORLD);
+      CheckpointSettings checkpoint;
+      checkpoint.parameters_text = c.checkpoint_text;
+      simulator.set_checkpointing(checkpoint);
       simulator.setup();
       start_case_files(c, input);
       simulator.run();
@@ -453,6 +491,25 @@ namespace fgimpact
         }
       return 0;
     }
+
+    /// The cases grouped by their plate (ParsedCase::group), the groups in
+    /// the order of their first case.
+    std::vector<std::vector<const ParsedCase *>>
+    groups_of(const std::vector<ParsedCase> &cases)
+    {
+      std::vector<std::string>                               order;
+      std::map<std::string, std::vector<const ParsedCase *>> groups;
+      for (const auto &c : cases)
+        {
+          if (groups.count(c.group) == 0)
+            order.push_back(c.group);
+          groups[c.group].push_back(&c);
+        }
+      std::vector<std::vector<const ParsedCase *>> ordered;
+      for (const auto &key : order)
+        ordered.push_back(groups[key]);
+      return ordered;
+    }
   } // namespace
 
 
@@ -511,18 +568,9 @@ namespace fgimpact
         });
         if (root)
           std::cout << "fgimpact: study of " << cases.size() << " cases\n";
-        // Groups in the order of their first case.
-        std::vector<std::string>                               order;
-        std::map<std::string, std::vector<const ParsedCase *>> groups;
-        for (const auto &c : cases)
-          {
-            if (groups.count(c.group) == 0)
-              order.push_back(c.group);
-            groups[c.group].push_back(&c);
-          }
         std::vector<std::pair<std::string, std::string>> failures;
-        for (const auto &key : order)
-          run_group(study, groups[key], input, study_timer, failures);
+        for (const auto &group : groups_of(cases))
+          run_group(study, group, input, study_timer, failures);
         run_on_root(MPI_COMM_WORLD, [&]() {
           write_study_csv(cases, base.output.directory + "/study.csv");
         });

@@ -181,7 +181,6 @@ namespace fgimpact
       void
       initialize(const bool measure_reference_costs) override
       {
-        Timer timer;
         effective.copy_from(plate.stiffness_matrix());
         setup_mass_matrix();
         effective.add(newmark.mass_factor(), *mass);
@@ -191,7 +190,6 @@ namespace fgimpact
         for (auto *vector : {&u, &v, &a, &Mu, &Mv, &Ma, &u_new, &Mu_new, &rhs})
           plate.initialize_vector(*vector);
         compute_compliance();
-        measured_costs.initialization = timer.wall_time();
         if (measure_reference_costs)
           measure_costs();
       }

@@ -17,6 +17,9 @@ namespace fgimpact
     unsigned int iterations = 0;
     /// Whether the projected Gauss-Seidel fallback had to finish the job.
     bool used_fallback = false;
+    /// False only if the fallback, too, stopped short of its tolerance:
+    /// the forces are not the LCP's solution.
+    bool converged = true;
     /// The largest penetration max_j (-g_j) left after the solve (m):
     /// lambda >= 0 and lambda_j g_j = 0 hold by construction (on the set
     /// g = 0 to round-off, off it lambda = 0).

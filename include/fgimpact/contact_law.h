@@ -112,25 +112,11 @@ namespace fgimpact
     static TransverselyIsotropicConstants
     contact_region_constants(const FunctionallyGradedMaterial &material);
 
-    /// Q_zp of the plate (Pa).
-    double
-    plate_modulus() const
-    {
-      return Q_plate;
-    }
-
     /// Q_alpha (Pa), Eq. 2.6 or 2.7.
     double
     contact_modulus() const
     {
       return Q_alpha;
-    }
-
-    /// K_h = 4/3 Q_alpha sqrt(R) (N/m^1.5), or the given stiffness.
-    double
-    stiffness() const
-    {
-      return K_h;
     }
 
     /// Contact force F(alpha) = beta K_h alpha_+^{3/2} (N).

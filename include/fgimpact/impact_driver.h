@@ -116,6 +116,12 @@ namespace fgimpact
     void
     report_checkpoints(const double loop_time) const;
 
+    /// Create the monitor (it opens the output files; on resume it
+    /// continues them) with its observers and contact output; every rank
+    /// stops if rank 0 could not open them.
+    void
+    open_monitor(CheckpointReader *resume);
+
     /// After a failure in the time loop: summary.txt with status = failed
     /// (best effort: errors here are swallowed, the first one counts).
     void

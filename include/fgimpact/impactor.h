@@ -56,12 +56,6 @@ namespace fgimpact
     double
     indentation_modulus() const;
 
-    bool
-    is_rigid() const
-    {
-      return !parameters.elastic;
-    }
-
     /// Impact point on the top face (x, y) in m, given the plate size.
     Point<2>
     impact_point(const double a, const double b) const;

@@ -107,10 +107,14 @@ namespace fgimpact
   /**
    * Set one entry from "Section/Sub/Entry=value" (a top-level entry has no
    * '/').  Throws ExcMessage naming the override: an undeclared path (with
-   * the closest declared names) or a value the entry's pattern rejects.
+   * the closest declared names) or a value the entry's pattern rejects;
+   * `option` is where the user wrote it ("-s", "--study",
+   * "Study/Entries").
    */
   void
-  apply_override(ParameterHandler &prm, const std::string &assignment);
+  apply_override(ParameterHandler  &prm,
+                 const std::string &assignment,
+                 const std::string &option = "-s");
 } // namespace fgimpact
 
 #endif

@@ -108,6 +108,18 @@ namespace fgimpact
     }
 
   private:
+    /// Type cholmod or auto on one rank: the symbolic analysis, the
+    /// memory check (auto falls back to cg if the factor does not fit)
+    /// and the factorization.
+    void
+    initialize_cholmod(const TrilinosWrappers::SparseMatrix &A,
+                       const unsigned int                    n_ranks);
+
+    /// Type cg: the preconditioner of Linear solver/Preconditioner.
+    void
+    initialize_preconditioner(const TrilinosWrappers::SparseMatrix &A,
+                              const DoFHandler<3> *dof_handler);
+
     struct Cholmod; // pimpl: keeps CHOLMOD out of the headers
 
     const Parameters                      parameters;

@@ -89,14 +89,18 @@ namespace fgimpact
   public:
     ProgressMeter(const unsigned int n_steps, const bool enabled);
 
-    /// Call after every step (0 starts the clock); prints when step crosses
-    /// the next tenth.
+    /// Call after every step; the first call (step 0, or the checkpoint's
+    /// step on --resume) starts the clock.  Prints when step crosses the
+    /// next tenth: the time elapsed in this process and the time left at
+    /// this process's rate.
     void
     update(const unsigned int step, std::ostream &out);
 
   private:
     const unsigned int                    n_steps;
     const bool                            enabled;
+    bool                                  started    = false;
+    unsigned int                          first_step = 0;
     unsigned int                          next_tenth = 1;
     std::chrono::steady_clock::time_point start;
   };

@@ -122,14 +122,10 @@ namespace fgimpact
     constant_poissons_ratio() const;
 
     /// Power law: total metal volume fraction of the whole thickness,
-    /// Eq. 2.2: V_m = 1/(1+n).
+    /// Eq. 2.2: V_m = 1/(1+n); sigmoid: 1/2.  (Not defined for the
+    /// exponential and tabulated profiles, which have no phases.)
     double
     total_metal_volume_fraction() const;
-
-    /// Power law with the rule of mixtures: the exact through-thickness
-    /// integral of rho(z) dz (kg/m^2), used to check the assembled mass.
-    double
-    mass_per_unit_area() const;
 
     const Parameters &
     get_parameters() const

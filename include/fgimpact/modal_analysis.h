@@ -50,6 +50,12 @@ namespace fgimpact
                   const EffectiveMatrixSolver::Parameters &solver,
                   const PlateModel                        &plate);
 
+    /// Print the estimated and measured cost of a long iteration (the
+    /// executable: Output/Print timing; off by default, as it depends on
+    /// the machine).
+    void
+    report_costs(const bool report);
+
     void
     solve();
 
@@ -78,7 +84,14 @@ namespace fgimpact
     void
     report_iteration_cost(const double seconds, const unsigned int block) const;
 
+    /// Before the first iteration: its estimated cost from the first of
+    /// its `block` solves (seconds), when that is long.
+    void
+    report_estimated_cost(const double       solve_seconds,
+                          const unsigned int block) const;
+
     const Parameters                           parameters;
+    bool                                       print_costs = false;
     const EffectiveMatrixSolver::Parameters    solver_parameters;
     const PlateModel                          &plate;
     std::vector<Mode>                          modes;

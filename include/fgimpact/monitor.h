@@ -10,6 +10,7 @@
 #include <fgimpact/contact_model.h>
 #include <fgimpact/contact_output.h>
 #include <fgimpact/logger.h>
+#include <fgimpact/output_files.h>
 #include <fgimpact/plate_fields.h>
 #include <fgimpact/plate_model.h>
 #include <fgimpact/postprocessing.h>

@@ -138,13 +138,6 @@ namespace fgimpact
     bool
     grow_candidates() override;
 
-    /// The candidate radius in use (m).
-    double
-    current_candidate_radius() const
-    {
-      return candidate_radius;
-    }
-
     /// Distance r_j (m) of each candidate from the impact point.
     const std::vector<double> &
     candidate_radii() const

@@ -118,6 +118,16 @@ namespace fgimpact
     stress(const types::global_dof_index dof) const;
 
   private:
+    /// sums: every locally owned cell's stress (MPa) and strain at its
+    /// scalar support points, added per scalar DoF (then compressed).
+    void
+    accumulate_cell_values(const TrilinosWrappers::MPI::Vector &u_ghosted);
+
+    /// The owned fields from the sums: averages (odd components zero on a
+    /// cut plane), von Mises, principal stresses and the peaks.
+    void
+    average_and_derive();
+
     const PlateModel &plate;
     DoFHandler<3>     dof_handler;
     IndexSet          owned, relevant;

@@ -37,14 +37,23 @@ namespace fgimpact
     };
 
     std::vector<std::string> entries; // "Section/Entry = v1, v2, ..."
-    Combination              combination = Combination::product;
-    Method                   method      = Method::automatic;
-    bool                     write_vtu   = false;
+    /// entries[0, n_file_entries) come from Study/Entries, the rest from
+    /// --study: errors name where the user wrote the entry.
+    std::size_t n_file_entries = 0;
+    Combination combination    = Combination::product;
+    Method      method         = Method::automatic;
+    bool        write_vtu      = false;
 
     static void
     declare_parameters(ParameterHandler &prm);
     void
     parse_parameters(ParameterHandler &prm);
+    /// Append the command line's --study lists.
+    void
+    append_command_line(const std::vector<std::string> &study_options);
+    /// "--study" or "Study/Entries": where entry i was given.
+    std::string
+    origin(const std::size_t i) const;
   };
 
 
@@ -55,6 +64,7 @@ namespace fgimpact
   {
     std::vector<std::string> paths;
     std::vector<std::string> values;
+    std::vector<std::string> origins; // StudyParameters::origin()
 
     /// "Section/Entry=value" of entry i.
     std::string

@@ -73,9 +73,8 @@ namespace fgimpact
     /// product and one solve are measured only if asked for (benchmarks).
     struct Costs
     {
-      double initialization = 0;
-      double spmv           = 0;
-      double solve          = 0;
+      double spmv  = 0;
+      double solve = 0;
     };
 
     virtual ~TimeStepper() = default;

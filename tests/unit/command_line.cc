@@ -258,6 +258,53 @@ main()
     check("the same entry twice in a study: exit 1, one line saying so",
           code == 1 && n_lines(err) == 1 && contains(err, "listed twice"));
   }
+  // Errors in a study's entries name where the user wrote them: --study on
+  // the command line, Study/Entries in the file (not -s).
+  {
+    const int         code = run("cli_fail.prm --study 'Geometry/Subdivision "
+                                 "z=2,4'");
+    const std::string err  = read("cli.stderr");
+    check("a misspelled --study entry: exit 1, one line naming --study and "
+          "the closest entry",
+          code == 1 && n_lines(err) == 1 &&
+            contains(err, "--study 'Geometry/Subdivision z=2'") &&
+            contains(err, "Geometry/Subdivisions z") && !contains(err, "-s '"));
+  }
+  {
+    write("cli_entries.prm",
+          scene("cli_entries",
+                "subsection Study\n set Entries = Impactor/Initial velocity "
+                "= 1, fast\nend\n"));
+    const int         code = run("cli_entries.prm");
+    const std::string err  = read("cli.stderr");
+    check("a bad value in Study/Entries: exit 1, one line naming "
+          "Study/Entries and the value",
+          code == 1 && n_lines(err) == 1 &&
+            contains(err, "Study/Entries 'Impactor/Initial velocity=fast'") &&
+            !fs::exists("cli_entries"));
+  }
+  // A value with a NUL byte and one of 100,000 characters are not echoed
+  // as they are: the NUL as \x00, the long word shortened, one short line.
+  {
+    write("cli_nul.prm",
+          scene("cli_nul") + "subsection Impactor\n set Radius = 0.0" +
+            std::string(1, '\0') + "1\nend\n");
+    const int         code = run("cli_nul.prm");
+    const std::string err  = read("cli.stderr");
+    check("a NUL byte in a value: exit 1, one line showing it as \\x00",
+          code == 1 && n_lines(err) == 1 && contains(err, "\\x00") &&
+            err.find('\0') == std::string::npos);
+    const int long_code =
+      run("cli_base.prm -s 'Impactor/Radius=" + std::string(100000, 'x') + "'");
+    const std::string long_err = read("cli.stderr");
+    std::printf("a value of 100,000 characters: error line of %zu "
+                "characters\n",
+                long_err.size());
+    check("... a value of 100,000 characters: exit 1, one line under 2,000 "
+          "characters saying how many were left out",
+          long_code == 1 && n_lines(long_err) == 1 && long_err.size() < 2000 &&
+            contains(long_err, "characters left out"));
+  }
 
   // The .prm from standard input.
   write("cli_stdin.prm", scene("cli_stdin", velocity_2));

@@ -64,23 +64,34 @@ namespace
     return f;
   }
 
-  bool
-  within(const std::vector<double> &fe,
-         const std::vector<double> &exact,
-         const double               tol)
+  /// The relative errors (verbose: printed on stderr).
+  std::vector<double>
+  errors(const std::vector<double> &fe, const std::vector<double> &exact)
   {
-    bool ok = fe.size() == 3;
-    for (unsigned int i = 0; ok && i < 3; ++i)
+    std::vector<double> e;
+    for (unsigned int i = 0; i < std::min(fe.size(), exact.size()); ++i)
       {
+        e.push_back(fe[i] / exact[i] - 1);
         if (verbose)
           std::fprintf(stderr,
                        "    f%u: FE %.2f exact %.2f error %+.3e\n",
                        i + 1,
                        fe[i],
                        exact[i],
-                       fe[i] / exact[i] - 1);
-        ok = ok && std::abs(fe[i] / exact[i] - 1) < tol;
+                       e.back());
       }
+    return e;
+  }
+
+  bool
+  within(const std::vector<double> &fe,
+         const std::vector<double> &exact,
+         const double               tol)
+  {
+    const auto e  = errors(fe, exact);
+    bool       ok = e.size() == 3;
+    for (const double error : e)
+      ok = ok && std::abs(error) < tol;
     return ok;
   }
 } // namespace
@@ -104,25 +115,35 @@ main(int argc, char **argv)
       const bool q2 = within(fe_flexural(n, 2, 20, 10, 4), exact, 0.01);
       std::printf("  Q2 20 x 10 x 4 within 1 %%: %s\n", q2 ? "yes" : "NO");
 
-      bool                from_above = true, decreasing = true;
+      // Q1 on two meshes, h halved: from above (a Rayleigh-Ritz bound for
+      // the consistent mass), and at the order of the eigenvalue error of
+      // Q1, 2; a locking (shear) error would show a lower order.
+      bool                from_above = true;
       std::vector<double> previous;
+      double              lowest_order = 10;
       for (const unsigned int k : {1u, 2u})
         {
           if (verbose)
             std::fprintf(stderr, "  Q1 %ux%ux%u:\n", 20 * k, 10 * k, 2 * k);
-          const auto fe = fe_flexural(n, 1, 20 * k, 10 * k, 2 * k);
-          within(fe, exact, 1.);
-          for (unsigned int i = 0; i < 3; ++i)
+          const auto e =
+            errors(fe_flexural(n, 1, 20 * k, 10 * k, 2 * k), exact);
+          for (unsigned int i = 0; i < e.size(); ++i)
             {
-              from_above = from_above && fe[i] > exact[i];
+              from_above = from_above && e[i] > 0.;
               if (!previous.empty())
-                decreasing = decreasing && fe[i] < previous[i];
+                lowest_order =
+                  std::min(lowest_order, std::log2(previous[i] / e[i]));
             }
-          previous = fe;
+          from_above = from_above && e.size() == 3;
+          previous   = e;
         }
-      std::printf("  Q1 converges from above: %s\n",
-                  from_above && decreasing ? "yes" : "NO");
-      ok = ok && q2 && from_above && decreasing;
+      const bool order = from_above && lowest_order > 1.5;
+      std::printf("  Q1 converges from above: %s; lowest observed order of "
+                  "f1..f3 %.1f (2 expected, > 1.5 required): %s\n",
+                  from_above ? "yes" : "NO",
+                  from_above ? lowest_order : 0.,
+                  order ? "yes" : "NO");
+      ok = ok && q2 && from_above && order;
     }
 
   // The extremes: n = 1e4 is ceramic except a skin of thickness ~h/1e4.
@@ -144,7 +165,7 @@ main(int argc, char **argv)
     std::fprintf(stderr, "  n = 1e4, Q2 20x10x4 graded vs pure ceramic:\n");
   const auto graded  = fe_flexural(1e4, 2, 20, 10, 4);
   const bool smeared = graded.size() == 3 && graded[0] < 0.98 * ceramic[0];
-  within(graded, ceramic, 1.);
+  errors(graded, ceramic);
   std::printf("n = 1e4, graded elements, nz = 4: the smeared metal skin "
               "lowers f1 by more than 2 %%: %s\n",
               smeared ? "yes" : "NO");

@@ -6,7 +6,8 @@
 // (history.csv exists); one run is on two MPI ranks (mpiexec, as the
 // mpirun=2 tests) and signals one rank only: both must stop at the same
 // step.  Last, the screen output piped into a program that exits early
-// (SIGPIPE): the run completes and its files are whole.
+// (SIGPIPE): the run completes and its files are whole; a study stopped
+// in a case, and the case resumed with the command it printed.
 
 #include <algorithm>
 #include <chrono>
@@ -140,6 +141,11 @@ namespace
     const bool one_line =
       ours == 1 && interrupted_lines == 1 &&
       (mpi || std::count(err.begin(), err.end(), '\n') == 1);
+    // The command it prints resumes on as many ranks as wrote the
+    // checkpoint.
+    const bool resume_command =
+      err.find(std::string("continue with: ") + (mpi ? "mpirun -n 2 " : "") +
+               "fgimpact --resume " + dir + "\n") != std::string::npos;
     const std::string summary = read(dir + "/summary.txt");
     const bool        interrupted =
       value_of(summary, "status") == "interrupted" &&
@@ -172,7 +178,8 @@ namespace
     const bool pvd_closed = pvd.find("</VTKFile>") != std::string::npos &&
                             !fs::exists(dir + "/solution.pvd.tmp");
 
-    std::printf("%s%s: exit code %d %s, one line on stderr %s, status = "
+    std::printf("%s%s: exit code %d %s, one line on stderr %s, its resume "
+                "command %s, status = "
                 "interrupted %s, history rows complete %s, one row per step "
                 "done %s, time reached = last row %s, PVD closed %s\n",
                 signal_name,
@@ -180,13 +187,14 @@ namespace
                 128 + signal,
                 exit_code ? "yes" : "NO",
                 one_line ? "yes" : "NO",
+                resume_command ? "yes" : "NO",
                 interrupted ? "yes" : "NO",
                 complete ? "yes" : "NO",
                 all_rows ? "yes" : "NO",
                 same_time ? "yes" : "NO",
                 pvd_closed ? "yes" : "NO");
-    const bool ok = exit_code && one_line && interrupted && complete &&
-                    all_rows && same_time && pvd_closed;
+    const bool ok = exit_code && one_line && resume_command && interrupted &&
+                    complete && all_rows && same_time && pvd_closed;
     if (!ok)
       std::printf("  status %d, stderr: %s  summary:\n%s\n",
                   status,
@@ -258,6 +266,85 @@ namespace
   }
 
   /**
+   * A study through the time loop stopped by SIGTERM in its first case:
+   * the command it prints (--resume DIR/case_000) continues that case to
+   * its end, and the case's history.csv then equals, byte for byte, a
+   * separate uninterrupted run of the case's parameters.prm.
+   */
+  bool
+  study_resumed()
+  {
+    const std::string dir = "study_out";
+    fs::remove_all(dir);
+    fs::remove_all("study_fresh");
+    {
+      std::ofstream prm("study.prm");
+      prm << "subsection Geometry\n set Subdivisions x = 20\n set "
+             "Subdivisions y = 10\n set Subdivisions z = 2\nend\n"
+             "subsection Time integration\n set End time = 0.006\nend\n"
+             "subsection Study\n set Entries = Impactor/Initial velocity = "
+             "1, 2\n set Method = time loop\nend\n"
+             "subsection Output\n set Directory = "
+          << dir
+          << "\n set VTU interval = 0\n set Log interval = 0\n"
+             " set Print timing = false\nend\n";
+    }
+    std::fflush(stdout);
+    const pid_t pid = fork();
+    if (pid == 0)
+      {
+        std::freopen("study.stdout", "w", stdout);
+        std::freopen("study.stderr", "w", stderr);
+        execl(FGIMPACT_EXECUTABLE,
+              FGIMPACT_EXECUTABLE,
+              "study.prm",
+              static_cast<char *>(nullptr));
+        _exit(127);
+      }
+    const std::string history = dir + "/case_000/history.csv";
+    for (unsigned int i = 0; i < 600 && !fs::exists(history); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    kill(pid, SIGTERM);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    const bool        stopped = WIFEXITED(status) && WEXITSTATUS(status) == 143;
+    const std::string err     = read("study.stderr");
+    const std::string prefix  = "continue with: fgimpact ";
+    const auto        at      = err.find(prefix);
+    const std::string arguments =
+      at == std::string::npos ?
+        "" :
+        err.substr(at + prefix.size(), err.find('\n', at) - at - prefix.size());
+    const bool        printed = arguments == "--resume " + dir + "/case_000";
+    const std::string resume  = std::string(FGIMPACT_EXECUTABLE) + " " +
+                               arguments + " > study_resume.out 2>&1";
+    const bool resumed =
+      printed && std::system(resume.c_str()) == 0 &&
+      value_of(read(dir + "/case_000/summary.txt"), "status") == "completed";
+    const std::string fresh = std::string(FGIMPACT_EXECUTABLE) + " " + dir +
+                              "/case_000/parameters.prm -s "
+                              "Output/Directory=study_fresh > /dev/null 2>&1";
+    const bool same = resumed && std::system(fresh.c_str()) == 0 &&
+                      read(history) == read("study_fresh/history.csv") &&
+                      !read(history).empty();
+    std::printf("SIGTERM in a study's first case: exit code 143 %s, it "
+                "prints --resume %s/case_000 %s, that command completes the "
+                "case %s, its history.csv equals an uninterrupted run's %s\n",
+                stopped ? "yes" : "NO",
+                dir.c_str(),
+                printed ? "yes" : "NO",
+                resumed ? "yes" : "NO",
+                same ? "yes" : "NO");
+    if (!(stopped && printed && resumed && same))
+      std::printf("  status %d, stderr: %s  resume: %s\n",
+                  status,
+                  err.c_str(),
+                  read("study_resume.out").c_str());
+    return stopped && printed && resumed && same;
+  }
+
+  /**
    * The screen output piped into `head -c 300`, which exits after 300
    * bytes: the run must not die of SIGPIPE; it completes, with exit code
    * 0, summary.txt completed, every row of history.csv and log.txt to
@@ -305,11 +392,12 @@ namespace
 int
 main()
 {
-  const bool term = run_and_stop(SIGTERM, "SIGTERM", false);
-  const bool intr = run_and_stop(SIGINT, "SIGINT", false);
-  const bool hup  = run_and_stop(SIGHUP, "SIGHUP", false);
-  const bool mpi  = run_and_stop(SIGTERM, "SIGTERM", true);
-  const bool pipe = piped_into_head();
+  const bool term  = run_and_stop(SIGTERM, "SIGTERM", false);
+  const bool intr  = run_and_stop(SIGINT, "SIGINT", false);
+  const bool hup   = run_and_stop(SIGHUP, "SIGHUP", false);
+  const bool mpi   = run_and_stop(SIGTERM, "SIGTERM", true);
+  const bool pipe  = piped_into_head();
+  const bool study = study_resumed();
   // A mesh whose set-up takes about a second (whole plate), and signals
   // at several moments of it; static and modal runs of it.
   const std::string big =
@@ -324,7 +412,7 @@ main()
     interrupt_early("static", "set Problem type = static\n" + big, 0) && early;
   early = interrupt_early("modal", "set Problem type = modal\n" + plate, 100) &&
           early;
-  const bool ok = term && intr && hup && mpi && pipe && early;
+  const bool ok = term && intr && hup && mpi && pipe && study && early;
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
   return ok ? 0 : 1;
 }

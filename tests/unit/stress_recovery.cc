@@ -10,7 +10,7 @@
 //     the recovered sigma_xx at the centre of the bottom and top faces
 //     converges to the exact 3D solution (tests/exact/plate_exact.h) under
 //     uniform refinement (Q2: 8x4x2, 16x8x4, 32x16x8; observed order at
-//     least 0.9), and the Q1 errors (8x4x2, 16x8x4, 32x16x8) are printed.
+//     least 0.9), and Q1 at the mid-plane (order 1.8 at least).
 // Set FGIMPACT_VERBOSE=1 to print the time of one recovery on the default
 // mesh (40 x 20 x 4).
 
@@ -131,19 +131,21 @@ namespace
   }
 
   /// Relative errors of the recovered sigma_xx at the centre of the
-  /// bottom and top faces; returns whether they decrease with at least
-  /// min_order (printed; not checked if min_order <= 0).
+  /// plate at the heights z (m; at most 2, named by `names`); returns
+  /// whether they decrease with at least min_order.
   bool
-  converge_to_exact(const unsigned int degree,
-                    const unsigned int nx,
-                    const double       min_order)
+  converge_to_exact(const unsigned int         degree,
+                    const unsigned int         nx,
+                    const double               min_order,
+                    const std::vector<double> &heights,
+                    const char                *names)
   {
-    const double h     = 0.02;
-    const auto   exact = fgimpact_exact::static_sinusoidal(
+    const auto exact = fgimpact_exact::static_sinusoidal(
       fgimpact_exact::power_law_plate(1.), 1e6, 1, 1);
-    std::printf("Q%u:\n", degree);
-    double previous[2] = {0, 0}, order[2] = {0, 0};
-    bool   decreasing = true;
+    std::printf("Q%u, %s:\n", degree, names);
+    const unsigned int n_sides     = heights.size();
+    double             previous[2] = {0, 0}, order[2] = {0, 0};
+    bool               decreasing = true;
     for (const unsigned int k : {1u, 2u, 4u})
       {
         const auto c = fgimpact_tests::make_plate(
@@ -159,10 +161,10 @@ namespace
         StressRecovery recovery(plate);
         recovery.recover(ghosted(plate, analysis.displacement()));
 
-        double error[2];
-        for (unsigned int side = 0; side < 2; ++side)
+        double error[2] = {0, 0};
+        for (unsigned int side = 0; side < n_sides; ++side)
           {
-            const double z   = side * h;
+            const double z   = heights[side];
             const auto   dof = vertex_dof(recovery, Point<3>(0.1, 0.05, z));
             const double fe  = recovery.stress(dof)[0][0];
             error[side]      = std::abs(fe / exact.sigma_xx(z) - 1.);
@@ -173,23 +175,24 @@ namespace
               }
             previous[side] = error[side];
           }
-        std::printf("  %2ux%2ux%2u: relative error bottom %.2e, top %.2e\n",
+        std::printf("  %2ux%2ux%2u: relative error",
                     nx * k,
                     nx * k / 2,
-                    nx * k / 4,
-                    error[0],
-                    error[1]);
+                    nx * k / 4);
+        for (unsigned int side = 0; side < n_sides; ++side)
+          std::printf(" %.2e", error[side]);
+        std::printf("\n");
       }
-    const bool pass =
-      decreasing && order[0] >= min_order && order[1] >= min_order;
-    std::printf("  observed order on the finest pair: bottom %.1f, top %.1f",
-                order[0],
-                order[1]);
-    if (min_order > 0)
-      std::printf("; errors decrease with order %.1f at least: %s",
-                  min_order,
-                  pass ? "yes" : "NO");
-    std::printf("\n");
+    bool pass = decreasing;
+    std::printf("  observed order on the finest pair:");
+    for (unsigned int side = 0; side < n_sides; ++side)
+      {
+        pass = pass && order[side] >= min_order;
+        std::printf(" %.1f", order[side]);
+      }
+    std::printf("; errors decrease with order %.1f at least: %s\n",
+                min_order,
+                pass ? "yes" : "NO");
     return pass;
   }
 
@@ -224,10 +227,12 @@ main(int argc, char **argv)
   // Static sinusoidal load, n = 1 plate: the recovered sigma_xx at the
   // centre of the bottom and top faces against the exact 3D solution.
   // Q2: first order at least (0.9; a one-sided derivative at the face).
-  // Q1 (printed, not checked for an order): at
-  // a face vertex the one-sided cells give a slow, non-monotonic
-  // convergence (about 2.5 % on 64 x 32 x 16, while at the mid-plane the
-  // recovered stress converges with order 2).
+  // Q1 at the faces is not checked: the one-sided cells of a face vertex
+  // give a slow, non-monotonic convergence (relative errors 0.25, 0.008,
+  // 0.040 on the three meshes at the bottom, about 2.5 % on 64 x 32 x 16);
+  // at the mid-plane, where the averaged cells lie on both sides, the
+  // recovered Q1 stress converges with order 2 (1.4, then 1.83 observed
+  // on the two pairs; 1.8 required on the finest).
   {
     const auto exact = fgimpact_exact::static_sinusoidal(
       fgimpact_exact::power_law_plate(1.), 1e6, 1, 1);
@@ -237,8 +242,8 @@ main(int argc, char **argv)
                 exact.sigma_xx(0.) * 1e-6,
                 exact.sigma_xx(0.02) * 1e-6);
   }
-  ok &= converge_to_exact(2, 8, 0.9);
-  converge_to_exact(1, 8, 0.);
+  ok &= converge_to_exact(2, 8, 0.9, {0., 0.02}, "bottom and top faces");
+  ok &= converge_to_exact(1, 8, 1.8, {0.01}, "mid-plane");
   if (verbose)
     time_recovery();
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");

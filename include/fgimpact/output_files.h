@@ -1,0 +1,93 @@
+#ifndef fgimpact_output_files_h
+#define fgimpact_output_files_h
+
+#include <chrono>
+#include <cstdint>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fgimpact
+{
+  /**
+   * A CSV file streamed row by row, with fixed decimals per column so that
+   * reference outputs compare cleanly.  Rows are collected and handed to
+   * the disk whole, at least every 2 s of wall time, at 1 MiB, and by
+   * flush() and the destructor: the file on disk never ends in a torn row.
+   * Every write is checked (ExcOutputFailure naming the file).
+   */
+  class CsvWriter
+  {
+  public:
+    /// columns: name and number of decimals.  resume_length > 0: continue
+    /// a file (a resumed run) cut to this many bytes, without a header.
+    CsvWriter(const std::string                              &filename,
+              const std::vector<std::pair<std::string, int>> &columns,
+              const std::uintmax_t resume_length = 0);
+
+    /// Flushes what is left (errors are then ignored: call flush()).
+    ~CsvWriter();
+
+    void
+    write_row(const std::vector<double> &values);
+
+    /// Hand the collected rows to the disk and check the stream.
+    void
+    flush();
+
+    /// flush() and return the file's length in bytes (for a checkpoint).
+    std::uintmax_t
+    length();
+
+  private:
+    const std::string                     filename;
+    std::ofstream                         out;
+    std::vector<int>                      decimals;
+    std::string                           buffer;
+    std::chrono::steady_clock::time_point last_flush;
+    std::uintmax_t                        written = 0; // bytes on disk
+  };
+
+
+  /**
+   * summary.txt of every problem type: one `name = value` line per result,
+   * the unit in the name, fixed decimals (or %.6e) per entry, written at
+   * once by write() (to a temporary name, then renamed) so that a failed
+   * run leaves no partial summary.  A quantity that does not exist (NaN or
+   * Inf, e.g. the contact duration of a ball still in contact at the end
+   * time) is written as `none`, never as a number.
+   */
+  class SummaryWriter
+  {
+  public:
+    /// A value with a fixed number of decimals (0 for counts).
+    void
+    add(const std::string &name, const double value, const int decimals);
+
+    /// A value in scientific notation with 7 significant digits.
+    void
+    add_scientific(const std::string &name, const double value);
+
+    /// A word (status = completed).
+    void
+    add_text(const std::string &name, const std::string &value);
+
+    /// Write all lines to filename; throws ExcOutputFailure if it cannot.
+    void
+    write(const std::string &filename) const;
+
+    /// Lines written first by every write(), as '#' comments (the run's
+    /// provenance; set once by the executable, empty by default).
+    static void
+    set_preamble(const std::string &comment_lines);
+
+  private:
+    static std::string &
+    preamble();
+
+    std::string text;
+  };
+} // namespace fgimpact
+
+#endif
