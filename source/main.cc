@@ -5,14 +5,14 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 
-#include <fgimpact/checkpoint.h>
-#include <fgimpact/command_line.h>
-#include <fgimpact/input_file.h>
-#include <fgimpact/logger.h>
-#include <fgimpact/output_files.h>
-#include <fgimpact/run_control.h>
-#include <fgimpact/simulator.h>
-#include <fgimpact/study.h>
+#include <fgimpact/app/command_line.h>
+#include <fgimpact/app/input_file.h>
+#include <fgimpact/app/logger.h>
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/app/simulator.h>
+#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/output/output_files.h>
+#include <fgimpact/study/study.h>
 
 #include <functional>
 #include <iostream>

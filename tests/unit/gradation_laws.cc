@@ -7,8 +7,8 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <fgimpact/material.h>
-#include <fgimpact/run_control.h>
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/material/material.h>
 
 #include <cmath>
 #include <cstdio>

@@ -16,9 +16,9 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/constitutive_law.h>
-#include <fgimpact/modal_analysis.h>
-#include <fgimpact/static_analysis.h>
+#include <fgimpact/analysis/modal_analysis.h>
+#include <fgimpact/analysis/static_analysis.h>
+#include <fgimpact/material/constitutive_law.h>
 
 #include <cmath>
 #include <cstdio>

@@ -8,7 +8,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <fgimpact/complementarity.h>
+#include <fgimpact/contact/complementarity.h>
 
 #include <cmath>
 #include <cstdio>

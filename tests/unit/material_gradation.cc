@@ -2,7 +2,7 @@
 // metal convention against closed forms, and the total metal fraction V_m
 // against the quadrature of the graded density.
 
-#include <fgimpact/material.h>
+#include <fgimpact/material/material.h>
 
 #include <cmath>
 #include <cstdio>

@@ -9,7 +9,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/modal_analysis.h>
+#include <fgimpact/analysis/modal_analysis.h>
 
 #include <algorithm>
 #include <cmath>

@@ -12,7 +12,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
-#include <fgimpact/time_stepper.h>
+#include <fgimpact/time/time_stepper.h>
 
 #include <cmath>
 #include <cstdio>
@@ -40,11 +40,9 @@ main(int argc, char **argv)
                    material,
                    MPI_COMM_WORLD);
   plate.setup();
-  HertzNodeContact contact_model(law,
-                                       plate,
-                                       impactor.impact_point(0.2, 0.1));
-  const auto             contact_dof = contact_model.contact_dofs()[0];
-  const double           m           = impactor.mass();
+  HertzNodeContact contact_model(law, plate, impactor.impact_point(0.2, 0.1));
+  const auto       contact_dof = contact_model.contact_dofs()[0];
+  const double     m           = impactor.mass();
 
   TimeStepper::Parameters tp;
   tp.time_step        = 2e-6;

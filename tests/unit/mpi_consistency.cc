@@ -15,8 +15,8 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/modal_analysis.h>
-#include <fgimpact/static_analysis.h>
+#include <fgimpact/analysis/modal_analysis.h>
+#include <fgimpact/analysis/static_analysis.h>
 
 #include <algorithm>
 #include <cmath>

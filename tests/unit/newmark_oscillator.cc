@@ -5,8 +5,8 @@
 
 #include <deal.II/lac/vector.h>
 
-#include <fgimpact/newmark.h>
-#include <fgimpact/time_stepper.h>
+#include <fgimpact/time/newmark.h>
+#include <fgimpact/time/time_stepper.h>
 
 #include <cmath>
 #include <cstdio>

@@ -5,7 +5,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <fgimpact/parameters.h>
+#include <fgimpact/app/parameters.h>
 
 #include <cstdio>
 #include <sstream>

@@ -12,8 +12,8 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <fgimpact/plate_model.h>
-#include <fgimpact/probes.h>
+#include <fgimpact/plate/plate_model.h>
+#include <fgimpact/plate/probes.h>
 
 #include <cmath>
 #include <cstdio>

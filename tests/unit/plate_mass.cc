@@ -10,7 +10,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/plate_model.h>
+#include <fgimpact/plate/plate_model.h>
 
 #include <cmath>
 #include <cstdio>

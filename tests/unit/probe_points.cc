@@ -23,11 +23,11 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <fgimpact/probe_set.h>
-#include <fgimpact/probes.h>
-#include <fgimpact/static_analysis.h>
-#include <fgimpact/stress_recovery.h>
-#include <fgimpact/time_stepper.h>
+#include <fgimpact/analysis/static_analysis.h>
+#include <fgimpact/plate/probe_set.h>
+#include <fgimpact/plate/probes.h>
+#include <fgimpact/plate/stress_recovery.h>
+#include <fgimpact/time/time_stepper.h>
 
 #include <cmath>
 #include <cstdio>

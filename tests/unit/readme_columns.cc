@@ -3,7 +3,7 @@
 // contact_area_columns()), in the order of the file: the table is read
 // from the README a user reads, not kept in sync by hand.
 
-#include <fgimpact/monitor.h>
+#include <fgimpact/output/monitor.h>
 
 #include <algorithm>
 #include <cstdio>

@@ -12,10 +12,10 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/geometry.h>
-#include <fgimpact/material.h>
-#include <fgimpact/plate_model.h>
-#include <fgimpact/static_analysis.h>
+#include <fgimpact/analysis/static_analysis.h>
+#include <fgimpact/material/material.h>
+#include <fgimpact/plate/geometry.h>
+#include <fgimpact/plate/plate_model.h>
 
 #include <algorithm>
 #include <cmath>

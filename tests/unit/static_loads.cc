@@ -21,7 +21,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <fgimpact/static_analysis.h>
+#include <fgimpact/analysis/static_analysis.h>
 
 #include <array>
 #include <cmath>

@@ -10,8 +10,8 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/probes.h>
-#include <fgimpact/static_analysis.h>
+#include <fgimpact/analysis/static_analysis.h>
+#include <fgimpact/plate/probes.h>
 
 #include <cmath>
 #include <cstdio>

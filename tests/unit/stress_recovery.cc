@@ -19,9 +19,9 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <fgimpact/probes.h>
-#include <fgimpact/static_analysis.h>
-#include <fgimpact/stress_recovery.h>
+#include <fgimpact/analysis/static_analysis.h>
+#include <fgimpact/plate/probes.h>
+#include <fgimpact/plate/stress_recovery.h>
 
 #include <cmath>
 #include <cstdio>

@@ -11,7 +11,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/symmetry.h>
+#include <fgimpact/plate/symmetry.h>
 
 #include <algorithm>
 #include <cmath>

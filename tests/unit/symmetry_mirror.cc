@@ -18,9 +18,9 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <fgimpact/mirrored_data_out.h>
-#include <fgimpact/postprocessing.h>
-#include <fgimpact/stress_recovery.h>
+#include <fgimpact/output/mirrored_data_out.h>
+#include <fgimpact/output/postprocessing.h>
+#include <fgimpact/plate/stress_recovery.h>
 
 #include <algorithm>
 #include <cmath>

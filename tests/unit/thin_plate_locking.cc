@@ -8,7 +8,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/static_analysis.h>
+#include <fgimpact/analysis/static_analysis.h>
 
 #include <cmath>
 #include <cstdio>

@@ -5,7 +5,7 @@
 // (3) the n = 1 contact region of the paper against a value computed by hand
 //     from Eqs. 2.2-2.3 (E_z = 118.2 GPa, E_x = 225 GPa, G_xz = 45.47 GPa).
 
-#include <fgimpact/contact_law.h>
+#include <fgimpact/contact/contact_law.h>
 
 #include <cmath>
 #include <cstdio>

@@ -13,8 +13,8 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <fgimpact/postprocessing.h>
-#include <fgimpact/probes.h>
+#include <fgimpact/output/postprocessing.h>
+#include <fgimpact/plate/probes.h>
 
 #include <cmath>
 #include <cstdio>

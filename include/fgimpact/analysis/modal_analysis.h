@@ -1,0 +1,103 @@
+#ifndef fgimpact_modal_analysis_h
+#define fgimpact_modal_analysis_h
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/output/postprocessing.h>
+#include <fgimpact/plate/linear_solver.h>
+#include <fgimpact/plate/plate_model.h>
+
+#include <string>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * The lowest natural frequencies and mode shapes of K phi = omega^2 M phi
+   * by subspace iteration with shift-invert: each iteration applies
+   * (K - sigma M)^{-1} M to a block of vectors through one factorization
+   * (CHOLMOD), followed by a Rayleigh-Ritz projection solved with LAPACK.
+   * Constrained DoFs are kept at zero.
+   */
+  class ModalAnalysis
+  {
+  public:
+    struct Parameters
+    {
+      unsigned int n_modes        = 6;
+      double       shift          = 0.;    // Hz
+      double       tolerance      = 1e-10; // relative change of omega^2
+      unsigned int max_iterations = 200;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    struct Mode
+    {
+      double frequency;  ///< Hz
+      double w_fraction; ///< share of the kinetic energy in w (flexural)
+    };
+
+    ModalAnalysis(const Parameters                        &parameters,
+                  const EffectiveMatrixSolver::Parameters &solver,
+                  const PlateModel                        &plate);
+
+    /// Print the estimated and measured cost of a long iteration (the
+    /// executable: Output/Print timing; off by default, as it depends on
+    /// the machine).
+    void
+    report_costs(const bool report);
+
+    void
+    solve();
+
+    const std::vector<Mode> &
+    get_modes() const
+    {
+      return modes;
+    }
+
+    unsigned int
+    n_iterations() const
+    {
+      return iterations;
+    }
+
+    /// frequencies.csv, summary.txt and one VTU per mode shape.
+    void
+    write_output(const std::string &directory,
+                 const DataOutBase::VtkFlags::ZlibCompressionLevel
+                   vtu_compression       = DataOutBase::VtkFlags::best_speed,
+                 const VtuFields &fields = VtuFields()) const;
+
+  private:
+    /// A log line when the first iteration took long (seconds, block
+    /// size), with the bound that Max iterations puts on the whole.
+    void
+    report_iteration_cost(const double seconds, const unsigned int block) const;
+
+    /// Before the first iteration: its estimated cost from the first of
+    /// its `block` solves (seconds), when that is long.
+    void
+    report_estimated_cost(const double       solve_seconds,
+                          const unsigned int block) const;
+
+    const Parameters                           parameters;
+    bool                                       print_costs = false;
+    const EffectiveMatrixSolver::Parameters    solver_parameters;
+    const PlateModel                          &plate;
+    std::vector<Mode>                          modes;
+    std::vector<TrilinosWrappers::MPI::Vector> shapes;
+    unsigned int                               iterations = 0;
+  };
+} // namespace fgimpact
+
+#endif

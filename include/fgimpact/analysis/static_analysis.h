@@ -1,0 +1,129 @@
+#ifndef fgimpact_static_analysis_h
+#define fgimpact_static_analysis_h
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/output/postprocessing.h>
+#include <fgimpact/plate/linear_solver.h>
+#include <fgimpact/plate/plate_model.h>
+
+#include <string>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /// The rigid sphere of Static/Load = sphere.
+  struct SphereIndenter
+  {
+    double radius           = 0.015; // R, m
+    double candidate_radius = 0;     // m, 0: 1.5 sqrt(R delta)
+    bool   paraboloid_gap   = false;
+  };
+
+  /**
+   * Static deflection of the plate, K u = f, under a load on the top face:
+   * a sinusoidal pressure q0 sin(pi x/a) sin(pi y/b) (which has an exact 3D
+   * solution for simply supported plates), a uniform pressure q0, or a
+   * point force P at the top node nearest to a point.  Loads act downward
+   * (-z).
+   */
+  class StaticAnalysis
+  {
+  public:
+    enum class Load
+    {
+      sinusoidal,
+      uniform,
+      point,
+      sphere
+    };
+
+    struct Parameters
+    {
+      Load   load        = Load::sinusoidal;
+      double pressure    = 1e6;  // q0, Pa
+      double point_force = 1e3;  // P, N
+      double indentation = 1e-5; // delta of Load = sphere, m
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    /// Results at the plate centre, deflection positive downward (m),
+    /// stresses (Pa) at the bottom, middle and top of the centre line.
+    struct Results
+    {
+      double       deflection[3]; // z = 0, h/2, h
+      double       sigma_xx[3], sigma_yy[3], sigma_zz[3];
+      unsigned int n_dofs;
+      /// Load = sphere: total force (N), contact radius (m, the farthest
+      /// node in contact), largest nodal pressure (Pa), and
+      /// per candidate node its distance from the centre (m) and nodal
+      /// pressure lambda_j / A_j (Pa).
+      double              contact_force   = 0;
+      double              contact_radius  = 0;
+      double              max_pressure    = 0;
+      unsigned int        n_contact_nodes = 0;
+      std::vector<double> node_radius, node_pressure;
+    };
+
+
+    StaticAnalysis(const Parameters                        &parameters,
+                   const EffectiveMatrixSolver::Parameters &solver,
+                   const PlateModel                        &plate,
+                   const Point<2>                          &load_point,
+                   const SphereIndenter &indenter = SphereIndenter());
+
+    /// Assemble the load and solve.
+    void
+    solve();
+
+    const Results &
+    get_results() const
+    {
+      return results;
+    }
+
+    const TrilinosWrappers::MPI::Vector &
+    displacement() const
+    {
+      return u;
+    }
+
+    /// Write summary.txt and a VTU file of the fields into directory.
+    void
+    write_output(const std::string &directory,
+                 const DataOutBase::VtkFlags::ZlibCompressionLevel
+                   vtu_compression       = DataOutBase::VtkFlags::best_speed,
+                 const VtuFields &fields = VtuFields()) const;
+
+  private:
+    void
+    assemble_load(TrilinosWrappers::MPI::Vector &f) const;
+
+    /// contact_pressure.csv: r (mm) and nodal pressure (MPa) per node.
+    void
+    write_pressure_csv(const std::string &file_name) const;
+
+    /// Load = sphere: the LCP with the compliance of K, then u.
+    void
+    solve_indentation(EffectiveMatrixSolver &solver);
+
+    const Parameters                        parameters;
+    const EffectiveMatrixSolver::Parameters solver_parameters;
+    const PlateModel                       &plate;
+    const Point<2>                          load_point;
+    const SphereIndenter                    indenter;
+    TrilinosWrappers::MPI::Vector           u;
+    Results                                 results;
+  };
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,132 @@
+#ifndef fgimpact_simulator_h
+#define fgimpact_simulator_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+
+#include <fgimpact/app/parameters.h>
+#include <fgimpact/app/resources.h>
+#include <fgimpact/material/material.h>
+#include <fgimpact/output/results.h>
+#include <fgimpact/plate/geometry.h>
+#include <fgimpact/plate/plate_model.h>
+#include <fgimpact/time/impact_driver.h>
+
+#include <memory>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * The largest contact radius to expect (m): for an impact the rigid ball
+   * on a half-space of the top face's modulus
+   * (hertz_impact_contact_radius()), for a static sphere indentation delta
+   * sqrt(R delta).  Sizes the contact refinement and the resolved
+   * contact's candidate set.
+   */
+  /// The element sizes across the largest contact radius that the
+  /// automatic contact refinement aims at, and below which a finished
+  /// resolved run warns (doc/contact.md).
+  constexpr double contact_elements_per_radius = 4.;
+
+  /// Geometry/Contact refinement levels = auto: 0 unless the contact is
+  /// resolved (Parameters::uses_resolved_contact()); then the fewest levels
+  /// with contact_elements_per_radius in-plane element sizes across
+  /// contact_radius (m, the half-space Hertz estimate).
+  unsigned int
+  automatic_contact_refinement_levels(const Parameters &parameters,
+                                      const double      contact_radius);
+
+  double
+  expected_contact_radius(const Parameters                 &parameters,
+                          const FunctionallyGradedMaterial &material,
+                          const double                      thickness);
+
+  /**
+   * The program: parameters -> plate model (geometry, material, mesh and
+   * matrices, shared by all problem types) -> the driver of the problem
+   * type (impact, static or modal), which writes the outputs.
+   */
+  class Simulator
+  {
+  public:
+    Simulator(const Parameters &parameters, const MPI_Comm mpi_communicator);
+
+    /**
+     * Build the mesh, matrices and the driver (for an impact: the contact
+     * and the time stepper), and check what can only be checked then (the
+     * contact node, the explicit stability limit).  Writes no file, so a
+     * failure here leaves no output behind; after a numerical failure of
+     * valid input the caller writes the start files and
+     * write_failed_summary().
+     */
+    void
+    setup();
+
+    /// Only the first part of setup(): geometry, material, mesh and
+    /// matrices (for a study engine that drives the plate itself).
+    const PlateModel &
+    setup_plate();
+
+    /// Run (calling setup() if not done) and write the outputs into the
+    /// output directory, which must exist.
+    void
+    run();
+
+    /// Rank 0, after a failure that left no summary.txt (set-up, or a
+    /// static or modal run): summary.txt with status = failed, best effort
+    /// (a failure to write it is swallowed: the first failure counts).
+    void
+    write_failed_summary(const std::string &status = "failed") const;
+
+    /// The impact's results (Problem type = impact only).
+    const ImpactResults &
+    get_results() const;
+
+    /// The memory and time estimated before the mesh was built (setup()).
+    const ResourceEstimate &
+    get_resource_estimate() const
+    {
+      return resource_estimate;
+    }
+
+    /// Receive every row of history.csv (its columns and units, before
+    /// rounding) on every rank; impact only, before run().
+    void
+    add_history_observer(const ImpactMonitor::RowObserver &observer);
+
+    /// Checkpoints of an impact run: the parameters' text to store in
+    /// them, and whether to resume; before setup().
+    void
+    set_checkpointing(const CheckpointSettings &settings);
+
+  private:
+    /// Geometry/Contact refinement *: centre, radius (automatic from
+    /// expected_contact_radius()) and levels.
+    LocalRefinement
+    contact_refinement() const;
+
+    /// Graded elements with sampled nodal values: a log warning if they
+    /// misread the profile by more than 25 % in an element layer (a
+    /// boundary layer, n -> 0+), naming the entries that fix it.
+    void
+    warn_sampled_boundary_layer() const;
+
+    const Parameters   parameters;
+    const MPI_Comm     mpi_communicator;
+    ConditionalOStream pcout;
+    Timer              total_timer;
+    ResourceEstimate   resource_estimate;
+
+    std::unique_ptr<PlateGeometry>              geometry;
+    std::unique_ptr<FunctionallyGradedMaterial> material;
+    std::unique_ptr<PlateModel>                 plate;
+    std::unique_ptr<ProblemDriver>              driver;
+    std::vector<ImpactMonitor::RowObserver>     observers;
+    CheckpointSettings                          checkpoint_settings;
+  };
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,33 @@
+#ifndef fgimpact_compliance_h
+#define fgimpact_compliance_h
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/plate/linear_solver.h>
+#include <fgimpact/plate/plate_model.h>
+
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * The compliance of a matrix A (the effective matrix K + a0 M of a
+   * Newmark step, or K of a static problem) at the contact DoFs: for the
+   * unit loads g_j the responses c_j = A^{-1} g_j (m solves with the
+   * factorized A) and the dense Delassus matrix C_ij = g_i^T c_j (m/N),
+   * symmetric positive definite.  The responses are kept if asked for
+   * (one vector per DoF: the back-substitution u -= sum lambda_j c_j
+   * costs no solve).  Collective.
+   */
+  void
+  compute_compliance(EffectiveMatrixSolver                      &solver,
+                     const PlateModel                           &plate,
+                     const std::vector<types::global_dof_index> &dofs,
+                     FullMatrix<double>                         &C,
+                     std::vector<TrilinosWrappers::MPI::Vector> *responses);
+} // namespace fgimpact
+
+#endif

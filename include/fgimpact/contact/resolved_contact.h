@@ -1,0 +1,196 @@
+#ifndef fgimpact_resolved_contact_h
+#define fgimpact_resolved_contact_h
+
+#include <deal.II/base/point.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <fgimpact/contact/contact_model.h>
+#include <fgimpact/plate/plate_model.h>
+
+#include <string>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * A rigid sphere (radius R) in frictionless unilateral contact with the
+   * top face: no contact law, the graded 3D elasticity under the ball is
+   * the contact stiffness.  The candidates are the z DoFs of the top-face
+   * support points within the candidate radius r_c of the impact point
+   * (hanging nodes excluded), sorted by their distance r_j from it, so the
+   * first is the node at the impact point.
+   *
+   * Gap of candidate j, measured vertically (small slopes, see
+   * doc/contact.md):
+   *
+   *   g_j = phi_j - w - u_j >= 0,   phi_j = R - sqrt(R^2 - r_j^2)
+   *
+   * (w the ball's displacement, positive down; u_j the plate's z
+   * displacement, positive up; phi_j the sphere's height above its lowest
+   * point, or the paraboloid r_j^2/(2R)).  With the Delassus matrix C
+   * (m/N) and the ball's compliance c_b, an implicit step is the LCP
+   *
+   *   g = q + (C + c_b 1 1^T) lambda,  q_j = phi_j - w_free - u_free_j,
+   *   lambda >= 0, g >= 0, lambda^T g = 0,
+   *
+   * solved by solve_lcp() warm-started from the last step's active set.
+   * The complementarity holds at the end of every step (exact
+   * enforcement; the energy behaviour is measured in doc/contact.md).
+   * A node of the outermost ring in contact sets
+   * ContactState::candidates_exhausted: the caller grows the set
+   * (grow_candidates()) and repeats the step.
+   */
+  class ResolvedSphereContact : public ContactModel
+  {
+  public:
+    enum class GapShape
+    {
+      sphere,
+      paraboloid
+    };
+
+    /// Collective.  Throws if no candidate is found, naming Contact/
+    /// Candidate radius.
+    ResolvedSphereContact(const PlateModel &plate,
+                          const double      sphere_radius,
+                          const Point<2>   &impact_point,
+                          const double      candidate_radius,
+                          const GapShape    gap_shape,
+                          const double      reference_modulus,
+                          const bool        massless_candidates = false);
+
+    const std::vector<types::global_dof_index> &
+    contact_dofs() const override
+    {
+      return dofs;
+    }
+
+    void
+    solve_implicit(const Vector<double>     &u_free,
+                   const FullMatrix<double> &C,
+                   const double              w_free,
+                   const double              c_b,
+                   const NewtonControl      &newton,
+                   ContactState             &state) const override;
+
+    /// Not available: the explicit scheme is refused with this model.
+    void
+    evaluate_explicit(const Vector<double> &u_c,
+                      const double          w,
+                      ContactState         &state) const override;
+
+    /// A rigid unilateral contact stores no energy.
+    double
+    potential(const ContactState &) const override
+    {
+      return 0.;
+    }
+
+    double
+    stiffness_bound(const double mass, const double V0) const override;
+
+    std::string
+    description() const override;
+
+    std::string
+    warning() const override;
+
+    void
+    fill_results(ImpactResults &results) const override;
+
+    std::vector<Point<3>>
+    contact_points() const override
+    {
+      return points;
+    }
+
+    std::vector<double>
+    contact_areas() const override
+    {
+      return areas;
+    }
+
+    std::vector<types::global_dof_index>
+    massless_dofs() const override
+    {
+      return massless_candidates ? dofs :
+                                   std::vector<types::global_dof_index>();
+    }
+
+    bool
+    reports_contact_area() const override
+    {
+      return true;
+    }
+
+    /// The candidate radius and the active set (the warm start).
+    void
+    save(CheckpointWriter &out) const override;
+    void
+    load(CheckpointReader &in) override;
+
+    /// Enlarge the candidate radius 1.5 times (at most to R) and collect
+    /// the candidates anew.  Collective.
+    bool
+    grow_candidates() override;
+
+    /// Distance r_j (m) of each candidate from the impact point.
+    const std::vector<double> &
+    candidate_radii() const
+    {
+      return radii;
+    }
+
+    /// Tributary top-face area A_j = int N_j dA of each candidate (m^2):
+    /// the nodal pressure is lambda_j / A_j.
+    const std::vector<double> &
+    candidate_areas() const
+    {
+      return areas;
+    }
+
+    /// The largest r_j (m): the candidate set reaches this far.
+    double
+    reach() const
+    {
+      return radii.back();
+    }
+
+  private:
+    /// Candidates, areas, profile and an empty active set for the
+    /// current candidate radius.
+    void
+    build_candidates();
+
+    void
+    collect_candidates(const PlateModel &plate,
+                       const Point<2>   &impact_point,
+                       const double      candidate_radius);
+    void
+    compute_areas(const PlateModel &plate);
+
+    const PlateModel                    &plate;
+    const Point<2>                       impact_point;
+    const double                         R;
+    const GapShape                       gap_shape;
+    const double                         reference_modulus; // Pa
+    const bool                           massless_candidates;
+    double                               candidate_radius; // m
+    std::vector<types::global_dof_index> dofs;
+    std::vector<double>                  radii, areas, profile;
+    std::vector<Point<3>>                points; // undeformed, m
+    /// Symmetric part (Geometry/Symmetry): the part's share of the plate
+    /// and how many nodes of the whole plate each candidate stands for.
+    double                    share = 1;
+    std::vector<unsigned int> multiplicity;
+    double                    smallest_spacing = 0; // m
+    /// The active set of the last solve (warm start).
+    mutable std::vector<bool> active;
+  };
+} // namespace fgimpact
+
+#endif

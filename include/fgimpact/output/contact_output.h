@@ -1,0 +1,83 @@
+#ifndef fgimpact_contact_output_h
+#define fgimpact_contact_output_h
+
+#include <deal.II/base/point.h>
+
+#include <fgimpact/contact/contact_model.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * The ball and the contact for ParaView, beside the plate's VTU series:
+   * at every VTU step a triangulated sphere surface at the ball's position
+   * (sphere_NNNNN.vtu, with the contact force and the ball's displacement
+   * as field data) and, for a contact model with several contact nodes,
+   * those nodes as points with their force and nodal pressure
+   * (contact_NNNNN.vtu); each series has its PVD file (sphere.pvd,
+   * contact.pvd) with the simulation time.  Everything is replicated on
+   * the MPI ranks: rank 0 alone writes.  Every file is written to a
+   * temporary name and renamed.
+   */
+  class ContactVtuWriter
+  {
+  public:
+    /// impact_point: where the ball first touches the top face (m).
+    ContactVtuWriter(const std::string  &directory,
+                     const Point<3>     &impact_point,
+                     const double        radius,
+                     const ContactModel &contact);
+
+    /// Write the snapshot of step `step` at time t (s), with the ball's
+    /// displacement w (m, positive down).
+    void
+    write(const unsigned int  step,
+          const double        t,
+          const double        w,
+          const ContactState &state);
+
+    /// Write the PVD files (through a temporary name and a rename).
+    void
+    finish() const;
+
+    /// (time in s, file name) of a PVD entry.
+    using Record = std::pair<double, std::string>;
+
+    /// The PVD entries so far (for a checkpoint).
+    const std::vector<Record> &
+    sphere_records() const
+    {
+      return spheres;
+    }
+    const std::vector<Record> &
+    contact_records() const
+    {
+      return contacts;
+    }
+
+    /// On resume: the checkpoint's entries; the PVD files are rewritten
+    /// with them (dropping snapshots written after the checkpoint).
+    void
+    restore(const std::vector<Record> &sphere_records,
+            const std::vector<Record> &contact_records);
+
+  private:
+    void
+    write_sphere(const std::string &file, const double w, const double F) const;
+    void
+    write_nodes(const std::string &file, const ContactState &state) const;
+
+    const std::string                           directory;
+    const Point<3>                              impact_point;
+    const double                                R;
+    const ContactModel                         &contact;
+    std::vector<std::pair<double, std::string>> spheres, contacts;
+  };
+} // namespace fgimpact
+
+#endif

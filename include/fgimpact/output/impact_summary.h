@@ -1,0 +1,58 @@
+#ifndef fgimpact_impact_summary_h
+#define fgimpact_impact_summary_h
+
+#include <fgimpact/app/parameters.h>
+#include <fgimpact/output/results.h>
+#include <fgimpact/plate/plate_model.h>
+
+#include <string>
+
+namespace fgimpact
+{
+  /**
+   * summary.txt of an impact run: every key of the README's table from r
+   * (scaled to the units in the names), with `status` (completed,
+   * interrupted or failed) and time_reached_us = t_end.  The monitor
+   * writes it at the end of the time loop; the driver writes it with
+   * status = failed when set-up fails before the monitor exists, so that
+   * a failed run always has the same keys.  contact_area: the resolved
+   * sphere's keys; instrumentation: spmv_ms and solve_ms.  Throws
+   * ExcOutputFailure if filename cannot be written.
+   */
+  /**
+   * What the run models: the parameters' choices as resolved (the
+   * symmetric part, the contact refinement levels of the mesh) and the
+   * in-plane element size at the impact point (m, measured on the mesh).
+   * Collective.
+   */
+  ModelDescription
+  describe_model(const Parameters &parameters,
+                 const PlateModel &plate,
+                 const double      time_step);
+
+  /// The validity limits of the small-strain model: the largest
+  /// indentation against the ball's radius R (Hertz: a/R = sqrt(alpha/R),
+  /// 0.05 R is a/R = 0.22) and the indentation and mid-plane deflection
+  /// against the thickness h (a deflection of 0.2 h brings membrane
+  /// stretching of a few per cent).
+  constexpr double indentation_limit = 0.05, deflection_limit = 0.2;
+
+  /**
+   * The end-of-run warnings: a resolved contact whose largest contact
+   * radius spans fewer than contact_elements_per_radius element sizes; an
+   * indentation or deflection beyond the small-strain limits above.  One
+   * line each, naming what to change.
+   */
+  std::vector<std::string>
+  resolution_warnings(const ImpactResults &r, const bool contact_area);
+
+  void
+  write_impact_summary(const std::string   &filename,
+                       const ImpactResults &r,
+                       const bool           contact_area,
+                       const bool           instrumentation,
+                       const std::string   &status,
+                       const double         t_end);
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,200 @@
+#ifndef fgimpact_postprocessing_h
+#define fgimpact_postprocessing_h
+
+#include <deal.II/base/data_out_base.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/data_postprocessor.h>
+
+#include <fgimpact/plate/plate_model.h>
+#include <fgimpact/plate/stress_recovery.h>
+
+#include <fstream>
+#include <future>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fgimpact
+{
+  class MirroredDataOut;
+
+  using namespace dealii;
+
+  /**
+   * Stress tensor (MPa), von Mises stress (MPa), E (GPa) and rho (kg/m^3)
+   * from the displacement, for DataOut.  E and the stress come from the
+   * same PropertyInterpolator and HookeLaw as the assembly and the probes.
+   * This is the per-cell (discontinuous) stress; the continuous one is
+   * StressRecovery's.  The tensor's components 0..8 are xx, xy, xz, yx,
+   * yy, yz, zx, zy, zz (row by row).  With with_stress = false only E and
+   * rho, with with_material = false only the stress and von Mises.
+   */
+  class StressPostprocessor : public DataPostprocessor<3>
+  {
+  public:
+    explicit StressPostprocessor(const PlateModel &plate,
+                                 const bool        with_stress   = true,
+                                 const bool        with_material = true);
+
+    void
+    evaluate_vector_field(
+      const DataPostprocessorInputs::Vector<3> &inputs,
+      std::vector<Vector<double>> &computed_quantities) const override;
+
+    std::vector<std::string>
+    get_names() const override;
+
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    get_data_component_interpretation() const override;
+
+    UpdateFlags
+    get_needed_update_flags() const override;
+
+  private:
+    const PropertyInterpolator properties;
+    const HookeLaw             hooke;
+    const bool                 with_stress, with_material;
+  };
+
+
+
+  /**
+   * Entry "Fields" of subsection "Output": which fields the VTU files
+   * hold (a comma-separated list).
+   */
+  struct VtuFields
+  {
+    bool displacement = true;  // displacement_m (m)
+    bool velocity     = true;  // velocity_m_s (m/s)
+    bool acceleration = false; // acceleration_m_s2 (m/s^2, impact runs)
+    bool stress       = true;  // recovered sigma_xx_MPa ... sigma_yz_MPa
+    bool von_mises    = true;  // recovered von_mises_MPa
+    bool principal    = true;  // recovered sigma_1_MPa >= sigma_2 >= sigma_3
+    bool strain       = false; // recovered strain_xx ... strain_yz
+    bool cell_stress  = false; // per-cell stress_MPa tensor, von Mises
+    bool material     = true;  // youngs_modulus_GPa, density_kg_m3
+    bool peak         = true;  // peak_fields.vtu at the end of an impact
+    /// Entry "Mirror symmetric part": a half or quarter model's VTU files
+    /// show the whole plate (MirroredDataOut).
+    bool mirror = true;
+
+    /// Declare "Fields" and "Mirror symmetric part" in the current
+    /// subsection.
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /// Parse "Fields" and "Mirror symmetric part" of the current
+    /// subsection.
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// Whether any recovered (nodal) field is needed.
+    bool
+    recovered() const
+    {
+      return stress || von_mises || principal || strain || peak;
+    }
+  };
+
+
+
+  /**
+   * Writes VTU files (one piece per MPI rank plus a .pvtu record) of the
+   * displacement, velocity, stresses and material fields, and keeps the PVD
+   * time series file up to date so that a run stopped early still opens in
+   * ParaView: the PVD (written to a temporary name and renamed) lists a
+   * snapshot only once its files are complete.  A failed write throws
+   * ExcOutputFailure naming the file.
+   */
+  class VtuWriter
+  {
+  public:
+    VtuWriter(const PlateModel                                 &plate,
+              const std::string                                &directory,
+              const DataOutBase::VtkFlags::ZlibCompressionLevel compression =
+                DataOutBase::VtkFlags::best_speed,
+              const VtuFields &fields = VtuFields());
+
+    /// Waits for the last snapshot to be written.
+    ~VtuWriter();
+
+    /**
+     * Write one snapshot at time t (s); u, v in m and m/s.  The vectors
+     * are copied and the patches are built and written in a background
+     * task, off the time loop's critical path; the next call (or the
+     * destructor) waits for it.  A non-empty constant_field (name, value)
+     * adds a field of that value on every cell (the modal analysis's
+     * frequency_Hz).  The acceleration a (m/s^2; impact runs) is written
+     * if the fields include "acceleration".
+     */
+    void
+    write(const unsigned int                    step,
+          const double                          t,
+          const TrilinosWrappers::MPI::Vector  &u,
+          const TrilinosWrappers::MPI::Vector  &v,
+          const std::pair<std::string, double> &constant_field = {},
+          const TrilinosWrappers::MPI::Vector  *a              = nullptr);
+
+    /// Wait for the pending snapshot, rethrowing its errors, and list it
+    /// in the PVD.
+    void
+    finish();
+
+    /**
+     * If the fields include "peak" and snapshots were written: write
+     * peak_fields.vtu (and .pvtu), the nodal maxima over the snapshots of
+     * the recovered von Mises stress and |sigma_zz| (MPa).  Waits for the
+     * pending snapshot first.
+     */
+    void
+    write_peak_fields();
+
+    /**
+     * For a checkpoint after step `step`: the PVD entries (time in s,
+     * .pvtu name; rank 0 only, empty elsewhere).  A snapshot of this very
+     * step still being written is not waited for (that would cost the
+     * background write's time): it is left out and in_flight set, and the
+     * resumed run writes it again from the restored state.
+     */
+    std::vector<std::pair<double, std::string>>
+    records(const unsigned int step, bool &in_flight);
+
+    /// On resume: the checkpoint's entries; rank 0 rewrites the PVD with
+    /// them (dropping snapshots written after the checkpoint).
+    void
+    restore(const std::vector<std::pair<double, std::string>> &records);
+
+  private:
+    /// The selected Output/Fields of the ghosted copies (and a constant
+    /// cell field, stored in `constant`) into data_out.
+    void
+    attach_fields(MirroredDataOut                      &data_out,
+                  const bool                            acceleration,
+                  const std::pair<std::string, double> &constant_field,
+                  Vector<double>                       &constant);
+
+    void
+    add_recovered_fields(DataOut<3> &data_out);
+
+    const PlateModel                           &plate;
+    const std::string                           directory;
+    const VtuFields                             fields;
+    StressPostprocessor                         postprocessor;
+    std::unique_ptr<StressRecovery>             recovery;
+    TrilinosWrappers::MPI::Vector               u_ghosted, v_ghosted, a_ghosted;
+    std::vector<std::pair<double, std::string>> times_and_names;
+    std::pair<double, std::string>              pending_record;
+    bool                                        record_pending = false;
+    unsigned int                                pending_step   = 0;
+    std::future<void>                           pending;
+    bool                                        any_written = false;
+
+    const DataOutBase::VtkFlags::ZlibCompressionLevel compression;
+  };
+} // namespace fgimpact
+
+#endif

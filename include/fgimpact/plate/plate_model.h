@@ -1,0 +1,240 @@
+#ifndef fgimpact_plate_model_h
+#define fgimpact_plate_model_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <fgimpact/material/constitutive_law.h>
+#include <fgimpact/material/material.h>
+#include <fgimpact/plate/geometry.h>
+
+#include <memory>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * The linear elastic FGM plate discretized with FESystem(FE_Q(p), 3): the
+   * mesh, degrees of freedom, support constraints and the constant stiffness
+   * and consistent mass matrices (Eqs. 3.10-3.11), as Trilinos objects on a
+   * p4est triangulation so that the same code runs under MPI.
+   */
+  class PlateModel
+  {
+  public:
+    struct Parameters
+    {
+      unsigned int degree = 1;
+
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    PlateModel(const Parameters                 &parameters,
+               const PlateGeometry              &geometry,
+               const FunctionallyGradedMaterial &material,
+               const MPI_Comm                    mpi_communicator);
+
+    /// Make the mesh (refined near the impact point as asked),
+    /// distribute DoFs, build constraints and assemble K, M.
+    void
+    setup(const LocalRefinement &refinement = LocalRefinement());
+
+    /// The smallest cell edge along x (m), over all ranks.
+    double
+    smallest_cell_size() const;
+
+    /// The smallest in-plane edge (m) of the cells that touch p, over all
+    /// ranks (the element size under the ball at the impact point).
+    double
+    cell_size_at(const Point<3> &p) const;
+
+    /// The contact refinement the mesh was made with (setup()).
+    const LocalRefinement &
+    contact_refinement() const
+    {
+      return refinement;
+    }
+
+    types::global_dof_index
+    n_dofs() const
+    {
+      return dof_handler.n_dofs();
+    }
+    unsigned int
+    n_active_cells() const;
+
+    const TrilinosWrappers::SparseMatrix &
+    stiffness_matrix() const
+    {
+      return stiffness;
+    }
+    const TrilinosWrappers::SparseMatrix &
+    mass_matrix() const
+    {
+      return mass;
+    }
+
+    /**
+     * On a symmetric part (Geometry/Symmetry): row sums of the mass
+     * couplings the cuts remove (to u_x on x = a/2 and u_y on y = b/2, and
+     * to the hanging nodes they constrain through them), which the
+     * condensed mass_matrix() drops and the whole plate's keeps;
+     * mass_matrix() 1 plus this vector is the whole plate's row-sum lumped
+     * mass restricted to the part.  Empty without cuts.
+     */
+    const TrilinosWrappers::MPI::Vector &
+    cut_mass_coupling() const
+    {
+      return cut_coupling;
+    }
+
+    /// Reinit v as a (non-ghosted) vector of locally owned DoFs.
+    void
+    initialize_vector(TrilinosWrappers::MPI::Vector &v) const;
+
+    /**
+     * The top-surface (z = h) vertex nearest to (x, y) and the global index
+     * of its DoF of the given component, the same on every MPI rank (ties
+     * are broken by the vertex coordinates, not by the DoF numbering, which
+     * depends on the partition).  The point force of the contact law acts
+     * there, as in the paper.
+     */
+    std::pair<types::global_dof_index, Point<3>>
+    nearest_top_vertex_dof(const Point<2>    &xy,
+                           const unsigned int component) const;
+
+    /// The vertex nearest to a point anywhere in the plate and its DoF of
+    /// the given component, the same on every MPI rank.
+    std::pair<types::global_dof_index, Point<3>>
+    nearest_vertex_dof(const Point<3>    &target,
+                       const unsigned int component) const;
+
+    /**
+     * The value of a (non-ghosted) distributed vector at one DoF, on every
+     * rank: the owner contributes it to a sum over the ranks (one scalar
+     * all-reduce).  Collective.
+     */
+    double
+    dof_value(const TrilinosWrappers::MPI::Vector &v,
+              const types::global_dof_index        dof) const;
+
+    /// dof_value() at several DoFs with one all-reduce. Collective.
+    Vector<double>
+    dof_values(const TrilinosWrappers::MPI::Vector        &v,
+               const std::vector<types::global_dof_index> &dofs) const;
+
+    /// The MPI rank that owns a DoF. Collective.
+    unsigned int
+    dof_owner(const types::global_dof_index dof) const;
+
+    /// Sum of all mass matrix entries of one displacement component, i.e.
+    /// the total mass of the plate in kg (partition of unity).
+    double
+    total_mass() const;
+
+    const DoFHandler<3> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+    const AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+    const Mapping<3> &
+    get_mapping() const
+    {
+      return mapping;
+    }
+    const FESystem<3> &
+    get_fe() const
+    {
+      return fe;
+    }
+    const PlateGeometry &
+    get_geometry() const
+    {
+      return geometry;
+    }
+    const FunctionallyGradedMaterial &
+    get_material() const
+    {
+      return material;
+    }
+    const IndexSet &
+    locally_owned_dofs() const
+    {
+      return locally_owned;
+    }
+    const IndexSet &
+    locally_relevant_dofs() const
+    {
+      return locally_relevant;
+    }
+    MPI_Comm
+    get_mpi_communicator() const
+    {
+      return mpi_communicator;
+    }
+
+  private:
+    /// Both searches above: ties broken by the coordinates.
+    std::pair<types::global_dof_index, Point<3>>
+    nearest_vertex(const Point<3>    &target,
+                   const unsigned int component,
+                   const bool         boundary_cells_only) const;
+
+    /// The components a support fixes on boundary face id (0-4); none on
+    /// a free face, a symmetry cut or the top.
+    ComponentMask
+    support_mask(const unsigned int face) const;
+
+    void
+    setup_constraints();
+
+    /// Hanging nodes and supports into c, and with_cuts the symmetry cuts.
+    void
+    make_constraints(AffineConstraints<double> &c, const bool with_cuts) const;
+    void
+    assemble();
+
+    const Parameters                  parameters;
+    const PlateGeometry              &geometry;
+    const FunctionallyGradedMaterial &material;
+    const MPI_Comm                    mpi_communicator;
+
+    parallel::distributed::Triangulation<3> triangulation;
+    const FESystem<3>                       fe;
+    const MappingQ<3>                       mapping;
+    DoFHandler<3>                           dof_handler;
+    IndexSet                                locally_owned, locally_relevant;
+    AffineConstraints<double>               constraints;
+    TrilinosWrappers::SparseMatrix          stiffness, mass;
+    TrilinosWrappers::MPI::Vector           cut_coupling;
+    LocalRefinement                         refinement;
+
+    void
+    assemble_cut_mass_coupling();
+  };
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,142 @@
+#ifndef fgimpact_probe_set_h
+#define fgimpact_probe_set_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/plate/plate_model.h>
+
+#include <array>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * One named probe point of the entry Output/Probe points: each
+   * coordinate either in mm or, with the suffix a (x), b (y) or h (z), as a
+   * fraction of the plate's length, width or thickness.
+   */
+  struct ProbePoint
+  {
+    std::string           name;
+    std::array<double, 3> value{};    // mm, or a fraction
+    std::array<bool, 3>   fraction{}; // value is a fraction of a, b, h
+
+    /// The point (m) on the plate a x b x h (m).
+    Point<3>
+    location(const double a, const double b, const double h) const;
+  };
+
+  /**
+   * The entry "Probe points" of subsection Output:
+   * `name: x, y, z; name2: x, y, z` (see declare_parameters()).  Parsing
+   * checks the syntax; validate() checks that every point lies in the
+   * plate.  Both throw a one-line error naming the entry.
+   */
+  struct ProbePoints
+  {
+    std::vector<ProbePoint> points;
+
+    /// Declares the entry in the current subsection (Output).
+    static void
+    declare_parameters(ParameterHandler &prm);
+    /// Reads the entry from the current subsection (Output).
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /// The points of a `name: x, y, z; ...` list (throws on bad syntax).
+    static std::vector<ProbePoint>
+    parse(const std::string &text);
+
+    /// Throws if a point lies outside the plate a x b x h (m).
+    void
+    validate(const double a, const double b, const double h) const;
+  };
+
+
+
+  /// Everything a ProbeSet measures at one time, in SI units.
+  struct ProbeValues
+  {
+    std::vector<Tensor<1, 3>>          displacement; // m, per point
+    std::vector<Tensor<1, 3>>          velocity;     // m/s
+    std::vector<Tensor<1, 3>>          acceleration; // m/s^2
+    std::vector<SymmetricTensor<2, 3>> stress;       // Pa, recovered
+    /// z component of the supports' total force on the plate (N, +z).
+    double support_reaction_z = 0;
+  };
+
+
+
+  /**
+   * Probes at any points of the plate: displacement, velocity and
+   * acceleration, the recovered (nodal-averaged) stress exactly as
+   * StressRecovery gives it (interpolated from the nodes of the cell that
+   * contains the point, averaged over the cells on a face, edge or vertex),
+   * and the total support reaction in z.  Every quantity is a linear
+   * functional of u, v or a with weights computed once, so a time step
+   * costs a few dot products and one all-reduce (collective under MPI:
+   * every rank must call evaluate()).
+   *
+   * The support reaction is the sum over the Dirichlet-constrained z DoFs
+   * of (K u + M a - f)_i with the unconstrained K and M, i.e. the force
+   * the supports exert on the plate (positive up).  For a lumped mass
+   * (explicit scheme, whose constrained DoFs have no mass) the M a part
+   * is zero.
+   */
+  class ProbeSet
+  {
+  public:
+    ProbeSet(const PlateModel &plate, const std::vector<ProbePoint> &points);
+
+    /// Collective.  lumped_mass: the M a part of the reaction is zero.
+    ProbeValues
+    evaluate(const TrilinosWrappers::MPI::Vector &u,
+             const TrilinosWrappers::MPI::Vector &v,
+             const TrilinosWrappers::MPI::Vector &a,
+             const bool                           lumped_mass) const;
+
+    /// The columns of probes.csv: name (with unit) and decimals.
+    std::vector<std::pair<std::string, int>>
+    columns() const;
+
+    /// A row of probes.csv at time t (s), in the units of columns().
+    std::vector<double>
+    row(const double t, const ProbeValues &values) const;
+
+    const std::vector<Point<3>> &
+    locations() const
+    {
+      return points;
+    }
+
+  private:
+    using Weights = std::vector<std::pair<types::global_dof_index, double>>;
+
+    void
+    setup_point_weights(const PlateModel &plate);
+    void
+    setup_stress_weights(const PlateModel &plate);
+    void
+    setup_reaction_weights(const PlateModel &plate);
+
+    MPI_Comm                 mpi_communicator;
+    std::vector<std::string> names;
+    std::vector<Point<3>>    points;
+    /// Per point: the 3 displacement components, then the 6 recovered
+    /// stress components xx, yy, zz, xy, xz, yz (Pa per m).
+    std::vector<std::array<Weights, 9>> weights;
+    /// The reaction's stiffness (on u) and mass (on a) parts.
+    Weights reaction_stiffness, reaction_mass;
+  };
+} // namespace fgimpact
+
+#endif

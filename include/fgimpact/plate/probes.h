@@ -1,0 +1,80 @@
+#ifndef fgimpact_probes_h
+#define fgimpact_probes_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/plate/plate_model.h>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /// The locally owned cells that contain location (within 1e-10 of their
+  /// size) and the point in each one's unit cell; on a face, edge or
+  /// vertex there are several, possibly on several ranks.
+  std::vector<std::pair<DoFHandler<3>::active_cell_iterator, Point<3>>>
+  locally_owned_cells_containing(const PlateModel &plate,
+                                 const Point<3>   &location);
+
+  /// The nonzero entries of a distributed vector at this rank's DoFs.
+  std::vector<std::pair<types::global_dof_index, double>>
+  owned_nonzeros(const PlateModel                    &plate,
+                 const TrilinosWrappers::MPI::Vector &vector);
+
+  /**
+   * Displacement and stress at a fixed point of the plate as linear
+   * functionals of the DoF vector, with the weights computed once (no mesh
+   * search in the time loop).  At a point on element boundaries, where the
+   * Q_p stress is discontinuous, the stress is the average over all cells
+   * that contain the point; E there is the graded interpolant or the
+   * element value, as in the assembly.
+   *
+   * Under MPI each rank keeps the weights of the DoFs it owns, and an
+   * evaluation is a local sum plus one small all-reduce (collective: every
+   * rank must call it).
+   */
+  class PointProbe
+  {
+  public:
+    PointProbe(const PlateModel &plate, const Point<3> &location);
+
+    const Point<3> &
+    location() const
+    {
+      return point;
+    }
+
+    /// Displacement (m).
+    Tensor<1, 3>
+    displacement(const TrilinosWrappers::MPI::Vector &u) const;
+
+    /// Cauchy stress (Pa).
+    SymmetricTensor<2, 3>
+    stress(const TrilinosWrappers::MPI::Vector &u) const;
+
+  private:
+    using Weights = std::vector<std::pair<types::global_dof_index, double>>;
+
+    /// The N functionals at u, on every rank (collective).
+    template <std::size_t N>
+    std::array<double, N>
+    apply(const std::array<Weights, N>        &weights,
+          const TrilinosWrappers::MPI::Vector &u) const;
+
+    Point<3>               point;
+    MPI_Comm               mpi_communicator;
+    std::array<Weights, 3> displacement_weights;
+    /// Independent stress components in the order xx, yy, zz, yz, xz, xy.
+    std::array<Weights, 6> stress_weights;
+  };
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,155 @@
+#ifndef fgimpact_stress_recovery_h
+#define fgimpact_stress_recovery_h
+
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/plate/plate_model.h>
+
+#include <array>
+#include <map>
+#include <string>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * Whether the stress or strain component s (order xx, yy, zz, xy, xz,
+   * yz) changes sign under the reflections across the cut planes in
+   * `planes` (bit d: the plane normal to axis d): exactly one of its
+   * indices is such a d.  On a cut plane such a component of a nodal
+   * average is zero, as the whole plate's average of both sides gives.
+   */
+  bool
+  odd_under_reflection(const unsigned int s, const unsigned int planes);
+
+  /**
+   * The scalar DoFs (of the locally owned and ghost cells) on the cut
+   * planes of Geometry/Symmetry, each with its bit mask of planes (bit 0:
+   * x = a/2, bit 1: y = b/2); empty for a whole plate.
+   */
+  std::map<types::global_dof_index, unsigned int>
+  dofs_on_cut_planes(const PlateGeometry &geometry,
+                     const DoFHandler<3> &scalar_dofs);
+
+
+
+  /**
+   * Continuous (recovered) stress and strain by nodal averaging: at every
+   * support point of the scalar element FE_Q(p) (the mesh vertices for
+   * p = 1), the average over the cells meeting there of each cell's strain
+   * and stress evaluated at that point.  E comes from the same
+   * PropertyInterpolator and the stress from the same HookeLaw as in the
+   * assembly and PointProbe, so at a vertex the recovered stress is the
+   * probe's value (the probe also averages over the adjacent cells).
+   *
+   * The fields live on a scalar DoFHandler on the plate's mesh (ghosted,
+   * ready for DataOut).  Field order: the stress components xx, yy, zz, xy,
+   * xz, yz (MPa), von Mises (MPa), the principal stresses
+   * sigma_1 >= sigma_2 >= sigma_3 (MPa), the strain components xx, yy, zz,
+   * xy, xz, yz (tensor components, dimensionless), and the peak over the
+   * recover() calls so far of von Mises and of |sigma_zz| (MPa).
+   *
+   * On a symmetric part (Geometry/Symmetry) the cut planes are inner
+   * planes of the whole plate: there the shear components that change sign
+   * under the reflection (xy, xz on x = a/2; xy, yz on y = b/2) are zero,
+   * as the whole plate's average over both sides gives.
+   *
+   * recover() is collective under MPI.
+   */
+  class StressRecovery
+  {
+  public:
+    enum Field : unsigned int
+    {
+      stress_xx,
+      stress_yy,
+      stress_zz,
+      stress_xy,
+      stress_xz,
+      stress_yz,
+      von_mises,
+      principal_1,
+      principal_2,
+      principal_3,
+      strain_xx,
+      strain_yy,
+      strain_zz,
+      strain_xy,
+      strain_xz,
+      strain_yz,
+      peak_von_mises,
+      peak_abs_stress_zz,
+      n_fields
+    };
+
+    explicit StressRecovery(const PlateModel &plate);
+
+    /// Recover all fields from the ghosted displacement u (m) and update
+    /// the peak fields.
+    void
+    recover(const TrilinosWrappers::MPI::Vector &u_ghosted);
+
+    /// The scalar DoFHandler the fields live on.
+    const DoFHandler<3> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    /// A field (ghosted), in the units above.
+    const TrilinosWrappers::MPI::Vector &
+    field(const Field f) const
+    {
+      return ghosted[f];
+    }
+
+    /// The name of a field as written to VTU (unit in the name).
+    static std::string
+    name(const Field f);
+
+    /// The recovered stress tensor (Pa) at a locally relevant scalar DoF.
+    SymmetricTensor<2, 3>
+    stress(const types::global_dof_index dof) const;
+
+  private:
+    /// sums: every locally owned cell's stress (MPa) and strain at its
+    /// scalar support points, added per scalar DoF (then compressed).
+    void
+    accumulate_cell_values(const TrilinosWrappers::MPI::Vector &u_ghosted);
+
+    /// The owned fields from the sums: averages (odd components zero on a
+    /// cut plane), von Mises, principal stresses and the peaks.
+    void
+    average_and_derive();
+
+    const PlateModel &plate;
+    DoFHandler<3>     dof_handler;
+    IndexSet          owned, relevant;
+    /// 1 / (number of cells sharing each owned scalar DoF).
+    TrilinosWrappers::MPI::Vector inverse_count;
+    /// Per-cell sums (writable ghosts), 6 stress + 6 strain components.
+    std::array<TrilinosWrappers::MPI::Vector, 12>       sums;
+    std::array<TrilinosWrappers::MPI::Vector, n_fields> owned_values;
+    std::array<TrilinosWrappers::MPI::Vector, n_fields> ghosted;
+    unsigned int                                        n_recovered = 0;
+    /// dofs_on_cut_planes() of the scalar DoFHandler.
+    std::map<types::global_dof_index, unsigned int> cut_planes;
+    /// The scalar field's hanging-node constraints: a hanging node's
+    /// recovered value is its parents' interpolation (a conforming field).
+    AffineConstraints<double> hanging;
+  };
+
+  /// The hanging-node constraints of a scalar DoFHandler on the plate's
+  /// mesh (empty without local refinement), closed, on the locally
+  /// relevant DoFs.
+  AffineConstraints<double>
+  scalar_hanging_constraints(const DoFHandler<3> &dof_handler);
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,163 @@
+#ifndef fgimpact_impact_driver_h
+#define fgimpact_impact_driver_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <fgimpact/app/parameters.h>
+#include <fgimpact/contact/contact_law.h>
+#include <fgimpact/contact/contact_model.h>
+#include <fgimpact/contact/impactor.h>
+#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/output/monitor.h>
+#include <fgimpact/plate/plate_model.h>
+#include <fgimpact/time/time_stepper.h>
+
+#include <memory>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * A problem type's driver, given the plate that all of them share:
+   * setup() builds and checks everything and writes no file; run()
+   * computes and writes the outputs.
+   */
+  class ProblemDriver
+  {
+  public:
+    virtual ~ProblemDriver() = default;
+
+    virtual void
+    setup() = 0;
+
+    virtual void
+    run() = 0;
+
+    /// Rank 0, after a failure that left no summary.txt behind (in set-up,
+    /// or in run() before its own outputs): summary.txt with status =
+    /// failed.  Throws ExcOutputFailure if it cannot be written.
+    virtual void
+    write_failed_summary(const std::string &status = "failed") const = 0;
+  };
+
+
+
+  /**
+   * The low-velocity impact (Problem type = impact), in the shape of
+   * step-18: setup() builds the contact model and the time stepper, run()
+   * records the initial state and calls do_timestep() until the end time.
+   * The plate and the ball are coupled only through the ContactModel; the
+   * ImpactMonitor watches the state and writes every output.
+   */
+  class ImpactDriver : public ProblemDriver
+  {
+  public:
+    ImpactDriver(const Parameters &parameters,
+                 const PlateModel &plate,
+                 const Timer      &total_timer);
+
+    void
+    setup() override;
+
+    void
+    run() override;
+
+    /// Every summary.txt key, with the set-up's entries (masses, DoFs,
+    /// contact constants) and time_reached_us = 0; nothing when the
+    /// monitor exists (it wrote its own) or when resuming (the run being
+    /// continued keeps its files).
+    void
+    write_failed_summary(const std::string &status = "failed") const override;
+
+    /// Subscribe to the history rows (before run()).
+    void
+    add_row_observer(const ImpactMonitor::RowObserver &observer);
+
+    /// Checkpoints: the parameters' text to store, and whether to resume
+    /// (before run()).
+    void
+    set_checkpointing(const CheckpointSettings &settings);
+
+    const ImpactResults &
+    get_results() const
+    {
+      return results;
+    }
+
+  private:
+    void
+    do_timestep();
+
+    /// The time step against the End time (refused if longer) and against
+    /// Hertz's contact duration (a log warning below 20 steps in it).
+    void
+    check_time_step() const;
+
+    /// One log line on what the contact's accuracy depends on: the mesh
+    /// dependence of hertz node; a resolved sphere whose estimated contact
+    /// radius spans fewer than contact_elements_per_radius elements.
+    void
+    note_contact_resolution();
+
+    /// Restore the state of the checkpoint in the output directory (the
+    /// driver's part; the monitor reads the rest); returns its reader.
+    std::unique_ptr<CheckpointReader>
+    load_checkpoint();
+
+    /// Write a checkpoint after step `step` (collective): -1 if an output
+    /// write failed on some rank (kept in the monitor), else 0.
+    int
+    write_checkpoint(const unsigned int step);
+
+    /// At the end: one line on the checkpoints written (with timing).
+    void
+    report_checkpoints(const double loop_time) const;
+
+    /// Create the monitor (it opens the output files; on resume it
+    /// continues them) with its observers and contact output; every rank
+    /// stops if rank 0 could not open them.
+    void
+    open_monitor(CheckpointReader *resume);
+
+    /// After a failure in the time loop: summary.txt with status = failed
+    /// (best effort: errors here are swallowed, the first one counts).
+    void
+    finish_failed_run(const unsigned int steps_done, const double loop_time);
+
+    /// Collective: if an output write failed on any rank, finish the run
+    /// as failed and throw ExcOutputFailure with the first failing rank's
+    /// message on every rank.
+    void
+    stop_on_output_failure(const unsigned int steps_done,
+                           const double       loop_time);
+
+    const Parameters  &parameters;
+    const PlateModel  &plate;
+    const Timer       &total_timer;
+    ConditionalOStream pcout;
+    const Impactor     impactor;
+    HertzContactLaw    contact_law;
+    ImpactResults      results;
+
+    std::unique_ptr<ContactModel>           contact;
+    std::unique_ptr<TimeStepper>            stepper;
+    std::unique_ptr<ImpactMonitor>          monitor;
+    std::vector<ImpactMonitor::RowObserver> observers;
+
+    CheckpointSettings checkpoint_settings;
+    unsigned int       n_checkpoints    = 0;
+    double             checkpoint_time  = 0; // s, all checkpoints
+    std::size_t        checkpoint_bytes = 0; // of rank 0's last one
+
+    ImpactorState ball;
+    ContactState  contact_state;
+    double        dt       = 0;
+    unsigned int  n_steps  = 0;
+    unsigned int  timestep = 0;
+  };
+} // namespace fgimpact
+
+#endif

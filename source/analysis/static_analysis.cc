@@ -1,0 +1,304 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <fgimpact/analysis/static_analysis.h>
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/contact/compliance.h>
+#include <fgimpact/contact/contact_law.h>
+#include <fgimpact/contact/resolved_contact.h>
+#include <fgimpact/output/output_files.h>
+#include <fgimpact/output/postprocessing.h>
+#include <fgimpact/plate/probes.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+
+namespace fgimpact
+{
+  void
+  StaticAnalysis::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Static");
+    {
+      prm.declare_entry("Load",
+                        "sinusoidal",
+                        Patterns::Selection("sinusoidal|uniform|point|sphere"),
+                        "Load on the top face, downward: sinusoidal = "
+                        "q0 sin(pi x/a) sin(pi y/b) (exact 3D solution exists "
+                        "for simply supported plates), uniform = q0, point = "
+                        "a force P at the top node nearest to the impact "
+                        "point, sphere = the rigid impactor (Impactor/Radius) "
+                        "pressed Indentation deep at the impact point, in "
+                        "frictionless unilateral contact (as Contact/Model = "
+                        "resolved sphere; refine with Geometry/Contact "
+                        "refinement levels).");
+      prm.declare_entry("Indentation",
+                        "1e-5",
+                        Patterns::Double(0., 1.),
+                        "Load = sphere: how far the sphere's lowest point is "
+                        "pushed below the undeformed top face. Unit: m.");
+      prm.declare_entry("Pressure",
+                        "1e6",
+                        Patterns::Double(-1e12, 1e12),
+                        "Amplitude q0 of the sinusoidal or uniform pressure. "
+                        "Unit: Pa.");
+      prm.declare_entry("Point force",
+                        "1000",
+                        Patterns::Double(-1e12, 1e12),
+                        "Point force P of Load = point. Unit: N.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  StaticAnalysis::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Static");
+    {
+      const std::string l = prm.get("Load");
+      load                = (l == "sinusoidal" ? Load::sinusoidal :
+                             l == "uniform"    ? Load::uniform :
+                             l == "point"      ? Load::point :
+                                                 Load::sphere);
+      indentation         = prm.get_double("Indentation");
+      pressure            = prm.get_double("Pressure");
+      point_force         = prm.get_double("Point force");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  StaticAnalysis::StaticAnalysis(
+    const Parameters                        &parameters,
+    const EffectiveMatrixSolver::Parameters &solver,
+    const PlateModel                        &plate,
+    const Point<2>                          &load_point,
+    const SphereIndenter                    &indenter)
+    : parameters(parameters)
+    , solver_parameters(solver)
+    , plate(plate)
+    , load_point(load_point)
+    , indenter(indenter)
+  {}
+
+
+
+  void
+  StaticAnalysis::assemble_load(TrilinosWrappers::MPI::Vector &f) const
+  {
+    plate.initialize_vector(f);
+    if (parameters.load == Load::point)
+      {
+        const auto dof = plate.nearest_top_vertex_dof(load_point, 2).first;
+        if (plate.locally_owned_dofs().is_element(dof))
+          f(dof) = -parameters.point_force *
+                   plate.get_geometry().share(); // a symmetric part's share
+        f.compress(VectorOperation::insert);
+        return;
+      }
+
+    const auto                          &fe = plate.get_fe();
+    const double                         a  = plate.get_geometry().length();
+    const double                         b  = plate.get_geometry().width();
+    const QGauss<2>                      quadrature(fe.degree + 2);
+    FEFaceValues<3>                      fe_face(plate.get_mapping(),
+                            fe,
+                            quadrature,
+                            update_values | update_quadrature_points |
+                              update_JxW_values);
+    Vector<double>                       cell_f(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const auto face : cell->face_indices())
+          if (cell->face(face)->at_boundary() &&
+              cell->face(face)->boundary_id() == 5) // top, z = h
+            {
+              fe_face.reinit(cell, face);
+              cell_f = 0;
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                {
+                  const Point<3> &p = fe_face.quadrature_point(q);
+                  const double    q_load =
+                    parameters.pressure *
+                    (parameters.load == Load::sinusoidal ?
+                       std::sin(M_PI * p[0] / a) * std::sin(M_PI * p[1] / b) :
+                       1.);
+                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                    if (fe.system_to_component_index(i).first == 2)
+                      cell_f(i) -=
+                        q_load * fe_face.shape_value(i, q) * fe_face.JxW(q);
+                }
+              cell->get_dof_indices(dofs);
+              plate.get_constraints().distribute_local_to_global(cell_f,
+                                                                 dofs,
+                                                                 f);
+            }
+    f.compress(VectorOperation::add);
+  }
+
+
+
+  void
+  StaticAnalysis::solve_indentation(EffectiveMatrixSolver &solver)
+  {
+    const double          R     = indenter.radius;
+    const double          delta = parameters.indentation;
+    ResolvedSphereContact contact(
+      plate,
+      R,
+      load_point,
+      indenter.candidate_radius > 0. ? indenter.candidate_radius :
+                                       1.5 * std::sqrt(R * delta),
+      indenter.paraboloid_gap ? ResolvedSphereContact::GapShape::paraboloid :
+                                ResolvedSphereContact::GapShape::sphere,
+      top_face_modulus(plate.get_material(), plate.get_geometry().thickness()));
+    // The sphere is displacement-driven: w = delta, no ball compliance.
+    // A contact that reaches the candidate set's edge grows the set.
+    FullMatrix<double> C;
+    ContactState       state;
+    for (;;)
+      {
+        compute_compliance(solver, plate, contact.contact_dofs(), C, nullptr);
+        contact.solve_implicit(Vector<double>(contact.contact_dofs().size()),
+                               C,
+                               delta,
+                               0.,
+                               NewtonControl(),
+                               state);
+        if (!state.candidates_exhausted)
+          break;
+        AssertThrow(contact.grow_candidates(),
+                    ExcMessage("Static/Indentation: the contact reaches the "
+                               "sphere's radius; reduce the indentation, or "
+                               "raise Geometry/Contact refinement levels if "
+                               "the elements under the ball are coarser "
+                               "than the contact radius."));
+      }
+    const auto &dofs        = contact.contact_dofs();
+    results.contact_force   = state.force / plate.get_geometry().share();
+    results.contact_radius  = state.contact_radius;
+    results.max_pressure    = state.max_pressure;
+    results.n_contact_nodes = state.n_active;
+    results.node_radius     = contact.candidate_radii();
+    results.node_pressure.resize(dofs.size());
+    for (unsigned int j = 0; j < dofs.size(); ++j)
+      results.node_pressure[j] = state.forces[j] / contact.candidate_areas()[j];
+
+    // u = K^{-1} (-sum_j lambda_j g_j): one more solve.
+    TrilinosWrappers::MPI::Vector f;
+    plate.initialize_vector(f);
+    for (unsigned int j = 0; j < dofs.size(); ++j)
+      if (f.locally_owned_elements().is_element(dofs[j]))
+        f(dofs[j]) = -state.forces[j];
+    f.compress(VectorOperation::insert);
+    solver.solve(u, f);
+  }
+
+
+
+  void
+  StaticAnalysis::solve()
+  {
+    plate.initialize_vector(u);
+    EffectiveMatrixSolver solver(solver_parameters);
+    solver.initialize(plate.stiffness_matrix());
+    if (parameters.load == Load::sphere)
+      solve_indentation(solver);
+    else
+      {
+        TrilinosWrappers::MPI::Vector f;
+        assemble_load(f);
+        solver.solve(u, f);
+      }
+    plate.get_constraints().distribute(u);
+
+    const double h = plate.get_geometry().thickness();
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        const PointProbe probe(plate, plate.get_geometry().centre(0.5 * k * h));
+        const SymmetricTensor<2, 3> sigma = probe.stress(u);
+        results.deflection[k]             = -probe.displacement(u)[2];
+        results.sigma_xx[k]               = sigma[0][0];
+        results.sigma_yy[k]               = sigma[1][1];
+        results.sigma_zz[k]               = sigma[2][2];
+      }
+    results.n_dofs = plate.n_dofs();
+  }
+
+
+
+  void
+  StaticAnalysis::write_pressure_csv(const std::string &file_name) const
+  {
+    std::ofstream out(file_name);
+    out << "r_mm,pressure_MPa\n";
+    char line[64];
+    for (unsigned int j = 0; j < results.node_radius.size(); ++j)
+      {
+        std::snprintf(line,
+                      sizeof(line),
+                      "%.6f,%.6f\n",
+                      results.node_radius[j] * 1e3,
+                      results.node_pressure[j] * 1e-6);
+        out << line;
+      }
+    AssertThrow(out.good(),
+                ExcOutputFailure("cannot write " + file_name +
+                                 " (disk full or I/O error)."));
+  }
+
+
+
+  void
+  StaticAnalysis::write_output(
+    const std::string                                &directory,
+    const DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression,
+    const VtuFields                                  &fields) const
+  {
+    // Rank 0 writes, every rank learns the outcome before the collective
+    // VTU output (a failure on rank 0 alone must not leave rank 1 waiting).
+    run_on_root(plate.get_mpi_communicator(), [&]() {
+      SummaryWriter     out;
+      const std::string where[3] = {"bottom", "mid", "top"};
+      out.add_text("status", "completed");
+      for (unsigned int k = 0; k < 3; ++k)
+        out.add("static_deflection_" + where[k] + "_um",
+                results.deflection[k] * 1e6,
+                6);
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          out.add("sigma_xx_" + where[k] + "_MPa",
+                  results.sigma_xx[k] * 1e-6,
+                  6);
+          out.add("sigma_yy_" + where[k] + "_MPa",
+                  results.sigma_yy[k] * 1e-6,
+                  6);
+          out.add("sigma_zz_" + where[k] + "_MPa",
+                  results.sigma_zz[k] * 1e-6,
+                  6);
+        }
+      if (parameters.load == Load::sphere)
+        {
+          out.add("static_indentation_um", parameters.indentation * 1e6, 6);
+          out.add("static_contact_force_N", results.contact_force, 6);
+          out.add("contact_radius_mm", results.contact_radius * 1e3, 6);
+          out.add("max_contact_pressure_MPa", results.max_pressure * 1e-6, 6);
+          out.add("n_contact_nodes", results.n_contact_nodes, 0);
+          write_pressure_csv(directory + "/contact_pressure.csv");
+        }
+      out.add("n_dofs", results.n_dofs, 0);
+      out.write(directory + "/summary.txt");
+    });
+    TrilinosWrappers::MPI::Vector zero;
+    plate.initialize_vector(zero);
+    VtuWriter vtu(plate, directory, vtu_compression, fields);
+    vtu.write(0, 0., u, zero);
+    vtu.finish();
+  }
+} // namespace fgimpact

@@ -1,0 +1,530 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <fgimpact/app/input_file.h>
+#include <fgimpact/app/run_control.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <map>
+#include <regex>
+#include <sstream>
+
+namespace fgimpact
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+
+    /// Limits of what is taken for a parameter file.
+    constexpr std::uintmax_t max_file_size     = 16u << 20; // bytes
+    constexpr unsigned int   max_include_depth = 32;
+
+    bool
+    ends_with(const std::string &s, const std::string &end)
+    {
+      return s.size() >= end.size() &&
+             s.compare(s.size() - end.size(), end.size(), end) == 0;
+    }
+
+    /// All of in, but refusing more than max_file_size bytes (standard
+    /// input may be endless: /dev/zero).
+    std::string
+    read_all(std::istream &in, const std::string &what)
+    {
+      std::string text;
+      char        buffer[1 << 16];
+      while (in.read(buffer, sizeof(buffer)) || in.gcount() > 0)
+        {
+          text.append(buffer, in.gcount());
+          AssertThrow(text.size() <= max_file_size,
+                      ExcMessage(what + " is larger than 16 MiB."));
+        }
+      AssertThrow(!in.bad(), ExcMessage(what + " cannot be read."));
+      return text;
+    }
+
+    /// The text of a parameter file as given, refusing what is not a
+    /// regular, readable file of a sensible size.  what names the file
+    /// (and the line that includes it).
+    std::string
+    read_regular_file(const fs::path &filename, const std::string &what)
+    {
+      return read_named_file(filename.string(), what, "a parameter file");
+    }
+
+    /// Without a UTF-8 byte-order mark, Windows (CRLF) and old Mac (CR)
+    /// line ends made LF: the line numbers stay those of the file.
+    std::string
+    clean_text(const std::string &text)
+    {
+      const std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+      std::string       clean;
+      clean.reserve(text.size());
+      for (std::size_t i = start; i < text.size(); ++i)
+        if (text[i] != '\r')
+          clean += text[i];
+        else if (i + 1 == text.size() || text[i + 1] != '\n')
+          clean += '\n';
+      return clean;
+    }
+
+    std::string
+    join(const std::vector<std::string> &parts, const std::string &separator)
+    {
+      std::string joined;
+      for (std::size_t i = 0; i < parts.size(); ++i)
+        joined += (i ? separator : "") + parts[i];
+      return joined;
+    }
+
+    /// A line without its comment (deal.II's rule: from the first '#' not
+    /// escaped as "\#"), trimmed.
+    std::string
+    strip_comment(const std::string &line)
+    {
+      std::size_t pos = 0;
+      while ((pos = line.find('#', pos)) != std::string::npos && pos > 0 &&
+             line[pos - 1] == '\\')
+        ++pos;
+      return Utilities::trim(line.substr(0, pos));
+    }
+
+    /// Does line start with keyword (lower or upper case) and a blank?
+    bool
+    starts_with_keyword(const std::string &line, const std::string &keyword)
+    {
+      std::string upper = keyword;
+      for (char &c : upper)
+        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+      return line.size() > keyword.size() &&
+             (line.compare(0, keyword.size(), keyword) == 0 ||
+              line.compare(0, keyword.size(), upper) == 0) &&
+             std::isspace(static_cast<unsigned char>(line[keyword.size()]));
+    }
+
+    /// Every declared entry and subsection, by full path ("A/B/name").
+    struct DeclaredNames
+    {
+      std::map<std::string, std::vector<std::string>> entries;
+      std::vector<std::string>                        subsections;
+    };
+
+    DeclaredNames
+    declared_names(const ParameterHandler &prm)
+    {
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::ShortPRM);
+      DeclaredNames            names;
+      std::vector<std::string> path;
+      std::istringstream       in(text.str());
+      for (std::string line; std::getline(in, line);)
+        {
+          line = strip_comment(line);
+          if (starts_with_keyword(line, "subsection"))
+            {
+              path.push_back(Utilities::trim(line.substr(10)));
+              names.subsections.push_back(join(path, "/"));
+            }
+          else if (line == "end" && !path.empty())
+            path.pop_back();
+          else if (starts_with_keyword(line, "set"))
+            {
+              std::vector<std::string> components = path;
+              components.push_back(
+                Utilities::trim(line.substr(3, line.find('=') - 3)));
+              names.entries[join(components, "/")] = components;
+            }
+        }
+      return names;
+    }
+
+    std::string
+    lower(std::string s)
+    {
+      for (char &c : s)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      return s;
+    }
+
+    /// Edit distance (insert, delete, substitute), ignoring case.
+    unsigned int
+    edit_distance(const std::string &a_in, const std::string &b_in)
+    {
+      const std::string         a = lower(a_in), b = lower(b_in);
+      std::vector<unsigned int> row(b.size() + 1);
+      for (unsigned int j = 0; j <= b.size(); ++j)
+        row[j] = j;
+      for (unsigned int i = 1; i <= a.size(); ++i)
+        {
+          unsigned int diagonal = row[0];
+          row[0]                = i;
+          for (unsigned int j = 1; j <= b.size(); ++j)
+            {
+              const unsigned int above = row[j];
+              row[j]                   = std::min({row[j] + 1,
+                                                   row[j - 1] + 1,
+                                                   diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+              diagonal                 = above;
+            }
+        }
+      return row[b.size()];
+    }
+
+    /// The candidate closest to given, if close enough to be a misspelling.
+    std::string
+    closest(const std::string              &given,
+            const std::vector<std::string> &candidates)
+    {
+      const unsigned int limit =
+        std::max<unsigned int>(2, static_cast<unsigned int>(given.size()) / 3);
+      std::string  best;
+      unsigned int best_distance = limit + 1;
+      for (const std::string &candidate : candidates)
+        {
+          const unsigned int d = edit_distance(given, candidate);
+          if (d < best_distance)
+            {
+              best          = candidate;
+              best_distance = d;
+            }
+        }
+      return best;
+    }
+
+    std::string
+    did_you_mean(const std::string &suggestion)
+    {
+      return suggestion.empty() ? "" : " (did you mean '" + suggestion + "'?)";
+    }
+
+    /**
+     * The suggestion for an undeclared entry `name` in subsection `path`:
+     * the closest entry of that subsection, else an entry of that name (or
+     * close to it) in another subsection, by full path.
+     */
+    std::string
+    suggest_entry(const DeclaredNames &names,
+                  const std::string   &path,
+                  const std::string   &name)
+    {
+      std::vector<std::string> here, full, last;
+      for (const auto &[full_path, components] : names.entries)
+        {
+          const std::string section =
+            full_path.substr(0, full_path.size() - components.back().size());
+          if (section == (path.empty() ? "" : path + "/"))
+            here.push_back(components.back());
+          full.push_back(full_path);
+          last.push_back(components.back());
+        }
+      std::string suggestion = closest(name, here);
+      if (suggestion.empty())
+        {
+          const std::string near = closest(name, last);
+          for (std::size_t i = 0; i < last.size() && !near.empty(); ++i)
+            if (last[i] == near)
+              return full[i];
+        }
+      return suggestion;
+    }
+
+    std::string
+    quoted_section(const std::string &path)
+    {
+      return path.empty() ? "at the top level" : "in subsection '" + path + "'";
+    }
+  } // namespace
+
+
+
+  std::string
+  read_named_file(const std::string &filename,
+                  const std::string &what,
+                  const std::string &kind)
+  {
+    std::error_code error;
+    const auto      status = fs::status(filename, error);
+    AssertThrow(fs::exists(status), ExcMessage(what + " does not exist."));
+    AssertThrow(!fs::is_directory(status),
+                ExcMessage(what + " is a directory, not " + kind + "."));
+    AssertThrow(fs::is_regular_file(status),
+                ExcMessage(what + " is not a regular file (a device, FIFO "
+                                  "or socket)."));
+    AssertThrow(fs::file_size(filename, error) <= max_file_size && !error,
+                ExcMessage(what + " is larger than 16 MiB."));
+    std::ifstream in(filename, std::ios::binary);
+    AssertThrow(in, ExcMessage(what + " cannot be opened for reading."));
+    return read_all(in, what);
+  }
+
+
+
+  InputFile::InputFile(const std::string &filename)
+    : name(filename == "-" ? std::string("standard input") : filename)
+    , xml_or_json(ends_with(filename, ".xml") || ends_with(filename, ".json"))
+  {
+    const std::string what = filename == "-" ?
+                               std::string("standard input") :
+                               "parameter file '" + filename + "'";
+    original_text          = filename == "-" ? read_all(std::cin, what) :
+                                               read_regular_file(filename, what);
+    if (xml_or_json)
+      expanded_text = clean_text(original_text);
+    else
+      {
+        std::vector<std::string> chain;
+        expand(name, clean_text(original_text), chain);
+      }
+  }
+
+
+
+  InputFile::InputFile(const std::string &name, const std::string &text)
+    : name(name == "-" ? std::string("standard input") : name)
+    , xml_or_json(ends_with(name, ".xml") || ends_with(name, ".json"))
+    , original_text(text)
+    , expanded_text(text)
+  {}
+
+
+
+  const std::string &
+  InputFile::input_name() const
+  {
+    return name;
+  }
+
+
+
+  const std::string &
+  InputFile::original() const
+  {
+    return original_text;
+  }
+
+
+
+  const std::string &
+  InputFile::expanded() const
+  {
+    return expanded_text;
+  }
+
+
+
+  void
+  InputFile::expand(const std::string        &filename,
+                    const std::string        &text,
+                    std::vector<std::string> &chain)
+  {
+    // Includes of standard input are relative to the working directory.
+    const bool     is_stdin = (filename == "standard input");
+    const fs::path directory =
+      is_stdin ? fs::path() : fs::path(filename).parent_path();
+    std::error_code error;
+    chain.push_back(is_stdin ? filename :
+                               fs::weakly_canonical(filename, error).string());
+    std::istringstream in(text);
+    unsigned int       line_number = 0;
+    for (std::string line; std::getline(in, line);)
+      {
+        ++line_number;
+        const std::string content = strip_comment(line);
+        if (!starts_with_keyword(content, "include"))
+          {
+            expanded_text += line + "\n";
+            origins.push_back({filename, line_number});
+            continue;
+          }
+        const std::string where =
+          filename + " line " + std::to_string(line_number) + ": ";
+        const fs::path included(Utilities::trim(content.substr(7)));
+        fs::path       resolved = included;
+        if (included.is_relative() && fs::exists(directory / included, error))
+          resolved = directory / included;
+        AssertThrow(fs::exists(resolved, error),
+                    ExcMessage(where + "the included file '" +
+                               included.string() +
+                               "' does not exist (looked in '" +
+                               (directory.empty() ? std::string(".") :
+                                                    directory.string()) +
+                               "' and the working directory)."));
+        const std::string canonical =
+          fs::weakly_canonical(resolved, error).string();
+        for (const std::string &open : chain)
+          AssertThrow(open != canonical,
+                      ExcMessage(where + "'" + included.string() +
+                                 "' is already being read: the file includes "
+                                 "itself (recursive include)."));
+        AssertThrow(chain.size() < max_include_depth,
+                    ExcMessage(where + "includes nested deeper than " +
+                               std::to_string(max_include_depth) + " files."));
+        const std::string included_text = read_regular_file(
+          resolved, where + "the included file '" + included.string() + "'");
+        expand(resolved.string(), clean_text(included_text), chain);
+      }
+    chain.pop_back();
+  }
+
+
+
+  void
+  InputFile::parse_into(ParameterHandler               &prm,
+                        const std::vector<std::string> &overrides) const
+  {
+    try
+      {
+        std::istringstream in(expanded_text);
+        if (ends_with(name, ".xml"))
+          prm.parse_input_from_xml(in);
+        else if (ends_with(name, ".json"))
+          prm.parse_input_from_json(in);
+        else
+          prm.parse_input(in, name);
+      }
+    catch (const ExceptionBase &e)
+      {
+        const std::string undeclared =
+          xml_or_json ? std::string() : find_undeclared_name(prm);
+        if (!undeclared.empty())
+          throw ExcMessage(undeclared);
+        // deal.II counts lines of the expanded text: name the true origin.
+        std::string      message = message_of(e);
+        std::smatch      match;
+        const std::regex line_of_file("Line <([0-9]+)> of file <[^>]*>:?");
+        if (std::regex_search(message, match, line_of_file))
+          {
+            const unsigned int n = std::stoul(match[1].str());
+            if (n >= 1 && n <= origins.size())
+              {
+                const Origin &o = origins[n - 1];
+                message         = match.prefix().str() + "line " +
+                          std::to_string(o.line) +
+                          (o.file == name ? "" : " of " + o.file) + ":" +
+                          match.suffix().str();
+              }
+          }
+        throw ExcMessage(message);
+      }
+    for (const std::string &assignment : overrides)
+      apply_override(prm, assignment);
+  }
+
+
+
+  std::string
+  InputFile::find_undeclared_name(const ParameterHandler &prm) const
+  {
+    const DeclaredNames      names = declared_names(prm);
+    std::vector<std::string> path;
+    std::istringstream       in(expanded_text);
+    unsigned int             index = 0;
+    for (std::string line; std::getline(in, line); ++index)
+      {
+        const std::string content = strip_comment(line);
+        const std::string where =
+          index < origins.size() ?
+            "line " + std::to_string(origins[index].line) +
+              (origins[index].file == name ? "" :
+                                             " of " + origins[index].file) +
+              ": " :
+            "";
+        const std::string here = join(path, "/");
+        if (starts_with_keyword(content, "subsection"))
+          {
+            const std::string section = Utilities::trim(content.substr(10));
+            path.push_back(section);
+            const std::string full = join(path, "/");
+            if (std::find(names.subsections.begin(),
+                          names.subsections.end(),
+                          full) == names.subsections.end())
+              {
+                std::vector<std::string> siblings;
+                for (const std::string &s : names.subsections)
+                  if (s.rfind(here.empty() ? "" : here + "/", 0) == 0 &&
+                      s.find('/', here.empty() ? 0 : here.size() + 1) ==
+                        std::string::npos)
+                    siblings.push_back(
+                      here.empty() ? s : s.substr(here.size() + 1));
+                return where + "no subsection '" + section + "' " +
+                       quoted_section(here) +
+                       did_you_mean(closest(section, siblings));
+              }
+          }
+        else if (content == "end" || content == "END")
+          {
+            if (!path.empty())
+              path.pop_back();
+          }
+        else if (starts_with_keyword(content, "set"))
+          {
+            const std::string entry =
+              Utilities::trim(content.substr(3, content.find('=') - 3));
+            const std::string full = here.empty() ? entry : here + "/" + entry;
+            if (names.entries.count(full) == 0)
+              return where + "no entry '" + entry + "' " +
+                     quoted_section(here) +
+                     did_you_mean(suggest_entry(names, here, entry));
+          }
+      }
+    return "";
+  }
+
+
+
+  void
+  apply_override(ParameterHandler  &prm,
+                 const std::string &assignment,
+                 const std::string &option)
+  {
+    const std::string what = option + " '" + assignment + "': ";
+    const auto        eq   = assignment.find('=');
+    AssertThrow(eq != std::string::npos,
+                ExcMessage(what + "expected \"Section/Entry=value\""));
+    const std::string path  = Utilities::trim(assignment.substr(0, eq));
+    const std::string value = Utilities::trim(assignment.substr(eq + 1));
+
+    const DeclaredNames names = declared_names(prm);
+    const auto          entry = names.entries.find(path);
+    if (entry == names.entries.end())
+      {
+        std::vector<std::string> all;
+        for (const auto &e : names.entries)
+          all.push_back(e.first);
+        std::string suggestion = closest(path, all);
+        if (suggestion.empty())
+          {
+            const auto slash = path.rfind('/');
+            suggestion       = suggest_entry(names,
+                                       "",
+                                       slash == std::string::npos ?
+                                               path :
+                                               path.substr(slash + 1));
+          }
+        throw ExcMessage(what + "no entry '" + path + "' is declared" +
+                         did_you_mean(suggestion));
+      }
+    const std::vector<std::string> &components = entry->second;
+    for (std::size_t i = 0; i + 1 < components.size(); ++i)
+      prm.enter_subsection(components[i]);
+    std::string error;
+    try
+      {
+        prm.set(components.back(), value);
+      }
+    catch (const ExceptionBase &e)
+      {
+        error = message_of(e);
+      }
+    for (std::size_t i = 0; i + 1 < components.size(); ++i)
+      prm.leave_subsection();
+    AssertThrow(error.empty(),
+                ExcMessage(what + "the value '" + value +
+                           "' is not allowed for " + path + ": " + error));
+  }
+} // namespace fgimpact

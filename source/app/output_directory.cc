@@ -1,0 +1,329 @@
+// The output directory: checked before the set-up, locked (one writer),
+// and cleaned of exactly the files an earlier run wrote.  Declared in
+// run_control.h.
+
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/output/monitor.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <filesystem>
+#include <map>
+#include <sys/file.h>
+#include <sys/statfs.h>
+#include <unistd.h>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /// Whether text[from, from + n) holds n decimal digits.
+    bool
+    digits(const std::string &text, const std::size_t from, const std::size_t n)
+    {
+      if (from + n > text.size())
+        return false;
+      for (std::size_t k = from; k < from + n; ++k)
+        if (text[k] < '0' || text[k] > '9')
+          return false;
+      return true;
+    }
+
+    /// Whether name is `prefix` + 5 digits (the step) + `suffix`, where a
+    /// suffix ".R.vtu" takes any number R >= 0 of digits (the rank).
+    bool
+    is_series_file(const std::string &name,
+                   const std::string &prefix,
+                   const std::string &suffix)
+    {
+      if (name.rfind(prefix, 0) != 0 || !digits(name, prefix.size(), 5))
+        return false;
+      const std::string rest = name.substr(prefix.size() + 5);
+      if (suffix != ".R.vtu")
+        return rest == suffix;
+      // ".<rank>.vtu"
+      const std::size_t end = rest.size() - 4;
+      return rest.size() > 5 && rest[0] == '.' &&
+             rest.compare(end, 4, ".vtu") == 0 && digits(rest, 1, end - 1);
+    }
+
+    /**
+     * The files this program writes into the output directory, by their
+     * exact names (a user's solution_report.vtu or sphere_mine.vtu is
+     * not one): the fixed names, and the series with a 5-digit step and,
+     * for pieces, the rank.
+     */
+    bool
+    is_own_output(std::string name)
+    {
+      const auto ends_with = [](const std::string &s, const std::string &end) {
+        return s.size() >= end.size() &&
+               s.compare(s.size() - end.size(), end.size(), end) == 0;
+      };
+      if (ends_with(name, ".tmp"))
+        name.resize(name.size() - 4);
+      // log.txt too: the cleaning happens before this run opens its own.
+      if (name == "history.csv" || name == "probes.csv" ||
+          name == "summary.txt" || name == "parameters.prm" ||
+          name == "frequencies.csv" || name == "solution.pvd" ||
+          name == "log.txt" || name == "input.prm" || name == "sphere.pvd" ||
+          name == "contact.pvd" || name == "contact_pressure.csv" ||
+          name == "peak_fields.pvtu" || name == "study.csv")
+        return true;
+      // peak_fields.R.vtu
+      if (name.rfind("peak_fields.", 0) == 0 && ends_with(name, ".vtu") &&
+          name.size() > 16 && digits(name, 12, name.size() - 16))
+        return true;
+      return is_series_file(name, "solution_", ".pvtu") ||
+             is_series_file(name, "solution_", ".R.vtu") ||
+             is_series_file(name, "sphere_", ".vtu") ||
+             is_series_file(name, "contact_", ".vtu");
+    }
+
+    /// A checkpoint's own file: rank_DDDD.bin (or its temporary).
+    bool
+    is_checkpoint_file(const std::string &name)
+    {
+      return name.rfind("rank_", 0) == 0 && digits(name, 5, 4) &&
+             (name.substr(9) == ".bin" || name.substr(9) == ".bin.tmp");
+    }
+
+    /**
+     * Remove an earlier run's checkpoint directory: its rank files only,
+     * then the directory if that left it empty (a user's file in it
+     * stays, and so does the directory).
+     */
+    void
+    remove_checkpoint_directory(const std::filesystem::path &directory)
+    {
+      namespace fs = std::filesystem;
+      std::error_code error;
+      for (const auto &entry : fs::directory_iterator(directory, error))
+        if (entry.is_regular_file() &&
+            is_checkpoint_file(entry.path().filename().string()))
+          {
+            fs::remove(entry.path(), error);
+            AssertThrow(!error,
+                        ExcMessage("Output/Directory: cannot remove the "
+                                   "earlier run's " +
+                                   entry.path().string() + ": " +
+                                   error.message()));
+          }
+      if (fs::is_empty(directory, error))
+        fs::remove(directory, error);
+    }
+
+    /// Close fd (a lock file another process holds) and throw the one
+    /// line naming the directory and the holder's process id (in the file).
+    [[noreturn]] void
+    refuse_busy(const std::string &directory, const int fd)
+    {
+      char          pid[32] = {};
+      const ssize_t n       = ::read(fd, pid, sizeof(pid) - 1);
+      ::close(fd);
+      AssertThrow(false,
+                  ExcMessage("Output/Directory '" + directory +
+                             "' is in use by another fgimpact run (process "
+                             "id " +
+                             (n > 0 ? one_line(std::string(pid, n)) :
+                                      std::string("unknown")) +
+                             "); wait for it to end or choose another "
+                             "directory."));
+      std::abort(); // not reached
+    }
+
+    /// The lock files this process holds (directory -> descriptor): one
+    /// writer per output directory.
+    std::map<std::string, int> &
+    held_locks()
+    {
+      static std::map<std::string, int> locks;
+      return locks;
+    }
+  } // namespace
+
+
+
+  void
+  prepare_output_directory(const OutputParameters &output)
+  {
+    namespace fs                = std::filesystem;
+    const std::string directory = output.directory;
+    std::error_code   error;
+    fs::create_directories(directory, error);
+    AssertThrow(!error && fs::is_directory(directory),
+                ExcMessage("Output/Directory '" + directory +
+                           "' cannot be created: " + error.message()));
+
+    // One byte, written, closed and read back: an empty test file passes
+    // on a full disk.
+    const std::string probe = directory + "/.fgimpact_write_test";
+    bool              writable;
+    {
+      std::ofstream test(probe, std::ios::binary);
+      test.put('x');
+      test.close();
+      writable = !test.fail() && fs::file_size(probe, error) == 1 && !error;
+    }
+    fs::remove(probe, error);
+    AssertThrow(writable,
+                ExcMessage("Output/Directory '" + directory +
+                           "' is not writable (a one-byte test file could "
+                           "not be written: no permission or disk full)."));
+
+    std::vector<fs::path> own, foreign;
+    for (const auto &entry : fs::directory_iterator(directory, error))
+      if (entry.path().filename() != lock_file_name)
+        ((entry.is_regular_file() &&
+          is_own_output(entry.path().filename().string())) ||
+             (entry.is_directory() &&
+              is_checkpoint_directory(entry.path().filename().string())) ?
+           own :
+           foreign)
+          .push_back(entry.path());
+    // A checkpoint directory is replaced as a whole when a checkpoint is
+    // written: one that holds a file of the user's is refused, before
+    // anything is removed.
+    for (const auto &path : own)
+      if (fs::is_directory(path))
+        for (const auto &entry : fs::directory_iterator(path, error))
+          AssertThrow(entry.is_regular_file() &&
+                        is_checkpoint_file(entry.path().filename().string()),
+                      ExcMessage("Output/Directory '" + directory + "' holds " +
+                                 entry.path().string() +
+                                 ", which this program did not write, in the "
+                                 "directory it replaces with its checkpoints; "
+                                 "move it or choose another directory."));
+    if (!output.overwrite)
+      AssertThrow(own.empty() && foreign.empty(),
+                  ExcMessage("Output/Directory '" + directory +
+                             "' is not empty and Output/Overwrite = false; "
+                             "choose an empty directory or set Overwrite = "
+                             "true."));
+    // Exactly this program's files: no stale snapshot or summary of an
+    // earlier run survives next to the new ones.
+    for (const auto &file : own)
+      {
+        if (fs::is_directory(file))
+          {
+            remove_checkpoint_directory(file);
+            continue;
+          }
+        fs::remove(file, error);
+        AssertThrow(!error,
+                    ExcMessage("Output/Directory: cannot remove the earlier "
+                               "run's " +
+                               file.string() + ": " + error.message()));
+      }
+  }
+
+
+  const char *
+  signal_name(const int signal)
+  {
+    switch (signal)
+      {
+        case SIGINT:
+          return "SIGINT";
+        case SIGTERM:
+          return "SIGTERM";
+        case SIGHUP:
+          return "SIGHUP";
+        case SIGXFSZ:
+          return "SIGXFSZ";
+        default:
+          return "a signal";
+      }
+  }
+
+
+
+  void
+  check_output_directory_usable(const std::string &directory)
+  {
+    namespace fs = std::filesystem;
+    const std::string where =
+      "Output/Directory '" +
+      (directory.size() > 80 ? directory.substr(0, 80) + "..." : directory) +
+      "'";
+    AssertThrow(directory.size() <= 1024,
+                ExcMessage(where + " is longer than 1024 characters (" +
+                           std::to_string(directory.size()) + ")."));
+    // The directory, or the nearest ancestor that exists: a directory the
+    // program may write into, on a real file system.
+    std::error_code error;
+    fs::path        path = fs::absolute(directory, error);
+    for (;;)
+      {
+        const auto status = fs::status(path, error);
+        if (!error && fs::exists(status))
+          {
+            AssertThrow(fs::is_directory(status),
+                        ExcMessage(where + ": " + path.string() +
+                                   " is not a directory."));
+            break;
+          }
+        AssertThrow(!error || error == std::errc::no_such_file_or_directory,
+                    ExcMessage(where + " cannot be used: " + error.message() +
+                               "."));
+        AssertThrow(path.has_parent_path() && path != path.parent_path(),
+                    ExcMessage(where + " cannot be created."));
+        path = path.parent_path();
+      }
+    struct statfs file_system;
+    const bool    virtual_fs = ::statfs(path.c_str(), &file_system) == 0 &&
+                            (file_system.f_type == 0x9fa0 /* proc */ ||
+                             file_system.f_type == 0x62656572 /* sysfs */);
+    AssertThrow(!virtual_fs && ::access(path.c_str(), W_OK | X_OK) == 0,
+                ExcMessage(where + " is not writable (" + path.string() +
+                           (virtual_fs ? " is a virtual file system)." :
+                                         ": no permission).")));
+  }
+
+
+
+  void
+  check_output_directory_free(const std::string &directory)
+  {
+    const std::string name = directory + "/" + lock_file_name;
+    const int         fd   = ::open(name.c_str(), O_RDWR | O_CLOEXEC);
+    if (fd < 0)
+      return; // no lock file: nobody has run there (or it is not usable,
+              // which prepare_output_directory() reports)
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+      refuse_busy(directory, fd);
+    ::close(fd); // releases the probe's lock
+  }
+
+
+
+  void
+  lock_output_directory(const std::string &directory)
+  {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    fs::create_directories(directory, error);
+    const std::string key = fs::weakly_canonical(directory, error).string();
+    if (held_locks().count(key) > 0)
+      return; // this process holds it already (a study's directory)
+    const std::string name = directory + "/" + lock_file_name;
+    const int fd = ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    AssertThrow(fd >= 0,
+                ExcMessage("Output/Directory '" + directory +
+                           "': cannot create the lock file " + name + ": " +
+                           std::strerror(errno)));
+    if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+      refuse_busy(directory, fd);
+    // The holder's process id, for the message above; the kernel releases
+    // the lock when this process ends, however it ends.
+    const std::string pid = std::to_string(::getpid()) + "\n";
+    if (::ftruncate(fd, 0) != 0 || ::write(fd, pid.data(), pid.size()) < 0)
+      {
+        // The lock holds without the id.
+      }
+    held_locks()[key] = fd;
+  }
+} // namespace fgimpact

@@ -1,0 +1,455 @@
+#include <deal.II/lac/solver_control.h>
+
+#include <fgimpact/analysis/modal_analysis.h>
+#include <fgimpact/analysis/static_analysis.h>
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/app/simulator.h>
+#include <fgimpact/material/constitutive_law.h>
+#include <fgimpact/output/output_files.h>
+#include <fgimpact/output/postprocessing.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /// The static and modal drivers: nothing to set up beyond the plate.
+    class LinearProblemDriver : public ProblemDriver
+    {
+    public:
+      LinearProblemDriver(const Parameters &parameters, const PlateModel &plate)
+        : parameters(parameters)
+        , plate(plate)
+        , pcout(std::cout,
+                Utilities::MPI::this_mpi_process(
+                  plate.get_mpi_communicator()) == 0)
+      {}
+
+      void
+      setup() override
+      {}
+
+      /// Only the status and the problem size: the results do not exist.
+      void
+      write_failed_summary(const std::string &status) const override
+      {
+        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
+          return;
+        SummaryWriter out;
+        out.add_text("status", status);
+        out.add("n_dofs", plate.n_dofs(), 0);
+        out.write(parameters.output.directory + "/summary.txt");
+      }
+
+    protected:
+      /// Run solve(), turning a linear solver failure into one line that
+      /// names the phase and the parameter.
+      template <typename Solve>
+      void
+      solve_in_phase(const std::string &phase, const Solve &solve) const
+      {
+        try
+          {
+            solve();
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        ExcNumericalFailure(
+                          "the linear solver did not converge in the " + phase +
+                          " after " + std::to_string(e.last_step) +
+                          " iterations; raise Linear solver/Max iterations "
+                          "(now " +
+                          std::to_string(
+                            parameters.linear_solver.max_iterations) +
+                          ") or use Linear solver/Type = auto."));
+          }
+        catch (const ExcNumericalFailure &e)
+          {
+            // A factorization, or the modal iteration: name the phase.
+            AssertThrow(false,
+                        ExcNumericalFailure("in the " + phase + ": " +
+                                            message_of(e)));
+          }
+        stop_if_signalled(phase);
+      }
+
+      /// SIGINT/SIGTERM/SIGHUP during the solve (which cannot stop midway,
+      /// and the signal only set a flag): no results, summary.txt says
+      /// interrupted, RunInterrupted on every rank.
+      void
+      stop_if_signalled(const std::string &phase) const
+      {
+        const int stop = agreed_stop(plate.get_mpi_communicator(), false);
+        if (stop <= 0)
+          return;
+        write_failed_summary("interrupted");
+        throw RunInterrupted(stop,
+                             std::string("interrupted by ") +
+                               signal_name(stop) + " during the " + phase +
+                               "; no results written, summary.txt says "
+                               "status = interrupted; run it again.");
+      }
+
+      const Parameters  &parameters;
+      const PlateModel  &plate;
+      ConditionalOStream pcout;
+    };
+
+
+
+    /// Problem type = static: K u = f, deflections and stresses.
+    class StaticDriver : public LinearProblemDriver
+    {
+    public:
+      using LinearProblemDriver::LinearProblemDriver;
+
+      void
+      run() override
+      {
+        const Impactor       impactor(parameters.impactor);
+        const PlateGeometry &g = plate.get_geometry();
+        SphereIndenter       indenter;
+        indenter.radius           = impactor.radius();
+        indenter.candidate_radius = parameters.contact_model.candidate_radius;
+        indenter.paraboloid_gap   = parameters.contact_model.paraboloid_gap;
+        StaticAnalysis analysis(parameters.static_analysis,
+                                parameters.linear_solver,
+                                plate,
+                                impactor.impact_point(g.length(), g.width()),
+                                indenter);
+        solve_in_phase("static solve", [&]() { analysis.solve(); });
+        analysis.write_output(parameters.output.directory,
+                              parameters.output.vtu_compression,
+                              parameters.output.vtu_fields);
+        const auto &r = analysis.get_results();
+        char        line[300];
+        std::snprintf(line,
+                      sizeof(line),
+                      "  static deflection at the centre: bottom %.6f um, mid "
+                      "%.6f um, top %.6f um\n"
+                      "  sigma_xx at the centre: bottom %.4f MPa, mid %.4f "
+                      "MPa, top %.4f MPa\n",
+                      r.deflection[0] * 1e6,
+                      r.deflection[1] * 1e6,
+                      r.deflection[2] * 1e6,
+                      r.sigma_xx[0] * 1e-6,
+                      r.sigma_xx[1] * 1e-6,
+                      r.sigma_xx[2] * 1e-6);
+        pcout << line;
+        if (parameters.static_analysis.load == StaticAnalysis::Load::sphere)
+          {
+            std::snprintf(line,
+                          sizeof(line),
+                          "  sphere indentation %.4f um: force %.4f N, "
+                          "contact radius %.4f mm (%u nodes), max pressure "
+                          "%.3f MPa\n",
+                          parameters.static_analysis.indentation * 1e6,
+                          r.contact_force,
+                          r.contact_radius * 1e3,
+                          r.n_contact_nodes,
+                          r.max_pressure * 1e-6);
+            pcout << line;
+          }
+      }
+    };
+
+
+
+    /// Problem type = modal: the lowest natural frequencies and shapes.
+    class ModalDriver : public LinearProblemDriver
+    {
+    public:
+      using LinearProblemDriver::LinearProblemDriver;
+
+      void
+      run() override
+      {
+        ModalAnalysis analysis(parameters.modal,
+                               parameters.linear_solver,
+                               plate);
+        analysis.report_costs(parameters.output.print_timing);
+        solve_in_phase("modal subspace iteration", [&]() { analysis.solve(); });
+        analysis.write_output(parameters.output.directory,
+                              parameters.output.vtu_compression,
+                              parameters.output.vtu_fields);
+        pcout << "  " << analysis.get_modes().size() << " modes after "
+              << analysis.n_iterations() << " subspace iterations:\n";
+        for (unsigned int j = 0; j < analysis.get_modes().size(); ++j)
+          {
+            char line[120];
+            std::snprintf(line,
+                          sizeof(line),
+                          "  mode %2u  %12.4f Hz  w-energy fraction %.3f\n",
+                          j + 1,
+                          analysis.get_modes()[j].frequency,
+                          analysis.get_modes()[j].w_fraction);
+            pcout << line;
+          }
+      }
+    };
+  } // namespace
+
+
+
+  Simulator::Simulator(const Parameters &parameters,
+                       const MPI_Comm    mpi_communicator)
+    : parameters(parameters)
+    , mpi_communicator(mpi_communicator)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+  {}
+
+
+
+  void
+  Simulator::setup()
+  {
+    setup_plate();
+    switch (parameters.problem_type)
+      {
+        case ProblemType::impact:
+          {
+            auto impact =
+              std::make_unique<ImpactDriver>(parameters, *plate, total_timer);
+            for (const auto &observer : observers)
+              impact->add_row_observer(observer);
+            impact->set_checkpointing(checkpoint_settings);
+            driver = std::move(impact);
+            break;
+          }
+        case ProblemType::static_load:
+          driver = std::make_unique<StaticDriver>(parameters, *plate);
+          break;
+        case ProblemType::modal:
+          driver = std::make_unique<ModalDriver>(parameters, *plate);
+          break;
+      }
+    driver->setup();
+  }
+
+
+
+  const PlateModel &
+  Simulator::setup_plate()
+  {
+    total_timer.restart();
+    geometry = std::make_unique<PlateGeometry>(parameters.geometry);
+    material =
+      std::make_unique<FunctionallyGradedMaterial>(parameters.material,
+                                                   geometry->thickness());
+    // Refuse a run that cannot fit before the long set-up (the mesh).
+    const LocalRefinement refinement = contact_refinement();
+    resource_estimate = estimate_resources(parameters, refinement);
+    check_memory(parameters, resource_estimate, mpi_communicator);
+    plate = std::make_unique<PlateModel>(parameters.finite_element,
+                                         *geometry,
+                                         *material,
+                                         mpi_communicator);
+    plate->setup(refinement);
+
+    const PropertyMode mode = parameters.material.property_mode;
+    pcout << "fgimpact: FGM plate " << geometry->length() << " x "
+          << geometry->width() << " x " << geometry->thickness() << " m, "
+          << plate->n_active_cells() << " cells, " << plate->n_dofs()
+          << " DoFs (Q" << plate->get_fe().degree << ", "
+          << (mode == PropertyMode::graded      ? "graded" :
+              mode == PropertyMode::homogeneous ? "homogeneous" :
+                                                  "pointwise")
+          << " elements), n = " << parameters.material.power_law_index << '\n';
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(mpi_communicator);
+    const auto owned =
+      Utilities::MPI::min_max_avg(static_cast<double>(
+                                    plate->locally_owned_dofs().n_elements()),
+                                  mpi_communicator);
+    pcout << "  " << n_ranks << " MPI rank" << (n_ranks > 1 ? "s" : "")
+          << ", DoFs per rank min "
+          << static_cast<types::global_dof_index>(owned.min) << " / max "
+          << static_cast<types::global_dof_index>(owned.max) << '\n';
+    // Machine-dependent timings: only with them.
+    if (parameters.output.print_timing)
+      pcout << "  " << resource_estimate.describe() << '\n';
+    if (!parameters.accuracy.log_message.empty())
+      pcout << "  " << parameters.accuracy.log_message << '\n';
+    if (!parameters.geometry.symmetry_note.empty())
+      pcout << "  " << parameters.geometry.symmetry_note << '\n';
+    warn_sampled_boundary_layer();
+    if (refinement.levels > 0)
+      pcout << "  contact refinement: " << refinement.levels << " levels"
+            << (parameters.geometry.contact_refinement_auto ? " (auto)" : "")
+            << " within " << refinement.radius * 1e3
+            << " mm of the impact point, smallest element "
+            << plate->smallest_cell_size() * 1e6 << " um\n";
+    return *plate;
+  }
+
+
+
+  void
+  Simulator::warn_sampled_boundary_layer() const
+  {
+    const auto &m = parameters.material;
+    if (m.property_mode != PropertyMode::graded ||
+        m.graded_nodal_values != GradedNodalValues::sampled)
+      return;
+    const unsigned int layers = parameters.geometry.subdivisions_z;
+    const auto [error, layer] = sampled_layer_error(*material,
+                                                    geometry->thickness(),
+                                                    layers,
+                                                    plate->get_fe().degree);
+    if (error <= 0.25)
+      return;
+    char line[400];
+    std::snprintf(line,
+                  sizeof(line),
+                  "  WARNING: the graded elements' nodal samples of E(z) "
+                  "misread its average over the element layer z = %.3g .. "
+                  "%.3g mm by %.0f %% (a boundary layer thinner than an "
+                  "element); set Material/Graded nodal values = layer "
+                  "average (or Property mode = pointwise).\n",
+                  1e3 * geometry->thickness() * layer / layers,
+                  1e3 * geometry->thickness() * (layer + 1) / layers,
+                  100. * error);
+    pcout << line;
+  }
+
+
+
+  LocalRefinement
+  Simulator::contact_refinement() const
+  {
+    const Impactor       impactor(parameters.impactor);
+    const PlateGeometry &g = *geometry;
+    const Point<2>       p = impactor.impact_point(g.length(), g.width());
+    LocalRefinement      refinement;
+    refinement.centre = Point<3>(p[0], p[1], g.thickness());
+    const double a_max =
+      expected_contact_radius(parameters, *material, g.thickness());
+    refinement.levels =
+      parameters.geometry.contact_refinement_auto ?
+        automatic_contact_refinement_levels(parameters, a_max) :
+        parameters.geometry.contact_refinement_levels;
+    refinement.radius = (parameters.geometry.contact_refinement_radius > 0. ?
+                           parameters.geometry.contact_refinement_radius :
+                           1.5 * a_max);
+    return refinement;
+  }
+
+
+
+  unsigned int
+  automatic_contact_refinement_levels(const Parameters &parameters,
+                                      const double      contact_radius)
+  {
+    if (!parameters.uses_resolved_contact())
+      return 0;
+    // The fewest levels whose in-plane element size h0 / 2^L puts
+    // contact_elements_per_radius element sizes across the estimated
+    // largest contact radius (doc/contact.md derives the number).
+    const auto  &g = parameters.geometry;
+    const double h0 =
+      std::min(g.length / g.subdivisions_x, g.width / g.subdivisions_y);
+    unsigned int levels = 0;
+    while (levels < 12 &&
+           h0 / std::pow(2., levels) >
+             contact_radius / contact_elements_per_radius * (1. + 1e-12))
+      ++levels;
+    return levels;
+  }
+
+
+
+  double
+  expected_contact_radius(const Parameters                 &parameters,
+                          const FunctionallyGradedMaterial &material,
+                          const double                      thickness)
+  {
+    const Impactor impactor(parameters.impactor);
+    const double   R = impactor.radius();
+    if (parameters.problem_type == ProblemType::static_load &&
+        parameters.static_analysis.load == StaticAnalysis::Load::sphere)
+      return std::sqrt(R * parameters.static_analysis.indentation);
+    return hertz_impact_contact_radius(top_face_modulus(material, thickness),
+                                       R,
+                                       impactor.mass(),
+                                       impactor.initial_velocity());
+  }
+
+
+
+  void
+  Simulator::run()
+  {
+    if (!driver)
+      setup();
+    try
+      {
+        driver->run();
+      }
+    catch (const RunInterrupted &)
+      {
+        throw; // its summary.txt says interrupted already
+      }
+    catch (...)
+      {
+        // The impact driver writes its own failed summary once its outputs
+        // exist; otherwise summary.txt says failed here.
+        write_failed_summary();
+        throw;
+      }
+  }
+
+
+
+  void
+  Simulator::write_failed_summary(const std::string &status) const
+  {
+    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
+      return;
+    // Best effort: the failure being reported is the one that counts.
+    try
+      {
+        if (driver)
+          driver->write_failed_summary(status);
+        else
+          {
+            SummaryWriter out;
+            out.add_text("status", status);
+            out.write(parameters.output.directory + "/summary.txt");
+          }
+      }
+    catch (...)
+      {}
+  }
+
+
+
+  const ImpactResults &
+  Simulator::get_results() const
+  {
+    const auto *impact = dynamic_cast<const ImpactDriver *>(driver.get());
+    AssertThrow(impact != nullptr,
+                ExcMessage("Simulator::get_results(): not an impact run."));
+    return impact->get_results();
+  }
+
+
+
+  void
+  Simulator::add_history_observer(const ImpactMonitor::RowObserver &observer)
+  {
+    AssertThrow(!driver,
+                ExcMessage("add_history_observer() must precede setup()."));
+    observers.push_back(observer);
+  }
+
+
+
+  void
+  Simulator::set_checkpointing(const CheckpointSettings &settings)
+  {
+    checkpoint_settings = settings;
+  }
+} // namespace fgimpact

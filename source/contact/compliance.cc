@@ -1,0 +1,80 @@
+#include <fgimpact/contact/compliance.h>
+
+#include <algorithm>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /// One rank, cholmod: blocks of unit loads solved together (BLAS-3).
+    void
+    compliance_by_blocks(EffectiveMatrixSolver                      &solver,
+                         const PlateModel                           &plate,
+                         const std::vector<types::global_dof_index> &dofs,
+                         FullMatrix<double>                         &C,
+                         std::vector<TrilinosWrappers::MPI::Vector> *responses)
+    {
+      const unsigned int  m     = dofs.size();
+      const std::size_t   n     = plate.locally_owned_dofs().n_elements();
+      const unsigned int  block = 64;
+      std::vector<double> B, X;
+      for (unsigned int j0 = 0; j0 < m; j0 += block)
+        {
+          const unsigned int k = std::min(block, m - j0);
+          B.assign(n * k, 0.);
+          X.resize(n * k);
+          for (unsigned int c = 0; c < k; ++c)
+            B[c * n + dofs[j0 + c]] = 1.;
+          solver.solve_many(n, k, B.data(), X.data());
+          for (unsigned int c = 0; c < k; ++c)
+            {
+              const double *column = X.data() + c * n;
+              for (unsigned int i = 0; i < m; ++i)
+                C(i, j0 + c) = column[dofs[i]];
+              if (responses != nullptr)
+                {
+                  auto &r = (*responses)[j0 + c];
+                  plate.initialize_vector(r);
+                  std::copy(column, column + n, r.trilinos_vector()[0]);
+                }
+            }
+        }
+    }
+  } // namespace
+
+
+
+  void
+  compute_compliance(EffectiveMatrixSolver                      &solver,
+                     const PlateModel                           &plate,
+                     const std::vector<types::global_dof_index> &dofs,
+                     FullMatrix<double>                         &C,
+                     std::vector<TrilinosWrappers::MPI::Vector> *responses)
+  {
+    const unsigned int m = dofs.size();
+    C.reinit(m, m);
+    if (responses != nullptr)
+      responses->resize(m);
+    if (solver.can_solve_many())
+      {
+        compliance_by_blocks(solver, plate, dofs, C, responses);
+        return;
+      }
+    TrilinosWrappers::MPI::Vector g, c;
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        plate.initialize_vector(g);
+        plate.initialize_vector(c);
+        // Only the owner of the contact DoF writes.
+        if (g.locally_owned_elements().is_element(dofs[j]))
+          g(dofs[j]) = 1.;
+        g.compress(VectorOperation::insert);
+        solver.solve(c, g);
+        const Vector<double> column = plate.dof_values(c, dofs);
+        for (unsigned int i = 0; i < m; ++i)
+          C(i, j) = column[i];
+        if (responses != nullptr)
+          (*responses)[j].swap(c);
+      }
+  }
+} // namespace fgimpact

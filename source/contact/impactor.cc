@@ -1,0 +1,121 @@
+#include <fgimpact/contact/impactor.h>
+
+#include <cmath>
+#include <limits>
+
+namespace fgimpact
+{
+  void
+  Impactor::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Impactor");
+    {
+      prm.declare_entry("Radius",
+                        "0.015",
+                        Patterns::Double(1e-6, 10.),
+                        "Radius R of the spherical impactor. Unit: m.");
+      prm.declare_entry("Density",
+                        "7800",
+                        Patterns::Double(1e-3, 1e6),
+                        "Mass density rho_i of the impactor; its mass is "
+                        "4/3 pi R^3 rho_i unless 'Mass' is set. "
+                        "Unit: kg/m^3.");
+      prm.declare_entry("Mass",
+                        "0",
+                        Patterns::Double(0., 1e6),
+                        "Impactor mass given directly, overriding the one "
+                        "computed from radius and density; 0 = compute it. "
+                        "Unit: kg.");
+      prm.declare_entry("Initial velocity",
+                        "1",
+                        Patterns::Double(1e-9, 1e3),
+                        "Impact velocity V0 towards the plate (along -z), "
+                        "Eq. 2.16. Unit: m/s.");
+      prm.declare_entry("Impact point x",
+                        "-1",
+                        Patterns::Double(-1., 1e3),
+                        "x coordinate of the impact point on the top face; a "
+                        "negative value means the centre a/2. The contact "
+                        "force acts at the top-surface node nearest to it. "
+                        "Unit: m.");
+      prm.declare_entry("Impact point y",
+                        "-1",
+                        Patterns::Double(-1., 1e3),
+                        "y coordinate of the impact point; negative means "
+                        "b/2. Unit: m.");
+      prm.declare_entry("Material",
+                        "rigid",
+                        Patterns::Selection("rigid|elastic"),
+                        "rigid: Q_alpha = Q_zp (Eq. 2.7). elastic: "
+                        "1/Q_alpha = 1/Q_zi + 1/Q_zp (Eq. 2.6) with the "
+                        "impactor's Young's modulus and Poisson's ratio.");
+      prm.declare_entry("Young's modulus",
+                        "207e9",
+                        Patterns::Double(1e3, 1e15),
+                        "Young's modulus E_i of an elastic impactor. Unit: "
+                        "Pa.");
+      prm.declare_entry("Poisson's ratio",
+                        "0.3",
+                        Patterns::Double(-0.99, 0.49),
+                        "Poisson's ratio nu_i of an elastic impactor. "
+                        "Dimensionless.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  Impactor::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Impactor");
+    {
+      radius           = prm.get_double("Radius");
+      density          = prm.get_double("Density");
+      given_mass       = prm.get_double("Mass");
+      initial_velocity = prm.get_double("Initial velocity");
+      impact_x         = prm.get_double("Impact point x");
+      impact_y         = prm.get_double("Impact point y");
+      elastic          = (prm.get("Material") == "elastic");
+      youngs_modulus   = prm.get_double("Young's modulus");
+      poissons_ratio   = prm.get_double("Poisson's ratio");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  Impactor::Impactor(const Parameters &parameters)
+    : parameters(parameters)
+  {}
+
+
+
+  double
+  Impactor::mass() const
+  {
+    if (parameters.given_mass > 0.)
+      return parameters.given_mass;
+    return 4. / 3. * M_PI * std::pow(parameters.radius, 3) * parameters.density;
+  }
+
+
+
+  double
+  Impactor::indentation_modulus() const
+  {
+    if (!parameters.elastic)
+      return std::numeric_limits<double>::infinity();
+    return parameters.youngs_modulus /
+           (1. - parameters.poissons_ratio * parameters.poissons_ratio);
+  }
+
+
+
+  Point<2>
+  Impactor::impact_point(const double a, const double b) const
+  {
+    return Point<2>(parameters.impact_x < 0 ? a / 2 : parameters.impact_x,
+                    parameters.impact_y < 0 ? b / 2 : parameters.impact_y);
+  }
+} // namespace fgimpact

@@ -1,0 +1,329 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <fgimpact/contact/complementarity.h>
+#include <fgimpact/contact/resolved_contact.h>
+#include <fgimpact/output/results.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+namespace fgimpact
+{
+  ResolvedSphereContact::ResolvedSphereContact(const PlateModel &plate,
+                                               const double      sphere_radius,
+                                               const Point<2>   &impact_point,
+                                               const double   candidate_radius,
+                                               const GapShape gap_shape,
+                                               const double   reference_modulus,
+                                               const bool massless_candidates)
+    : plate(plate)
+    , impact_point(impact_point)
+    , R(sphere_radius)
+    , gap_shape(gap_shape)
+    , reference_modulus(reference_modulus)
+    , massless_candidates(massless_candidates)
+    , candidate_radius(std::min(candidate_radius, sphere_radius))
+    , share(plate.get_geometry().share())
+  {
+    build_candidates();
+  }
+
+
+
+  bool
+  ResolvedSphereContact::grow_candidates()
+  {
+    if (candidate_radius >= R)
+      return false; // the whole cap is a candidate already
+    candidate_radius = std::min(1.5 * candidate_radius, R);
+    build_candidates();
+    return true;
+  }
+
+
+
+  void
+  ResolvedSphereContact::save(CheckpointWriter &out) const
+  {
+    out.put(candidate_radius);
+    out.put(active);
+  }
+
+
+
+  void
+  ResolvedSphereContact::load(CheckpointReader &in)
+  {
+    double            radius = 0;
+    std::vector<bool> stored_active;
+    in.get(radius);
+    in.get(stored_active);
+    AssertThrow(radius == candidate_radius &&
+                  stored_active.size() == active.size(),
+                ExcMessage("the checkpoint's contact candidate set does not "
+                           "match this set-up"));
+    active = stored_active;
+  }
+
+
+
+  void
+  ResolvedSphereContact::build_candidates()
+  {
+    dofs.clear();
+    radii.clear();
+    points.clear();
+    collect_candidates(plate, impact_point, candidate_radius);
+    compute_areas(plate);
+    profile.resize(radii.size());
+    for (unsigned int j = 0; j < radii.size(); ++j)
+      profile[j] = (gap_shape == GapShape::sphere ?
+                      R - std::sqrt(R * R - radii[j] * radii[j]) :
+                      radii[j] * radii[j] / (2. * R));
+    active.assign(dofs.size(), false);
+    multiplicity.resize(points.size());
+    for (unsigned int j = 0; j < points.size(); ++j)
+      multiplicity[j] = plate.get_geometry().multiplicity(points[j]);
+  }
+
+
+
+  void
+  ResolvedSphereContact::collect_candidates(const PlateModel &plate,
+                                            const Point<2>   &impact_point,
+                                            const double      candidate_radius)
+  {
+    const auto  &dof_handler = plate.get_dof_handler();
+    const auto  &constraints = plate.get_constraints();
+    const double h           = plate.get_geometry().thickness();
+    std::map<types::global_dof_index, Point<3>> support;
+    DoFTools::map_dofs_to_support_points(plate.get_mapping(),
+                                         dof_handler,
+                                         support);
+    // (r, x, y, dof) of this rank's owned, unconstrained top-face z DoFs
+    // inside the candidate radius; sorted the same way on every partition.
+    using Candidate = std::array<double, 4>;
+    std::vector<Candidate>               local_z;
+    std::set<types::global_dof_index>    seen;
+    const auto                          &fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        {
+          cell->get_dof_indices(cell_dofs);
+          for (unsigned int k = 0; k < cell_dofs.size(); ++k)
+            {
+              const types::global_dof_index dof = cell_dofs[k];
+              if (fe.system_to_component_index(k).first != 2 ||
+                  !plate.locally_owned_dofs().is_element(dof) ||
+                  constraints.is_constrained(dof) || !seen.insert(dof).second)
+                continue;
+              const Point<3> &p = support.at(dof);
+              const double    r = Point<2>(p[0], p[1]).distance(impact_point);
+              if (std::abs(p[2] - h) <= 1e-9 * h && r <= candidate_radius)
+                local_z.push_back({{r, p[0], p[1], static_cast<double>(dof)}});
+            }
+        }
+
+    std::vector<Candidate> all;
+    for (const auto &part :
+         Utilities::MPI::all_gather(plate.get_mpi_communicator(), local_z))
+      all.insert(all.end(), part.begin(), part.end());
+    std::sort(all.begin(), all.end());
+    AssertThrow(!all.empty(),
+                ExcMessage(
+                  "Contact/Candidate radius: no unconstrained top-face "
+                  "node lies within " +
+                  std::to_string(candidate_radius * 1e3) +
+                  " mm of the impact point."));
+    for (const auto &c : all)
+      {
+        dofs.push_back(static_cast<types::global_dof_index>(c[3]));
+        radii.push_back(c[0]);
+        points.emplace_back(c[1], c[2], h);
+      }
+    smallest_spacing = (all.size() > 1 ? all[1][0] : 0.);
+  }
+
+
+
+  void
+  ResolvedSphereContact::compute_areas(const PlateModel &plate)
+  {
+    // A_j = int_top N_j dA, assembled like a unit pressure load (through
+    // the constraints, so hanging nodes pass their share to their masters).
+    const auto                   &fe = plate.get_fe();
+    const QGauss<2>               quadrature(fe.degree + 1);
+    FEFaceValues<3>               fe_face(plate.get_mapping(),
+                            fe,
+                            quadrature,
+                            update_values | update_JxW_values);
+    TrilinosWrappers::MPI::Vector area;
+    plate.initialize_vector(area);
+    Vector<double>                       cell_area(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == 5)
+            {
+              fe_face.reinit(cell, face);
+              cell_area = 0;
+              for (unsigned int q = 0; q < quadrature.size(); ++q)
+                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                  if (fe.system_to_component_index(i).first == 2)
+                    cell_area[i] +=
+                      fe_face.shape_value_component(i, q, 2) * fe_face.JxW(q);
+              cell->get_dof_indices(cell_dofs);
+              plate.get_constraints().distribute_local_to_global(cell_area,
+                                                                 cell_dofs,
+                                                                 area);
+            }
+    area.compress(VectorOperation::add);
+    const Vector<double> values = plate.dof_values(area, dofs);
+    areas.assign(values.begin(), values.end());
+  }
+
+
+
+  void
+  ResolvedSphereContact::solve_implicit(const Vector<double>     &u_free,
+                                        const FullMatrix<double> &C,
+                                        const double              w_free,
+                                        const double              c_b,
+                                        const NewtonControl &,
+                                        ContactState &state) const
+  {
+    const unsigned int m = dofs.size();
+    FullMatrix<double> A(C);
+    Vector<double>     q(m);
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        q[i] = profile[i] - w_free - u_free[i];
+        for (unsigned int j = 0; j < m; ++j)
+          A(i, j) += c_b;
+      }
+    Vector<double>      lambda;
+    const LcpStatistics statistics = solve_lcp(A, q, lambda, active);
+    // Not solved: the time stepper reports the step (as for Newton).
+    state.newton_iterations = statistics.converged ?
+                                statistics.iterations :
+                                numbers::invalid_unsigned_int;
+    state.forces.assign(lambda.begin(), lambda.end());
+    state.force = std::accumulate(lambda.begin(), lambda.end(), 0.);
+
+    // Gaps and the contact's extent.
+    Vector<double> g(m);
+    A.vmult(g, lambda);
+    g += q;
+    state.n_active       = 0;
+    state.contact_radius = 0;
+    state.max_pressure   = 0;
+    double smallest_gap  = std::numeric_limits<double>::max();
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        smallest_gap = std::min(smallest_gap, g[j]);
+        if (lambda[j] > 0.)
+          {
+            state.n_active += multiplicity[j];
+            state.max_pressure =
+              std::max(state.max_pressure, lambda[j] / areas[j]);
+          }
+      }
+    // The farthest node in contact (the discrete edge lies between it and
+    // the next node out; the circle of the active nodes' area would
+    // overestimate it by about half an element).
+    double farthest = 0;
+    for (unsigned int j = 0; j < m; ++j)
+      if (lambda[j] > 0.)
+        farthest = std::max(farthest, radii[j]);
+    state.contact_radius = farthest;
+    // The candidate set must contain the contact circle with a ring of
+    // inactive nodes to spare; otherwise the solution is that of a smaller
+    // sphere cap.
+    state.candidates_exhausted =
+      (state.n_active > 0 && farthest >= reach() - 0.5 * smallest_spacing);
+    state.node_displacement = u_free[0];
+    for (unsigned int k = 0; k < m; ++k)
+      state.node_displacement -= C(0, k) * lambda[k];
+    // The indentation column: while in contact the half-space Hertz
+    // approach (F/K)^{2/3}, K = 4/3 Q_ref sqrt(R), after separation minus
+    // the smallest gap; continuous through 0, so the monitor's zero
+    // crossing gives the separation time.  F is the whole plate's force
+    // (the forces here are the symmetric part's share of it).
+    const double K = 4. / 3. * reference_modulus * std::sqrt(R);
+    state.alpha =
+      (state.force > 0. ? std::pow(state.force / share / K, 2. / 3.) :
+                          -std::max(smallest_gap, 0.));
+  }
+
+
+
+  void
+  ResolvedSphereContact::evaluate_explicit(const Vector<double> &,
+                                           const double,
+                                           ContactState &) const
+  {
+    AssertThrow(false,
+                ExcMessage("Contact/Model = resolved sphere needs Time "
+                           "integration/Scheme = implicit."));
+  }
+
+
+
+  double
+  ResolvedSphereContact::stiffness_bound(const double, const double) const
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+
+
+
+  std::string
+  ResolvedSphereContact::description() const
+  {
+    std::ostringstream s;
+    s << "resolved rigid sphere, R = " << R * 1e3 << " mm, "
+      << (gap_shape == GapShape::sphere ? "spherical" : "paraboloid")
+      << " gap, " << dofs.size() << " candidate nodes within " << reach() * 1e3
+      << " mm (nearest neighbour " << smallest_spacing * 1e3 << " mm)";
+    return s.str();
+  }
+
+
+
+  std::string
+  ResolvedSphereContact::warning() const
+  {
+    if (radii.front() <= 1e-9 * R)
+      return "";
+    std::ostringstream s;
+    s << "note: no node lies at the impact point; the nearest is "
+      << radii.front() * 1e3 << " mm away";
+    return s.str();
+  }
+
+
+
+  void
+  ResolvedSphereContact::fill_results(ImpactResults &results) const
+  {
+    results.contact_modulus     = reference_modulus;
+    results.contact_stiffness   = 4. / 3. * reference_modulus * std::sqrt(R);
+    results.contact_node_offset = radii.front();
+    results.contact_node_owner  = 0;
+    results.n_contact_candidates =
+      std::accumulate(multiplicity.begin(), multiplicity.end(), 0u);
+  }
+} // namespace fgimpact

@@ -1,0 +1,296 @@
+#include <fgimpact/material/material.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+namespace fgimpact
+{
+  namespace
+  {
+    void
+    declare_gradation_parameters(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Ceramic Poisson's ratio",
+        "same",
+        Patterns::Anything(),
+        "Poisson's ratio nu_c of the ceramic (bottom face): 'same' (the "
+        "metal's, Poisson's ratio) or a number in [-0.99, 0.49]. With a "
+        "different value nu varies through the thickness. Dimensionless.");
+      prm.declare_entry(
+        "Gradation",
+        "power law",
+        Patterns::Selection("power law|exponential|sigmoid|tabulated"),
+        "How the properties vary with zeta = z/h (z from the bottom face; "
+        "metal on top). power law: metal volume fraction V_m = zeta^n "
+        "(Eq. 2.1). exponential: P = P_c exp(ln(P_m/P_c) zeta) for E and "
+        "rho, nu = nu_c + (nu_m - nu_c) zeta (Power-law index unused). "
+        "sigmoid: Chung & Chi's two power laws, V_m = (2 zeta)^n / 2 for "
+        "zeta <= 1/2, 1 - (2 - 2 zeta)^n / 2 above (n = Power-law index). "
+        "tabulated: E, nu, rho interpolated linearly in Profile file.");
+      prm.declare_entry(
+        "Homogenization",
+        "rule of mixtures",
+        Patterns::Selection("rule of mixtures|Mori-Tanaka"),
+        "How E and nu of the mixture follow from the metal volume fraction "
+        "(power law and sigmoid only). rule of mixtures: P = P_c + (P_m - "
+        "P_c) V_m for E, nu and rho. Mori-Tanaka: metal matrix with ceramic "
+        "inclusions, Mori-Tanaka bulk and shear moduli (nu then varies even "
+        "with equal constituent ratios); rho by the rule of mixtures.");
+      prm.declare_entry(
+        "Profile file",
+        "",
+        Patterns::FileName(),
+        "Gradation = tabulated: a CSV file with the columns z/h (from the "
+        "bottom face, strictly increasing from 0 to 1), E (Pa), nu and rho "
+        "(kg/m^3); '#' starts a comment, one header line is allowed. A "
+        "relative path is relative to the directory of the .prm given on "
+        "the command line (parameters.prm records it as an absolute path).");
+      prm.declare_entry(
+        "Graded nodal values",
+        "sampled",
+        Patterns::Selection("sampled|layer average"),
+        "Property mode = graded: the nodal values the elements interpolate. "
+        "sampled: the profile at the nodes (Eq. 3.3). layer average: the "
+        "element-wise L2 projection of the profile onto polynomials in z "
+        "of the element degree, so that each element keeps the exact "
+        "average of E, nu and rho over its thickness; a boundary layer "
+        "thinner than an element (n -> 0+) is then not misread "
+        "(doc/theory.md).");
+    }
+
+
+
+    void
+    parse_gradation_parameters(ParameterHandler                       &prm,
+                               FunctionallyGradedMaterial::Parameters &p)
+    {
+      const std::string nu_c = prm.get("Ceramic Poisson's ratio");
+      if (nu_c == "same")
+        p.ceramic_poissons_ratio = -2.;
+      else
+        {
+          std::size_t end   = 0;
+          double      value = 0;
+          try
+            {
+              value = std::stod(nu_c, &end);
+            }
+          catch (...)
+            {
+              end = 0;
+            }
+          AssertThrow(end > 0 && end == nu_c.size() && value >= -0.99 &&
+                        value <= 0.49,
+                      ExcMessage("Material/Ceramic Poisson's ratio = '" + nu_c +
+                                 "' is neither 'same' nor a number in "
+                                 "[-0.99, 0.49]."));
+          p.ceramic_poissons_ratio = value;
+        }
+      const std::string g = prm.get("Gradation");
+      p.gradation         = (g == "exponential" ? Gradation::exponential :
+                             g == "sigmoid"     ? Gradation::sigmoid :
+                             g == "tabulated"   ? Gradation::tabulated :
+                                                  Gradation::power_law);
+      p.homogenization    = prm.get("Homogenization") == "Mori-Tanaka" ?
+                              Homogenization::mori_tanaka :
+                              Homogenization::rule_of_mixtures;
+      p.profile_file      = prm.get("Profile file");
+      AssertThrow(p.gradation != Gradation::tabulated ||
+                    !p.profile_file.empty(),
+                  ExcMessage("Material/Gradation = tabulated needs "
+                             "Material/Profile file."));
+      p.graded_nodal_values = prm.get("Graded nodal values") == "sampled" ?
+                                GradedNodalValues::sampled :
+                                GradedNodalValues::layer_average;
+    }
+  } // namespace
+
+
+
+  void
+  FunctionallyGradedMaterial::Parameters::declare_parameters(
+    ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    {
+      prm.declare_entry("Metal Young's modulus",
+                        "70e9",
+                        Patterns::Double(1e3, 1e15),
+                        "Young's modulus E_m of the metal constituent, on top "
+                        "of the plate (z = h). Unit: Pa.");
+      prm.declare_entry("Metal density",
+                        "2707",
+                        Patterns::Double(1e-3, 1e6),
+                        "Mass density rho_m of the metal constituent. "
+                        "Unit: kg/m^3.");
+      prm.declare_entry("Ceramic Young's modulus",
+                        "380e9",
+                        Patterns::Double(1e3, 1e15),
+                        "Young's modulus E_c of the ceramic constituent, at "
+                        "the bottom of the plate (z = 0). Unit: Pa.");
+      prm.declare_entry("Ceramic density",
+                        "3800",
+                        Patterns::Double(1e-3, 1e6),
+                        "Mass density rho_c of the ceramic constituent. "
+                        "Unit: kg/m^3.");
+      prm.declare_entry("Poisson's ratio",
+                        "0.3",
+                        Patterns::Double(-0.99, 0.49),
+                        "Poisson's ratio nu of the metal, and of the "
+                        "ceramic unless Ceramic Poisson's ratio is set: then "
+                        "constant through the thickness (Eq. 2.12). "
+                        "Dimensionless.");
+      prm.declare_entry("Power-law index",
+                        "1",
+                        Patterns::Double(0., 1e6),
+                        "Volume fraction index n of Eq. 2.1, "
+                        "P(z) = P_c + (P_m - P_c) (z/h)^n with z from the "
+                        "bottom face. n = 0 is pure METAL (the paper's "
+                        "convention, opposite to most FGM papers); n -> "
+                        "infinity tends to pure ceramic. Dimensionless.");
+      prm.declare_entry(
+        "Property mode",
+        "graded",
+        Patterns::Selection("graded|homogeneous|pointwise"),
+        "graded: E and rho are interpolated from their nodal values with the "
+        "element shape functions at every quadrature point (graded finite "
+        "elements, Eq. 3.3). homogeneous: one value per element, evaluated "
+        "at the element centre (conventional elements). pointwise: E(z) and "
+        "rho(z) of Eq. 2.1 evaluated at every quadrature point (no "
+        "interpolation; for steep gradients, large n, where the graded "
+        "interpolant smears the metal skin over the top element).");
+      declare_gradation_parameters(prm);
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  FunctionallyGradedMaterial::Parameters::parse_parameters(
+    ParameterHandler &prm)
+  {
+    prm.enter_subsection("Material");
+    {
+      metal_youngs_modulus   = prm.get_double("Metal Young's modulus");
+      metal_density          = prm.get_double("Metal density");
+      ceramic_youngs_modulus = prm.get_double("Ceramic Young's modulus");
+      ceramic_density        = prm.get_double("Ceramic density");
+      poissons_ratio         = prm.get_double("Poisson's ratio");
+      power_law_index        = prm.get_double("Power-law index");
+      const std::string mode = prm.get("Property mode");
+      property_mode          = (mode == "graded"      ? PropertyMode::graded :
+                                mode == "homogeneous" ? PropertyMode::homogeneous :
+                                                        PropertyMode::pointwise);
+      parse_gradation_parameters(prm, *this);
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
+    ParameterHandler  &prm,
+    const std::string &prm_file)
+  {
+    // Made absolute in prm itself, so that parameters.prm, the checkpoints
+    // (fgimpact --resume DIR reads DIR/parameters.prm) and a study's cases
+    // name the same file wherever they are read from.
+    namespace fs = std::filesystem;
+    prm.enter_subsection("Material");
+    const std::string file = prm.get("Profile file");
+    if (!file.empty() && fs::path(file).is_relative())
+      {
+        const bool     named = !(prm_file.empty() || prm_file == "-" ||
+                             prm_file == "standard input");
+        const fs::path directory =
+          named ? fs::path(prm_file).parent_path() : fs::path();
+        prm.set("Profile file",
+                fs::absolute(directory / file).lexically_normal().string());
+      }
+    prm.leave_subsection();
+  }
+
+
+
+  Constituents
+  FunctionallyGradedMaterial::Parameters::constituents() const
+  {
+    return {{metal_youngs_modulus, poissons_ratio, metal_density},
+            {ceramic_youngs_modulus,
+             ceramic_poissons_ratio < -1. ? poissons_ratio :
+                                            ceramic_poissons_ratio,
+             ceramic_density}};
+  }
+
+
+
+  FunctionallyGradedMaterial::FunctionallyGradedMaterial(
+    const Parameters &parameters,
+    const double      thickness)
+    : parameters(parameters)
+    , h(thickness)
+    , law(create_gradation_law(parameters.gradation,
+                               parameters.homogenization,
+                               parameters.constituents(),
+                               parameters.power_law_index,
+                               parameters.profile_file))
+  {}
+
+
+
+  IsotropicProperties
+  FunctionallyGradedMaterial::properties(const double z) const
+  {
+    return law->properties(std::clamp(z / h, 0., 1.));
+  }
+
+
+
+  double
+  FunctionallyGradedMaterial::youngs_modulus(const double z) const
+  {
+    return properties(z).E;
+  }
+
+
+
+  double
+  FunctionallyGradedMaterial::density(const double z) const
+  {
+    return properties(z).rho;
+  }
+
+
+
+  double
+  FunctionallyGradedMaterial::poissons_ratio(const double z) const
+  {
+    // With equal constituent ratios every law returns nu_c + 0 * (...):
+    // exactly the constant.
+    return properties(z).nu;
+  }
+
+
+
+  bool
+  FunctionallyGradedMaterial::constant_poissons_ratio() const
+  {
+    return law->constant_poissons_ratio();
+  }
+
+
+
+  double
+  FunctionallyGradedMaterial::total_metal_volume_fraction() const
+  {
+    // The sigmoid law is antisymmetric about the mid-plane: half metal.
+    return parameters.gradation == Gradation::sigmoid ?
+             0.5 :
+             1. / (1. + parameters.power_law_index);
+  }
+
+} // namespace fgimpact

@@ -1,0 +1,215 @@
+#include <deal.II/base/exceptions.h>
+
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/output/contact_output.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /// A PVD collection of (time in s, file name), written through a
+    /// temporary name and a rename like the solution's PVD.
+    void
+    write_pvd(const std::string                                 &file,
+              const std::vector<std::pair<double, std::string>> &entries)
+    {
+      std::ostringstream out;
+      out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" "
+             "version=\"0.1\">\n<Collection>\n";
+      for (const auto &[t, name] : entries)
+        out << "<DataSet timestep=\"" << t << "\" file=\"" << name << "\"/>\n";
+      out << "</Collection>\n</VTKFile>\n";
+      write_file_atomically(file, out.str());
+    }
+
+    /// The header of an ASCII unstructured grid with the given points.
+    void
+    begin_grid(std::ostream                &out,
+               const std::vector<Point<3>> &points,
+               const unsigned int           n_cells)
+    {
+      out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+             "version=\"0.1\">\n<UnstructuredGrid>\n";
+      out << "<Piece NumberOfPoints=\"" << points.size()
+          << "\" NumberOfCells=\"" << n_cells << "\">\n<Points>\n"
+          << "<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+             "format=\"ascii\">\n";
+      for (const auto &p : points)
+        out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+      out << "</DataArray>\n</Points>\n";
+    }
+  } // namespace
+
+
+
+  ContactVtuWriter::ContactVtuWriter(const std::string  &directory,
+                                     const Point<3>     &impact_point,
+                                     const double        radius,
+                                     const ContactModel &contact)
+    : directory(directory)
+    , impact_point(impact_point)
+    , R(radius)
+    , contact(contact)
+  {}
+
+
+
+  void
+  ContactVtuWriter::write(const unsigned int  step,
+                          const double        t,
+                          const double        w,
+                          const ContactState &state)
+  {
+    char name[64];
+    std::snprintf(name, sizeof(name), "sphere_%05u.vtu", step);
+    write_sphere(directory + "/" + name, w, state.force);
+    spheres.emplace_back(t, name);
+    if (!contact.contact_points().empty())
+      {
+        std::snprintf(name, sizeof(name), "contact_%05u.vtu", step);
+        write_nodes(directory + "/" + name, state);
+        contacts.emplace_back(t, name);
+      }
+  }
+
+
+
+  void
+  ContactVtuWriter::write_sphere(const std::string &file,
+                                 const double       w,
+                                 const double       F) const
+  {
+    // A latitude-longitude triangulation: 24 rings of 48 points and the
+    // two poles.
+    const unsigned int    n_rings = 24, n_around = 48;
+    const Point<3>        centre(impact_point[0],
+                          impact_point[1],
+                          impact_point[2] + R - w);
+    std::vector<Point<3>> points{centre + Point<3>(0, 0, -R)};
+    for (unsigned int i = 1; i < n_rings; ++i)
+      for (unsigned int j = 0; j < n_around; ++j)
+        {
+          const double theta = numbers::PI * i / n_rings; // from the bottom
+          const double phi   = 2. * numbers::PI * j / n_around;
+          points.push_back(centre +
+                           Point<3>(R * std::sin(theta) * std::cos(phi),
+                                    R * std::sin(theta) * std::sin(phi),
+                                    -R * std::cos(theta)));
+        }
+    points.push_back(centre + Point<3>(0, 0, R));
+    const unsigned int                       top = points.size() - 1;
+    std::vector<std::array<unsigned int, 3>> triangles;
+    const auto ring = [&](const unsigned int i, const unsigned int j) {
+      return 1 + (i - 1) * n_around + j % n_around;
+    };
+    for (unsigned int j = 0; j < n_around; ++j)
+      {
+        triangles.push_back({{0, ring(1, j + 1), ring(1, j)}});
+        triangles.push_back(
+          {{top, ring(n_rings - 1, j), ring(n_rings - 1, j + 1)}});
+        for (unsigned int i = 1; i + 1 < n_rings; ++i)
+          {
+            triangles.push_back({{ring(i, j), ring(i, j + 1), ring(i + 1, j)}});
+            triangles.push_back(
+              {{ring(i, j + 1), ring(i + 1, j + 1), ring(i + 1, j)}});
+          }
+      }
+
+    std::ostringstream out;
+    out.precision(10);
+    begin_grid(out, points, triangles.size());
+    out << "<Cells>\n<DataArray type=\"Int32\" Name=\"connectivity\" "
+           "format=\"ascii\">\n";
+    for (const auto &t : triangles)
+      out << t[0] << ' ' << t[1] << ' ' << t[2] << '\n';
+    out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" "
+           "format=\"ascii\">\n";
+    for (unsigned int k = 1; k <= triangles.size(); ++k)
+      out << 3 * k << '\n';
+    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+           "format=\"ascii\">\n";
+    for (unsigned int k = 0; k < triangles.size(); ++k)
+      out << "5\n";
+    out << "</DataArray>\n</Cells>\n<CellData>\n"
+        << "<DataArray type=\"Float64\" Name=\"contact_force_N\" "
+           "format=\"ascii\">\n";
+    for (unsigned int k = 0; k < triangles.size(); ++k)
+      out << F << '\n';
+    out << "</DataArray>\n<DataArray type=\"Float64\" "
+           "Name=\"impactor_displacement_um\" format=\"ascii\">\n";
+    for (unsigned int k = 0; k < triangles.size(); ++k)
+      out << w * 1e6 << '\n';
+    out << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n"
+           "</VTKFile>\n";
+    write_file_atomically(file, out.str());
+  }
+
+
+
+  void
+  ContactVtuWriter::write_nodes(const std::string  &file,
+                                const ContactState &state) const
+  {
+    // Read each time: the candidate set may have grown.
+    const std::vector<Point<3>> nodes = contact.contact_points();
+    const std::vector<double>   areas = contact.contact_areas();
+    std::ostringstream          out;
+    out.precision(10);
+    begin_grid(out, nodes, nodes.size());
+    out << "<Cells>\n<DataArray type=\"Int32\" Name=\"connectivity\" "
+           "format=\"ascii\">\n";
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      out << k << '\n';
+    out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" "
+           "format=\"ascii\">\n";
+    for (unsigned int k = 1; k <= nodes.size(); ++k)
+      out << k << '\n';
+    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+           "format=\"ascii\">\n";
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      out << "1\n";
+    out << "</DataArray>\n</Cells>\n<PointData>\n"
+        << "<DataArray type=\"Float64\" Name=\"contact_pressure_MPa\" "
+           "format=\"ascii\">\n";
+    // (No forces yet at t = 0.)
+    const auto force = [&state](const unsigned int k) {
+      return k < state.forces.size() ? state.forces[k] : 0.;
+    };
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      out << force(k) / areas[k] * 1e-6 << '\n';
+    out << "</DataArray>\n<DataArray type=\"Float64\" "
+           "Name=\"nodal_force_N\" format=\"ascii\">\n";
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      out << force(k) << '\n';
+    out << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"
+           "</VTKFile>\n";
+    write_file_atomically(file, out.str());
+  }
+
+
+
+  void
+  ContactVtuWriter::finish() const
+  {
+    write_pvd(directory + "/sphere.pvd", spheres);
+    if (!contacts.empty())
+      write_pvd(directory + "/contact.pvd", contacts);
+  }
+
+
+
+  void
+  ContactVtuWriter::restore(const std::vector<Record> &sphere_records,
+                            const std::vector<Record> &contact_records)
+  {
+    spheres  = sphere_records;
+    contacts = contact_records;
+    if (!spheres.empty())
+      finish();
+  }
+} // namespace fgimpact

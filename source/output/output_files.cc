@@ -1,0 +1,179 @@
+// The plain-text outputs: CsvWriter (history.csv, probes.csv: rows handed to
+// the disk whole) and SummaryWriter (summary.txt, written atomically),
+// declared in output_files.h.  The VTU output is in postprocessing.cc.
+
+#include <deal.II/base/exceptions.h>
+
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/output/output_files.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fgimpact
+{
+  CsvWriter::CsvWriter(const std::string                              &filename,
+                       const std::vector<std::pair<std::string, int>> &columns,
+                       const std::uintmax_t resume_length)
+    : filename(filename)
+    , written(resume_length)
+  {
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      decimals.push_back(columns[i].second);
+    if (resume_length > 0)
+      {
+        // Rows past the checkpoint (a run killed later) are dropped.
+        std::error_code error;
+        AssertThrow(std::filesystem::file_size(filename, error) >=
+                        resume_length &&
+                      !error,
+                    ExcMessage(filename +
+                               " is shorter than at the checkpoint "
+                               "(" +
+                               std::to_string(resume_length) +
+                               " bytes): it cannot be continued"));
+        std::filesystem::resize_file(filename, resume_length, error);
+        out.open(filename, std::ios::binary | std::ios::app);
+        AssertThrow(out && !error,
+                    ExcOutputFailure("cannot write " + filename + "."));
+        return;
+      }
+    out.open(filename, std::ios::binary);
+    AssertThrow(out, ExcOutputFailure("cannot write " + filename + "."));
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      buffer += (i ? ", " : "") + columns[i].first;
+    buffer += '\n';
+    flush();
+  }
+
+
+
+  std::uintmax_t
+  CsvWriter::length()
+  {
+    flush();
+    return written;
+  }
+
+
+
+  CsvWriter::~CsvWriter()
+  {
+    try
+      {
+        flush();
+      }
+    catch (...)
+      {}
+  }
+
+
+
+  void
+  CsvWriter::write_row(const std::vector<double> &values)
+  {
+    Assert(values.size() == decimals.size(),
+           ExcDimensionMismatch(values.size(), decimals.size()));
+    char buffer_row[64];
+    for (unsigned int i = 0; i < values.size(); ++i)
+      {
+        // Print -0.000 as 0.000: a sign flip of round-off is not a change.
+        const double scale = std::pow(10., decimals[i]);
+        const double v = (std::abs(values[i]) * scale < 0.5) ? 0. : values[i];
+        std::snprintf(buffer_row, sizeof(buffer_row), "%.*f", decimals[i], v);
+        if (i > 0)
+          buffer += ", ";
+        buffer += buffer_row;
+      }
+    buffer += '\n';
+    if (buffer.size() > (1u << 20) ||
+        std::chrono::steady_clock::now() - last_flush > std::chrono::seconds(2))
+      flush();
+  }
+
+
+
+  void
+  CsvWriter::flush()
+  {
+    last_flush = std::chrono::steady_clock::now();
+    if (buffer.empty() || !out.good())
+      {
+        AssertThrow(out.good(),
+                    ExcOutputFailure("cannot write " + filename +
+                                     " (disk full or I/O error)."));
+        return;
+      }
+    out.write(buffer.data(), buffer.size());
+    out.flush();
+    written += buffer.size();
+    buffer.clear();
+    AssertThrow(out.good(),
+                ExcOutputFailure("cannot write " + filename +
+                                 " (disk full or I/O error)."));
+  }
+
+
+
+  void
+  SummaryWriter::add(const std::string &name,
+                     const double       value,
+                     const int          decimals)
+  {
+    char buffer[200];
+    if (std::isfinite(value))
+      std::snprintf(
+        buffer, sizeof(buffer), "%s = %.*f\n", name.c_str(), decimals, value);
+    else
+      std::snprintf(buffer, sizeof(buffer), "%s = none\n", name.c_str());
+    text += buffer;
+  }
+
+
+
+  void
+  SummaryWriter::add_scientific(const std::string &name, const double value)
+  {
+    if (!std::isfinite(value))
+      return add(name, value, 0);
+    char buffer[200];
+    std::snprintf(buffer, sizeof(buffer), "%s = %.6e\n", name.c_str(), value);
+    text += buffer;
+  }
+
+
+
+  void
+  SummaryWriter::add_text(const std::string &name, const std::string &value)
+  {
+    text += name + " = " + (value.empty() ? "none" : value) + '\n';
+  }
+
+
+
+  void
+  SummaryWriter::write(const std::string &filename) const
+  {
+    write_file_atomically(filename, preamble() + text);
+  }
+
+
+  std::string &
+  SummaryWriter::preamble()
+  {
+    static std::string lines;
+    return lines;
+  }
+
+
+
+  void
+  SummaryWriter::set_preamble(const std::string &comment_lines)
+  {
+    preamble() = comment_lines;
+  }
+} // namespace fgimpact

@@ -1,0 +1,102 @@
+// Subsection "Output": the output directory, the files' intervals and
+// formats, checkpoints, VTU fields and probe points (OutputParameters,
+// declared in monitor.h).
+
+#include <fgimpact/output/monitor.h>
+
+namespace fgimpact
+{
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::DirectoryName(),
+                        "Directory for history.csv, summary.txt, "
+                        "parameters.prm and the VTU/PVD files; created if "
+                        "missing.");
+      prm.declare_entry("VTU interval",
+                        "0",
+                        Patterns::Integer(0, 100000000),
+                        "Write VTU every this many time steps (and the "
+                        "initial state); 0 = no VTU output.");
+      prm.declare_entry("Log interval",
+                        "50",
+                        Patterns::Integer(0, 100000000),
+                        "Print a progress line every this many steps; 0 = "
+                        "none.");
+      prm.declare_entry("Print timing",
+                        "true",
+                        Patterns::Bool(),
+                        "Print the wall-clock timing table at the end and a "
+                        "progress line (elapsed time, estimate of the time "
+                        "left) at every tenth of the time steps (turn off "
+                        "for reproducible logs).");
+      prm.declare_entry("Instrumentation",
+                        "false",
+                        Patterns::Bool(),
+                        "Measure the reference costs of one matrix-vector "
+                        "product and one solve with the time step's matrix "
+                        "(spmv_ms, solve_ms in summary.txt, for the "
+                        "benchmarks in bench/); costs 20 products and 3 "
+                        "solves at set-up.");
+      prm.declare_entry("VTU compression",
+                        "speed",
+                        Patterns::Selection("none|speed|default|best"),
+                        "zlib level of the VTU data: none, speed (fastest, "
+                        "default), default (zlib's compromise) or best "
+                        "(smallest files, several times slower).  The values "
+                        "in the files are the same at every level.");
+      prm.declare_entry(
+        "Overwrite",
+        "true",
+        Patterns::Bool(),
+        "true: before writing, remove exactly the files this "
+        "program writes from Directory (history.csv, probes.csv, "
+        "summary.txt, parameters.prm, input.prm, log.txt, "
+        "frequencies.csv, solution.pvd, solution_*.vtu/"
+        ".pvtu, sphere and contact series, peak_fields, "
+        "contact_pressure.csv, checkpoint/), so that no file of an earlier run is mixed "
+        "with the new ones. false: refuse a Directory that "
+        "is not empty.");
+      prm.declare_entry(
+        "Checkpoint interval",
+        "200",
+        Patterns::Integer(0, 100000000),
+        "Write a checkpoint (Directory/checkpoint/, the complete state, "
+        "replacing the last one only when complete) every this many time "
+        "steps, and when SIGINT or SIGTERM stops the run; 0 = only then. "
+        "`fgimpact --resume Directory` continues the run bit for bit.");
+      VtuFields::declare_parameters(prm);
+      ProbePoints::declare_parameters(prm);
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory       = prm.get("Directory");
+    vtu_interval    = prm.get_integer("VTU interval");
+    log_interval    = prm.get_integer("Log interval");
+    print_timing    = prm.get_bool("Print timing");
+    instrumentation = prm.get_bool("Instrumentation");
+
+    const std::string level = prm.get("VTU compression");
+    vtu_compression =
+      level == "none"    ? DataOutBase::VtkFlags::no_compression :
+      level == "default" ? DataOutBase::VtkFlags::default_compression :
+      level == "best"    ? DataOutBase::VtkFlags::best_compression :
+                           DataOutBase::VtkFlags::best_speed;
+    overwrite           = prm.get_bool("Overwrite");
+    checkpoint_interval = prm.get_integer("Checkpoint interval");
+    vtu_fields.parse_parameters(prm);
+    probe_points.parse_parameters(prm);
+    prm.leave_subsection();
+  }
+} // namespace fgimpact

@@ -1,0 +1,464 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/output/mirrored_data_out.h>
+#include <fgimpact/output/postprocessing.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <sstream>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /// Write `filename` with writer(stream); deal.II's own I/O error is
+    /// several paragraphs: ExcOutputFailure with one line instead.
+    void
+    write_checked(const std::string                         &filename,
+                  const std::function<void(std::ostream &)> &writer)
+    {
+      std::ofstream out(filename);
+      try
+        {
+          writer(out);
+        }
+      catch (const ExceptionBase &)
+        {
+          out.setstate(std::ios::badbit);
+        }
+      out.close();
+      AssertThrow(!out.fail(),
+                  ExcOutputFailure("cannot write " + filename +
+                                   " (disk full or I/O error)."));
+    }
+  } // namespace
+
+
+
+  StressPostprocessor::StressPostprocessor(const PlateModel &plate,
+                                           const bool        with_stress,
+                                           const bool        with_material)
+    : properties(plate.get_fe().base_element(0), {}, plate.get_material())
+    , hooke(plate.get_material())
+    , with_stress(with_stress)
+    , with_material(with_material)
+  {}
+
+
+
+  std::vector<std::string>
+  StressPostprocessor::get_names() const
+  {
+    std::vector<std::string> names;
+    if (with_stress)
+      {
+        names.resize(9, "stress_MPa");
+        names.emplace_back("cell_von_mises_MPa");
+      }
+    if (with_material)
+      {
+        names.emplace_back("youngs_modulus_GPa");
+        names.emplace_back("density_kg_m3");
+      }
+    return names;
+  }
+
+
+
+  std::vector<DataComponentInterpretation::DataComponentInterpretation>
+  StressPostprocessor::get_data_component_interpretation() const
+  {
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation;
+    if (with_stress)
+      interpretation.resize(
+        9, DataComponentInterpretation::component_is_part_of_tensor);
+    interpretation.resize(get_names().size(),
+                          DataComponentInterpretation::component_is_scalar);
+    return interpretation;
+  }
+
+
+
+  UpdateFlags
+  StressPostprocessor::get_needed_update_flags() const
+  {
+    return update_gradients | update_quadrature_points;
+  }
+
+
+
+  void
+  StressPostprocessor::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<3> &inputs,
+    std::vector<Vector<double>>              &computed_quantities) const
+  {
+    const auto cell = inputs.template get_cell<3>();
+    for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
+      {
+        const auto [E, nu, rho] =
+          properties.value_at(cell, inputs.evaluation_points[p]);
+        unsigned int k = 0;
+        if (with_stress)
+          {
+            SymmetricTensor<2, 3> eps;
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = a; b < 3; ++b)
+                eps[a][b] = 0.5 * (inputs.solution_gradients[p][a][b] +
+                                   inputs.solution_gradients[p][b][a]);
+            const SymmetricTensor<2, 3> sigma = hooke.stress(E, nu, eps);
+            const SymmetricTensor<2, 3> s     = deviator(sigma);
+
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = 0; b < 3; ++b)
+                computed_quantities[p][k++] = sigma[a][b] * 1e-6;
+            computed_quantities[p][k++] = std::sqrt(1.5 * (s * s)) * 1e-6;
+          }
+        if (with_material)
+          {
+            computed_quantities[p][k++] = E * 1e-9;
+            computed_quantities[p][k++] = rho;
+          }
+      }
+  }
+
+
+
+  void
+  VtuFields::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Fields",
+      "displacement, velocity, stress, von_mises, principal, material, peak",
+      Patterns::MultipleSelection("displacement|velocity|acceleration|stress|"
+                                  "von_mises|principal|strain|cell_stress|"
+                                  "material|peak"),
+      "The fields of the VTU files, a comma-separated list of: "
+      "displacement (displacement_m, m), velocity (velocity_m_s, m/s), "
+      "acceleration (impact runs: acceleration_m_s2, m/s^2), "
+      "stress (the recovered, continuous stress by nodal averaging: "
+      "sigma_xx_MPa, sigma_yy_MPa, sigma_zz_MPa, sigma_xy_MPa, sigma_xz_MPa, "
+      "sigma_yz_MPa, MPa), von_mises (recovered von_mises_MPa, MPa), "
+      "principal (recovered principal stresses sigma_1_MPa >= sigma_2_MPa "
+      ">= sigma_3_MPa, MPa), strain (recovered strain_xx ... strain_yz, "
+      "tensor components, dimensionless), cell_stress (the per-cell, "
+      "discontinuous stress tensor stress_MPa with components 0..8 = xx, "
+      "xy, xz, yx, yy, yz, zx, zy, zz and cell_von_mises_MPa, MPa), "
+      "material (youngs_modulus_GPa in GPa, density_kg_m3 in kg/m^3), peak "
+      "(impact runs: peak_fields.vtu at the end, the nodal maxima over the "
+      "VTU snapshots of the recovered von Mises stress and |sigma_zz|, "
+      "MPa).");
+    prm.declare_entry(
+      "Mirror symmetric part",
+      "true",
+      Patterns::Bool(),
+      "With Geometry/Symmetry modelling a half or a quarter of the plate: "
+      "true writes the VTU files of the whole plate (the part and its "
+      "reflections across the cut planes x = a/2, y = b/2, with the signs of "
+      "the odd vector and tensor components changed); false writes the "
+      "modelled part only (mirror it in ParaView with the Reflect filter). "
+      "No effect on a whole plate.");
+  }
+
+
+
+  void
+  VtuFields::parse_parameters(ParameterHandler &prm)
+  {
+    const auto list = Utilities::split_string_list(prm.get("Fields"));
+    auto       has  = [&list](const std::string &name) {
+      return std::find(list.begin(), list.end(), name) != list.end();
+    };
+    displacement = has("displacement");
+    velocity     = has("velocity");
+    acceleration = has("acceleration");
+    stress       = has("stress");
+    von_mises    = has("von_mises");
+    principal    = has("principal");
+    strain       = has("strain");
+    cell_stress  = has("cell_stress");
+    material     = has("material");
+    peak         = has("peak");
+    mirror       = prm.get_bool("Mirror symmetric part");
+  }
+
+
+
+  VtuWriter::VtuWriter(
+    const PlateModel                                 &plate,
+    const std::string                                &directory,
+    const DataOutBase::VtkFlags::ZlibCompressionLevel compression,
+    const VtuFields                                  &fields)
+    : plate(plate)
+    , directory(directory)
+    , fields(fields)
+    , postprocessor(plate, fields.cell_stress, fields.material)
+    , recovery(fields.recovered() ? std::make_unique<StressRecovery>(plate) :
+                                    nullptr)
+    , compression(compression)
+  {
+    // DataOut reads ghost values: ghosted copies, allocated once.
+    IndexSet relevant;
+    DoFTools::extract_locally_relevant_dofs(plate.get_dof_handler(), relevant);
+    u_ghosted.reinit(plate.locally_owned_dofs(),
+                     relevant,
+                     plate.get_mpi_communicator());
+    v_ghosted.reinit(u_ghosted);
+    a_ghosted.reinit(u_ghosted);
+  }
+
+
+
+  VtuWriter::~VtuWriter()
+  {
+    // Never throw from a destructor: errors surface through finish().
+    if (pending.valid())
+      pending.wait();
+  }
+
+
+
+  void
+  VtuWriter::finish()
+  {
+    if (pending.valid())
+      pending.get();
+    if (!record_pending)
+      return;
+    record_pending = false;
+    // Only rank 0 keeps the PVD, and it lists complete snapshots only.
+    times_and_names.push_back(pending_record);
+    std::ostringstream pvd;
+    DataOutBase::write_pvd_record(pvd, times_and_names);
+    write_file_atomically(directory + "/solution.pvd", pvd.str());
+  }
+
+
+
+  std::vector<std::pair<double, std::string>>
+  VtuWriter::records(const unsigned int step, bool &in_flight)
+  {
+    in_flight = any_written && pending_step == step && pending.valid();
+    if (!in_flight)
+      finish();
+    return times_and_names;
+  }
+
+
+
+  void
+  VtuWriter::restore(const std::vector<std::pair<double, std::string>> &records)
+  {
+    times_and_names = records;
+    any_written     = true; // every rank: a snapshot at step 0 at least
+    if (!times_and_names.empty())
+      {
+        std::ostringstream pvd;
+        DataOutBase::write_pvd_record(pvd, times_and_names);
+        write_file_atomically(directory + "/solution.pvd", pvd.str());
+      }
+  }
+
+
+
+  void
+  VtuWriter::attach_fields(MirroredDataOut                      &data_out,
+                           const bool                            acceleration,
+                           const std::pair<std::string, double> &constant_field,
+                           Vector<double>                       &constant)
+  {
+    const std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      vector_field(3, DataComponentInterpretation::component_is_part_of_vector);
+    data_out.attach_dof_handler(plate.get_dof_handler());
+    if (fields.displacement)
+      data_out.add_data_vector(u_ghosted,
+                               std::vector<std::string>(3, "displacement_m"),
+                               DataOut<3>::type_dof_data,
+                               vector_field);
+    if (fields.velocity)
+      data_out.add_data_vector(v_ghosted,
+                               std::vector<std::string>(3, "velocity_m_s"),
+                               DataOut<3>::type_dof_data,
+                               vector_field);
+    if (acceleration)
+      data_out.add_data_vector(a_ghosted,
+                               std::vector<std::string>(3, "acceleration_m_s2"),
+                               DataOut<3>::type_dof_data,
+                               vector_field);
+    if (fields.cell_stress || fields.material)
+      data_out.add_data_vector(u_ghosted, postprocessor);
+    add_recovered_fields(data_out);
+    if (!constant_field.first.empty())
+      {
+        constant.reinit(
+          plate.get_dof_handler().get_triangulation().n_active_cells());
+        constant = constant_field.second;
+        data_out.add_data_vector(constant,
+                                 constant_field.first,
+                                 DataOut<3>::type_cell_data);
+      }
+  }
+
+
+
+  void
+  VtuWriter::write(const unsigned int                    step,
+                   const double                          t,
+                   const TrilinosWrappers::MPI::Vector  &u,
+                   const TrilinosWrappers::MPI::Vector  &v,
+                   const std::pair<std::string, double> &constant_field,
+                   const TrilinosWrappers::MPI::Vector  *a)
+  {
+    finish(); // the previous snapshot still reads u_ghosted, v_ghosted
+    any_written                  = true;
+    u_ghosted                    = u;
+    v_ghosted                    = v;
+    const bool with_acceleration = fields.acceleration && a != nullptr;
+    if (with_acceleration)
+      a_ghosted = *a;
+
+    const MPI_Comm     comm    = plate.get_mpi_communicator();
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    const std::string  base   = "solution_" + Utilities::int_to_string(step, 5);
+    const std::string  record = base + ".pvtu";
+
+    // Patches and files, in the background on one rank. On several ranks
+    // DataOut on the distributed mesh makes MPI calls of its own, which
+    // collided with the time loop's collectives (MPI_ERR_TRUNCATE, or a
+    // hang inside MUMPS): there the snapshot is written synchronously.
+    auto write_files = [this,
+                        t,
+                        step,
+                        rank,
+                        n_ranks,
+                        base,
+                        record,
+                        constant_field,
+                        with_acceleration]() {
+      MirroredDataOut data_out(plate.get_geometry());
+      Vector<double>  constant;
+      attach_fields(data_out, with_acceleration, constant_field, constant);
+      data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
+      if (fields.mirror)
+        data_out.mirror();
+
+      DataOutBase::VtkFlags flags;
+      flags.time  = t;
+      flags.cycle = step;
+
+      flags.compression_level = compression;
+      data_out.set_flags(flags);
+
+      write_checked(directory + "/" + base + "." +
+                      Utilities::int_to_string(rank) + ".vtu",
+                    [&](std::ostream &out) { data_out.write_vtu(out); });
+      if (rank == 0)
+        {
+          std::vector<std::string> pieces;
+          for (unsigned int r = 0; r < n_ranks; ++r)
+            pieces.push_back(base + "." + Utilities::int_to_string(r) + ".vtu");
+          write_checked(directory + "/" + record, [&](std::ostream &out) {
+            data_out.write_pvtu_record(out, pieces);
+          });
+        }
+    };
+    if (n_ranks == 1)
+      pending = std::async(std::launch::async, write_files);
+    else
+      write_files();
+
+    // Listed in the PVD by finish(), once the files are complete.
+    pending_record = {t, record};
+    pending_step   = step;
+    record_pending = (rank == 0);
+    if (n_ranks > 1)
+      finish();
+  }
+
+
+
+  void
+  VtuWriter::add_recovered_fields(DataOut<3> &data_out)
+  {
+    if (!recovery)
+      return;
+    recovery->recover(u_ghosted);
+    using F = StressRecovery::Field;
+    std::vector<F> selected;
+    if (fields.stress)
+      selected.insert(selected.end(),
+                      {F::stress_xx,
+                       F::stress_yy,
+                       F::stress_zz,
+                       F::stress_xy,
+                       F::stress_xz,
+                       F::stress_yz});
+    if (fields.von_mises)
+      selected.push_back(F::von_mises);
+    if (fields.principal)
+      selected.insert(selected.end(),
+                      {F::principal_1, F::principal_2, F::principal_3});
+    if (fields.strain)
+      selected.insert(selected.end(),
+                      {F::strain_xx,
+                       F::strain_yy,
+                       F::strain_zz,
+                       F::strain_xy,
+                       F::strain_xz,
+                       F::strain_yz});
+    for (const F f : selected)
+      data_out.add_data_vector(recovery->get_dof_handler(),
+                               recovery->field(f),
+                               StressRecovery::name(f));
+  }
+
+
+
+  void
+  VtuWriter::write_peak_fields()
+  {
+    finish();
+    // Every rank decides alike (times_and_names is kept on rank 0 only).
+    if (!fields.peak || !recovery || !any_written)
+      return;
+    const MPI_Comm     comm    = plate.get_mpi_communicator();
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+
+    MirroredDataOut data_out(plate.get_geometry());
+    data_out.attach_dof_handler(recovery->get_dof_handler());
+    for (const auto f :
+         {StressRecovery::peak_von_mises, StressRecovery::peak_abs_stress_zz})
+      data_out.add_data_vector(recovery->field(f), StressRecovery::name(f));
+    data_out.build_patches(plate.get_mapping(), plate.get_fe().degree);
+    if (fields.mirror)
+      data_out.mirror();
+    DataOutBase::VtkFlags flags;
+    flags.compression_level = compression;
+    data_out.set_flags(flags);
+
+    const std::string base = "peak_fields";
+    write_checked(directory + "/" + base + "." +
+                    Utilities::int_to_string(rank) + ".vtu",
+                  [&](std::ostream &out) { data_out.write_vtu(out); });
+    if (rank == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          pieces.push_back(base + "." + Utilities::int_to_string(r) + ".vtu");
+        write_checked(directory + "/" + base + ".pvtu", [&](std::ostream &out) {
+          data_out.write_pvtu_record(out, pieces);
+        });
+      }
+  }
+} // namespace fgimpact

@@ -1,0 +1,265 @@
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/grid/grid_generator.h>
+
+#include <fgimpact/plate/geometry.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace fgimpact
+{
+  const std::array<std::string, 4> PlateGeometry::side_names = {
+    {"Face x min", "Face x max", "Face y min", "Face y max"}};
+
+
+
+  namespace
+  {
+    /// Subsection "Boundary conditions": the supports of the six faces.
+    void
+    declare_supports(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Boundary conditions");
+      {
+        for (const auto &name : PlateGeometry::side_names)
+          prm.declare_entry(
+            name,
+            "simply supported",
+            Patterns::Selection("simply supported|clamped|free"),
+            "Support of this whole side face (x min: x = 0, x max: x = a, y "
+            "min: y = 0, y max: y = b). simply supported (Eq. 2.15): "
+            "w = 0 and the tangential in-plane displacement = 0 on the face "
+            "(v on x = const, u on y = const); the normal in-plane "
+            "displacement is free. clamped: u = v = w = 0. free: traction "
+            "free.");
+        prm.declare_entry(
+          "Face z min",
+          "free",
+          Patterns::Selection("simply supported|clamped|free"),
+          "Support of the bottom face z = 0: free (a plate), clamped "
+          "(u = v = w = 0: bonded to a rigid base) or simply supported "
+          "(w = 0 only: resting on a frictionless rigid base, which can pull "
+          "as well as push).");
+      }
+      prm.leave_subsection();
+    }
+  } // namespace
+
+
+
+  void
+  PlateGeometry::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Length a",
+                        "0.2",
+                        Patterns::Double(1e-6, 1e3),
+                        "Plate length a along x. Unit: m.");
+      prm.declare_entry("Width b",
+                        "0.1",
+                        Patterns::Double(1e-6, 1e3),
+                        "Plate width b along y. Unit: m.");
+      prm.declare_entry("Thickness h",
+                        "0.02",
+                        Patterns::Double(1e-6, 1e3),
+                        "Plate thickness h along z; z = 0 is the (ceramic) "
+                        "bottom face, z = h the (metal) top face that the "
+                        "impactor strikes. Unit: m.");
+      prm.declare_entry("Subdivisions x",
+                        "40",
+                        Patterns::Integer(1, 100000),
+                        "Number of elements along x. Even, so that a node "
+                        "lies under a central impact.");
+      prm.declare_entry("Subdivisions y",
+                        "20",
+                        Patterns::Integer(1, 100000),
+                        "Number of elements along y.");
+      prm.declare_entry("Subdivisions z",
+                        "4",
+                        Patterns::Integer(1, 100000),
+                        "Number of elements through the thickness.");
+      prm.declare_entry(
+        "Contact refinement levels",
+        "auto",
+        Patterns::Selection("auto|0|1|2|3|4|5|6|7|8|9|10|11|12"),
+        "Times the cells near the impact point are split in two in each "
+        "direction (graded, with hanging-node constraints): the element "
+        "size under the ball is the base size / 2^levels. 0 = uniform "
+        "mesh. auto = 0 for the Hertz-law contact models; for Contact/Model "
+        "= resolved sphere and Static/Load = sphere the fewest levels that "
+        "put 4 element sizes across the half-space Hertz estimate of the "
+        "largest contact radius (doc/contact.md: about 1 % in the peak "
+        "force); the log gives the choice.");
+      prm.declare_entry(
+        "Contact refinement radius",
+        "0",
+        Patterns::Double(0., 10.),
+        "Radius of the core around the impact point that gets the finest "
+        "cells; each coarser level reaches two of its cells further. 0 = "
+        "automatic: 1.5 times the largest contact radius of the ball on a "
+        "half-space of the top face's modulus. Unit: m.");
+      prm.declare_entry(
+        "Symmetry",
+        "auto",
+        Patterns::Selection("auto|none|half|quarter"),
+        "Model a part of a symmetric scene: quarter = the part x <= a/2, "
+        "y <= b/2 with u_x = 0 on x = a/2 and u_y = 0 on y = b/2; half = "
+        "the part x <= a/2 (or y <= b/2 if only that plane is a symmetry "
+        "plane); none = the whole plate; auto = the smallest part the scene "
+        "allows (none, with a log line, if none). A plane is a symmetry "
+        "plane if the impact point lies on it, the supports of the two "
+        "faces parallel to it are equal and the subdivisions across it are "
+        "even; modal problems and explicit runs with the automatic time "
+        "step (Time step = 0) are never cut. history.csv and summary.txt "
+        "report the whole plate; the VTU files hold the whole plate too "
+        "(Output/Mirror symmetric part = true) or the part.");
+    }
+    prm.leave_subsection();
+
+    declare_supports(prm);
+  }
+
+
+
+  void
+  PlateGeometry::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      length                   = prm.get_double("Length a");
+      width                    = prm.get_double("Width b");
+      thickness                = prm.get_double("Thickness h");
+      subdivisions_x           = prm.get_integer("Subdivisions x");
+      subdivisions_y           = prm.get_integer("Subdivisions y");
+      subdivisions_z           = prm.get_integer("Subdivisions z");
+      const std::string levels = prm.get("Contact refinement levels");
+      contact_refinement_auto  = (levels == "auto");
+      contact_refinement_levels =
+        contact_refinement_auto ? 0 : Utilities::string_to_int(levels);
+      contact_refinement_radius = prm.get_double("Contact refinement radius");
+      const std::string s       = prm.get("Symmetry");
+      symmetry                  = (s == "auto"    ? Symmetry::automatic :
+                                   s == "half"    ? Symmetry::half :
+                                   s == "quarter" ? Symmetry::quarter :
+                                                    Symmetry::none);
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    {
+      const auto to_support = [](const std::string &s) {
+        return (s == "simply supported" ? SideSupport::simply_supported :
+                s == "clamped"          ? SideSupport::clamped :
+                                          SideSupport::free);
+      };
+      for (unsigned int f = 0; f < 4; ++f)
+        supports[f] = to_support(prm.get(side_names[f]));
+      bottom_support = to_support(prm.get("Face z min"));
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  PlateGeometry::PlateGeometry(const Parameters &parameters)
+    : parameters(parameters)
+  {}
+
+
+
+  void
+  PlateGeometry::create_triangulation(Triangulation<3> &triangulation) const
+  {
+    unsigned int k = 0;
+    // The part modelled: the cut directions have half the extent and half
+    // the (even) subdivisions, the same cells as the whole plate's there.
+    const bool cut_x = parameters.cut[0], cut_y = parameters.cut[1];
+    std::vector<unsigned int> coarse{parameters.subdivisions_x /
+                                       (cut_x ? 2 : 1),
+                                     parameters.subdivisions_y /
+                                       (cut_y ? 2 : 1),
+                                     parameters.subdivisions_z};
+    while (coarse[0] % 2 == 0 && coarse[1] % 2 == 0 && coarse[2] % 2 == 0)
+      {
+        for (auto &n : coarse)
+          n /= 2;
+        ++k;
+      }
+    // Boundary ids (colorize) pass to the children of refined faces.
+    GridGenerator::subdivided_hyper_rectangle(
+      triangulation,
+      coarse,
+      Point<3>(),
+      Point<3>(cut_x ? 0.5 * parameters.length : parameters.length,
+               cut_y ? 0.5 * parameters.width : parameters.width,
+               parameters.thickness),
+      /*colorize=*/true);
+    triangulation.refine_global(k);
+  }
+
+
+
+  void
+  PlateGeometry::refine_locally(Triangulation<3>      &triangulation,
+                                const LocalRefinement &refinement)
+  {
+    for (unsigned int pass = 0; pass < refinement.levels; ++pass)
+      {
+        const unsigned int finest = triangulation.n_global_levels() - 1;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              static_cast<unsigned int>(cell->level()) == finest)
+            {
+              // Distance from the centre to the brick (axis-aligned).
+              const BoundingBox<3> box = cell->bounding_box();
+              double               d2  = 0;
+              for (unsigned int d = 0; d < 3; ++d)
+                {
+                  const double c  = refinement.centre[d];
+                  const double dd = std::max(
+                    {box.lower_bound(d) - c, 0., c - box.upper_bound(d)});
+                  d2 += dd * dd;
+                }
+              const double h = cell->extent_in_direction(0);
+              if (std::sqrt(d2) < refinement.radius + 2. * h)
+                cell->set_refine_flag();
+            }
+        triangulation.execute_coarsening_and_refinement();
+      }
+  }
+
+
+
+  Point<3>
+  PlateGeometry::centre(const double z) const
+  {
+    return Point<3>(parameters.length / 2, parameters.width / 2, z);
+  }
+
+
+
+  unsigned int
+  PlateGeometry::multiplicity(const Point<3> &p) const
+  {
+    const double centre[2] = {0.5 * parameters.length, 0.5 * parameters.width};
+    unsigned int n         = 1;
+    for (unsigned int d = 0; d < 2; ++d)
+      if (parameters.cut[d] &&
+          std::abs(p[d] - centre[d]) > 1e-9 * parameters.length)
+        n *= 2;
+    return n;
+  }
+
+
+
+  bool
+  PlateGeometry::contains(const Point<3> &p) const
+  {
+    const double tol = 1e-12 * parameters.length;
+    return p[0] >= -tol && p[0] <= parameters.length + tol && p[1] >= -tol &&
+           p[1] <= parameters.width + tol && p[2] >= -tol &&
+           p[2] <= parameters.thickness + tol;
+  }
+} // namespace fgimpact

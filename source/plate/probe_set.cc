@@ -1,0 +1,567 @@
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <fgimpact/material/constitutive_law.h>
+#include <fgimpact/plate/probe_set.h>
+#include <fgimpact/plate/probes.h>
+#include <fgimpact/plate/stress_recovery.h>
+
+#include <cctype>
+#include <set>
+#include <sstream>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /// (row, column) of the six stress components in probes.csv's order.
+    constexpr unsigned int component[6][2] =
+      {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+
+    const std::string entry = "Output/Probe points";
+
+    [[noreturn]] void
+    refuse(const std::string &text)
+    {
+      AssertThrow(false, ExcMessage(entry + ": " + text));
+      std::abort(); // not reached
+    }
+
+    std::string
+    trim(const std::string &s)
+    {
+      const auto begin = s.find_first_not_of(" \t");
+      const auto end   = s.find_last_not_of(" \t");
+      return begin == std::string::npos ? "" : s.substr(begin, end - begin + 1);
+    }
+
+    /// A coordinate: a number in mm, or a number followed by the letter of
+    /// its plate dimension (fraction of a, b or h).
+    std::pair<double, bool>
+    parse_coordinate(const std::string &text,
+                     const char         letter,
+                     const std::string &point)
+    {
+      const std::string t        = trim(text);
+      const bool        fraction = !t.empty() && t.back() == letter;
+      const std::string number = fraction ? trim(t.substr(0, t.size() - 1)) : t;
+      std::size_t       used   = 0;
+      double            value  = 0;
+      try
+        {
+          value = std::stod(number, &used);
+        }
+      catch (...)
+        {
+          used = 0;
+        }
+      if (number.empty() || used != number.size() || !std::isfinite(value))
+        refuse("'" + point + "': the coordinate '" + t +
+               "' is not a number in mm or a fraction followed by '" +
+               std::string(1, letter) + "'.");
+      return {value, fraction};
+    }
+  } // namespace
+
+
+
+  Point<3>
+  ProbePoint::location(const double a, const double b, const double h) const
+  {
+    const double size[3] = {a, b, h};
+    Point<3>     p;
+    for (unsigned int d = 0; d < 3; ++d)
+      p[d] = fraction[d] ? value[d] * size[d] : value[d] * 1e-3;
+    return p;
+  }
+
+
+
+  void
+  ProbePoints::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Probe points",
+      "mid: 0.5a, 0.5b, 0.5h; top: 0.5a, 0.5b, 1h; bottom: 0.5a, 0.5b, 0h",
+      Patterns::Anything(),
+      "Points whose displacement, velocity, acceleration and recovered "
+      "stress an impact run writes to probes.csv at every time step (with "
+      "the total support reaction): 'name: x, y, z' separated by ';'. "
+      "Coordinates in mm from the corner (0, 0, 0) (z from the bottom "
+      "face), or as a fraction of the plate's length, width or thickness "
+      "with the suffix a, b or h (0.5a = the middle of the length). Names: "
+      "letters, digits and '_'. Empty: no probes.csv. The default: the "
+      "centre of the mid-plane, the top and the bottom face.");
+  }
+
+
+
+  void
+  ProbePoints::parse_parameters(ParameterHandler &prm)
+  {
+    points = parse(prm.get("Probe points"));
+  }
+
+
+
+  std::vector<ProbePoint>
+  ProbePoints::parse(const std::string &text)
+  {
+    std::vector<ProbePoint> list;
+    std::set<std::string>   names;
+    for (const auto &item : Utilities::split_string_list(text, ';'))
+      {
+        if (trim(item).empty())
+          continue;
+        const auto colon = item.find(':');
+        if (colon == std::string::npos)
+          refuse("'" + trim(item) + "' is not of the form 'name: x, y, z'.");
+        ProbePoint point;
+        point.name = trim(item.substr(0, colon));
+        if (point.name.empty() ||
+            point.name.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
+                                         "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                         "0123456789_") != std::string::npos)
+          refuse("the name '" + point.name +
+                 "' may only hold letters, digits and '_'.");
+        if (!names.insert(point.name).second)
+          refuse("the name '" + point.name + "' appears twice.");
+        const auto coordinates =
+          Utilities::split_string_list(item.substr(colon + 1), ',');
+        if (coordinates.size() != 3)
+          refuse("'" + point.name + "' needs three coordinates x, y, z.");
+        for (unsigned int d = 0; d < 3; ++d)
+          std::tie(point.value[d], point.fraction[d]) =
+            parse_coordinate(coordinates[d], "abh"[d], point.name);
+        list.push_back(point);
+      }
+    return list;
+  }
+
+
+
+  void
+  ProbePoints::validate(const double a, const double b, const double h) const
+  {
+    const double size[3] = {a, b, h};
+    for (const auto &point : points)
+      {
+        const Point<3> p = point.location(a, b, h);
+        for (unsigned int d = 0; d < 3; ++d)
+          if (p[d] < -1e-12 * size[d] || p[d] > size[d] * (1. + 1e-12))
+            {
+              std::ostringstream text;
+              text << "'" << point.name << "' at (" << p[0] * 1e3 << ", "
+                   << p[1] * 1e3 << ", " << p[2] * 1e3
+                   << ") mm lies outside the plate (0.." << a * 1e3 << ", 0.."
+                   << b * 1e3 << ", 0.." << h * 1e3 << " mm).";
+              refuse(text.str());
+            }
+      }
+  }
+
+
+
+  ProbeSet::ProbeSet(const PlateModel              &plate,
+                     const std::vector<ProbePoint> &probe_points)
+    : mpi_communicator(plate.get_mpi_communicator())
+    , weights(probe_points.size())
+  {
+    const auto &g = plate.get_geometry();
+    for (const auto &point : probe_points)
+      {
+        names.push_back(point.name);
+        points.push_back(point.location(g.length(), g.width(), g.thickness()));
+      }
+    setup_point_weights(plate);
+    setup_stress_weights(plate);
+    setup_reaction_weights(plate);
+  }
+
+
+
+  void
+  ProbeSet::setup_point_weights(const PlateModel &plate)
+  {
+    const auto                          &fe = plate.get_fe();
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        // The displacement is continuous: the average over the cells that
+        // contain the point is each one's value.
+        const auto cells = locally_owned_cells_containing(plate, points[p]);
+        const unsigned int n_cells =
+          Utilities::MPI::sum(static_cast<unsigned int>(cells.size()),
+                              mpi_communicator);
+        AssertThrow(n_cells > 0,
+                    ExcMessage(entry + ": '" + names[p] +
+                               "' lies outside the plate."));
+        std::array<TrilinosWrappers::MPI::Vector, 3> w;
+        for (auto &vector : w)
+          vector.reinit(plate.locally_owned_dofs(),
+                        plate.locally_relevant_dofs(),
+                        mpi_communicator,
+                        /*vector_writable=*/true);
+        for (const auto &[cell, unit_point] : cells)
+          {
+            cell->get_dof_indices(dofs);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              w[fe.system_to_component_index(i).first](dofs[i]) +=
+                fe.shape_value(i, unit_point) / n_cells;
+          }
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            w[c].compress(VectorOperation::add);
+            weights[p][c] = owned_nonzeros(plate, w[c]);
+          }
+      }
+  }
+
+
+
+  namespace
+  {
+    /// The cell of the scalar DoFHandler on the same mesh cell.
+    DoFHandler<3>::active_cell_iterator
+    scalar_cell(const DoFHandler<3>                       &scalar_dofs,
+                const DoFHandler<3>::active_cell_iterator &cell)
+    {
+      return DoFHandler<3>::active_cell_iterator(
+        &scalar_dofs.get_triangulation(),
+        cell->level(),
+        cell->index(),
+        &scalar_dofs);
+    }
+
+    /// Ghosted vectors on scalar_dofs: [0] the number of cells (on all
+    /// ranks) at each node, [1 + p] the coefficients c_j of point p: its
+    /// shape function values N_j(x_p), averaged over the cells that
+    /// contain it.
+    std::vector<TrilinosWrappers::MPI::Vector>
+    recovery_coefficients(const PlateModel            &plate,
+                          const DoFHandler<3>         &scalar_dofs,
+                          const std::vector<Point<3>> &points)
+    {
+      const MPI_Comm comm  = plate.get_mpi_communicator();
+      const IndexSet owned = scalar_dofs.locally_owned_dofs();
+      IndexSet       relevant;
+      DoFTools::extract_locally_relevant_dofs(scalar_dofs, relevant);
+      const FiniteElement<3>              &scalar_fe = scalar_dofs.get_fe();
+      std::vector<types::global_dof_index> sdofs(scalar_fe.n_dofs_per_cell());
+
+      std::vector<TrilinosWrappers::MPI::Vector> sums(1 + points.size());
+      for (auto &v : sums)
+        v.reinit(owned, relevant, comm, /*vector_writable=*/true);
+      for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            scalar_cell(scalar_dofs, cell)->get_dof_indices(sdofs);
+            for (const auto dof : sdofs)
+              sums[0](dof) += 1.;
+          }
+      // A hanging node's recovered value is its parents' interpolation
+      // (StressRecovery): its coefficient goes to them.
+      const AffineConstraints<double> hanging =
+        scalar_hanging_constraints(scalar_dofs);
+      Vector<double> local(sdofs.size());
+      for (unsigned int p = 0; p < points.size(); ++p)
+        {
+          const auto cells = locally_owned_cells_containing(plate, points[p]);
+          const unsigned int n_cells =
+            Utilities::MPI::sum(static_cast<unsigned int>(cells.size()), comm);
+          for (const auto &[cell, unit_point] : cells)
+            {
+              scalar_cell(scalar_dofs, cell)->get_dof_indices(sdofs);
+              for (unsigned int k = 0; k < sdofs.size(); ++k)
+                local[k] = scalar_fe.shape_value(k, unit_point) / n_cells;
+              hanging.distribute_local_to_global(local, sdofs, sums[1 + p]);
+            }
+        }
+      std::vector<TrilinosWrappers::MPI::Vector> ghosted(sums.size());
+      for (unsigned int k = 0; k < sums.size(); ++k)
+        {
+          sums[k].compress(VectorOperation::add);
+          ghosted[k].reinit(owned, relevant, comm);
+          ghosted[k] = sums[k];
+        }
+      return ghosted;
+    }
+  } // namespace
+
+
+
+  void
+  ProbeSet::setup_stress_weights(const PlateModel &plate)
+  {
+    // StressRecovery as a linear functional: sigma(x) = sum_j c_j
+    // sigma_j with c_j = N_j(x) (averaged over the cells containing x) and
+    // sigma_j = (1/n_j) sum over the n_j cells K at scalar node j of
+    // sigma_K(x_j).  First c (ghosted, so that every cell at node j sees
+    // it), then each cell's share of the nodal averages.
+    DoFHandler<3> scalar_dofs(plate.get_dof_handler().get_triangulation());
+    scalar_dofs.distribute_dofs(plate.get_fe().base_element(0));
+    const FiniteElement<3> &scalar_fe = scalar_dofs.get_fe();
+    const unsigned int      n_points  = points.size();
+    const auto ghosted = recovery_coefficients(plate, scalar_dofs, points);
+    const auto cut_planes =
+      dofs_on_cut_planes(plate.get_geometry(), scalar_dofs);
+    std::vector<types::global_dof_index> sdofs(scalar_fe.n_dofs_per_cell());
+
+    // Each cell's stress at its scalar support points, as in
+    // StressRecovery::recover().
+    const auto         &fe = plate.get_fe();
+    const Quadrature<3> support(scalar_fe.get_unit_support_points());
+    FEValues<3> fe_values(plate.get_mapping(), fe, support, update_gradients);
+    PropertyInterpolator                 properties(scalar_fe,
+                                    support.get_points(),
+                                    plate.get_material());
+    const HookeLaw                       hooke(plate.get_material());
+    std::vector<double>                  E, nu, rho;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>> w(n_points);
+    for (auto &list : w)
+      for (auto &vector : list)
+        vector.reinit(plate.locally_owned_dofs(),
+                      plate.locally_relevant_dofs(),
+                      mpi_communicator,
+                      /*vector_writable=*/true);
+
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          scalar_cell(scalar_dofs, cell)->get_dof_indices(sdofs);
+          bool needed = false;
+          for (unsigned int p = 0; p < n_points; ++p)
+            for (const auto dof : sdofs)
+              needed = needed || ghosted[1 + p](dof) != 0.;
+          if (!needed)
+            continue;
+          fe_values.reinit(cell);
+          properties.values(cell, E, nu, rho);
+          cell->get_dof_indices(dofs);
+          for (unsigned int q = 0; q < sdofs.size(); ++q)
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              {
+                const unsigned int    c = fe.system_to_component_index(i).first;
+                const auto            g = fe_values.shape_grad(i, q);
+                SymmetricTensor<2, 3> eps;
+                for (unsigned int d = 0; d < 3; ++d)
+                  eps[c][d] += (c == d ? 1. : 0.5) * g[d];
+                const SymmetricTensor<2, 3> sigma =
+                  hooke.stress(E[q], nu[q], eps);
+                // A node on a cut plane: the odd shear components of
+                // its (whole-plate) average are zero.
+                const auto cut = cut_planes.find(sdofs[q]);
+                const auto planes =
+                  (cut == cut_planes.end() ? 0u : cut->second);
+                for (unsigned int p = 0; p < n_points; ++p)
+                  {
+                    const double factor =
+                      ghosted[1 + p](sdofs[q]) / ghosted[0](sdofs[q]);
+                    if (factor != 0.)
+                      for (unsigned int s = 0; s < 6; ++s)
+                        if (!odd_under_reflection(s, planes))
+                          w[p][s](dofs[i]) +=
+                            factor * sigma[component[s][0]][component[s][1]];
+                  }
+              }
+        }
+    for (unsigned int p = 0; p < n_points; ++p)
+      for (unsigned int s = 0; s < 6; ++s)
+        {
+          w[p][s].compress(VectorOperation::add);
+          weights[p][3 + s] = owned_nonzeros(plate, w[p][s]);
+        }
+  }
+
+
+
+  void
+  ProbeSet::setup_reaction_weights(const PlateModel &plate)
+  {
+    // With z_S = sum of the z shape functions of the supported z DoFs (the
+    // constrained ones without entries, not the hanging nodes):
+    // sum_{i in S} (K u)_i = a(z_S, u) and sum_{i in S} (M a)_i =
+    // (rho z_S, a), with the unconstrained forms of the assembly.
+    const auto                          &fe          = plate.get_fe();
+    const auto                          &constraints = plate.get_constraints();
+    const QGauss<3>                      quadrature(fe.degree + 1);
+    FEValues<3>                          fe_values(plate.get_mapping(),
+                          fe,
+                          quadrature,
+                          update_values | update_gradients | update_JxW_values);
+    PropertyInterpolator                 properties(fe.base_element(0),
+                                    quadrature.get_points(),
+                                    plate.get_material());
+    const HookeLaw                       hooke(plate.get_material());
+    std::vector<double>                  E, nu, rho;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::array<TrilinosWrappers::MPI::Vector, 2> w;
+    for (auto &vector : w)
+      vector.reinit(plate.locally_owned_dofs(),
+                    plate.locally_relevant_dofs(),
+                    mpi_communicator,
+                    /*vector_writable=*/true);
+
+    std::vector<bool> supported(fe.n_dofs_per_cell());
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        {
+          cell->get_dof_indices(dofs);
+          bool any = false;
+          for (unsigned int i = 0; i < dofs.size(); ++i)
+            {
+              const auto *entries = constraints.get_constraint_entries(dofs[i]);
+              supported[i] = fe.system_to_component_index(i).first == 2 &&
+                             constraints.is_constrained(dofs[i]) &&
+                             (entries == nullptr || entries->empty());
+              any = any || supported[i];
+            }
+          if (!any)
+            continue;
+          fe_values.reinit(cell);
+          properties.values(cell, E, nu, rho);
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              // z_S and its strain at q.
+              double                z_value = 0;
+              SymmetricTensor<2, 3> eps_s;
+              for (unsigned int i = 0; i < dofs.size(); ++i)
+                if (supported[i])
+                  {
+                    z_value += fe_values.shape_value(i, q);
+                    const auto g = fe_values.shape_grad(i, q);
+                    for (unsigned int d = 0; d < 3; ++d)
+                      eps_s[2][d] += (d == 2 ? 1. : 0.5) * g[d];
+                  }
+              const SymmetricTensor<2, 3> sigma_s =
+                hooke.stress(E[q], nu[q], eps_s);
+              const double JxW = fe_values.JxW(q);
+              for (unsigned int j = 0; j < dofs.size(); ++j)
+                {
+                  const unsigned int c = fe.system_to_component_index(j).first;
+                  // sigma(z_S) : eps(phi_j) = sigma(z_S)[c] . grad N_j
+                  const auto g = fe_values.shape_grad(j, q);
+                  double     k = 0;
+                  for (unsigned int d = 0; d < 3; ++d)
+                    k += sigma_s[c][d] * g[d];
+                  w[0](dofs[j]) += k * JxW;
+                  if (c == 2)
+                    w[1](dofs[j]) +=
+                      rho[q] * z_value * fe_values.shape_value(j, q) * JxW;
+                }
+            }
+        }
+    for (auto &vector : w)
+      vector.compress(VectorOperation::add);
+    reaction_stiffness = owned_nonzeros(plate, w[0]);
+    reaction_mass      = owned_nonzeros(plate, w[1]);
+  }
+
+
+
+  ProbeValues
+  ProbeSet::evaluate(const TrilinosWrappers::MPI::Vector &u,
+                     const TrilinosWrappers::MPI::Vector &v,
+                     const TrilinosWrappers::MPI::Vector &a,
+                     const bool                           lumped_mass) const
+  {
+    const auto dot = [](const Weights                       &w,
+                        const TrilinosWrappers::MPI::Vector &x) {
+      double sum = 0;
+      for (const auto &[dof, weight] : w)
+        sum += weight * x(dof);
+      return sum;
+    };
+    // Local sums, then one all-reduce: per point u, v, a (3 each) and the
+    // stress (6), then the reaction.
+    const unsigned int  n = points.size();
+    std::vector<double> local(15 * n + 1), global(15 * n + 1);
+    for (unsigned int p = 0; p < n; ++p)
+      {
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            local[15 * p + c]     = dot(weights[p][c], u);
+            local[15 * p + 3 + c] = dot(weights[p][c], v);
+            local[15 * p + 6 + c] = dot(weights[p][c], a);
+          }
+        for (unsigned int s = 0; s < 6; ++s)
+          local[15 * p + 9 + s] = dot(weights[p][3 + s], u);
+      }
+    local[15 * n] =
+      dot(reaction_stiffness, u) + (lumped_mass ? 0. : dot(reaction_mass, a));
+    Utilities::MPI::sum(ArrayView<const double>(local),
+                        mpi_communicator,
+                        ArrayView<double>(global));
+
+    ProbeValues values;
+    for (unsigned int p = 0; p < n; ++p)
+      {
+        Tensor<1, 3>          d, vel, acc;
+        SymmetricTensor<2, 3> sigma;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            d[c]   = global[15 * p + c];
+            vel[c] = global[15 * p + 3 + c];
+            acc[c] = global[15 * p + 6 + c];
+          }
+        for (unsigned int s = 0; s < 6; ++s)
+          sigma[component[s][0]][component[s][1]] = global[15 * p + 9 + s];
+        values.displacement.push_back(d);
+        values.velocity.push_back(vel);
+        values.acceleration.push_back(acc);
+        values.stress.push_back(sigma);
+      }
+    values.support_reaction_z = global[15 * n];
+    return values;
+  }
+
+
+
+  std::vector<std::pair<std::string, int>>
+  ProbeSet::columns() const
+  {
+    std::vector<std::pair<std::string, int>> list = {{"t_us", 3},
+                                                     {"support_reaction_z_N",
+                                                      3}};
+    static const char *const stress[6] = {"xx", "yy", "zz", "xy", "xz", "yz"};
+    for (const auto &name : names)
+      {
+        for (const char *c : {"x", "y", "z"})
+          list.emplace_back(name + "_u" + c + "_um", 6);
+        for (const char *c : {"x", "y", "z"})
+          list.emplace_back(name + "_v" + c + "_m_s", 6);
+        for (const char *c : {"x", "y", "z"})
+          list.emplace_back(name + "_a" + c + "_m_s2", 1);
+        for (const char *c : stress)
+          list.emplace_back(name + "_sigma_" + c + "_MPa", 4);
+      }
+    return list;
+  }
+
+
+
+  std::vector<double>
+  ProbeSet::row(const double t, const ProbeValues &values) const
+  {
+    std::vector<double> row = {t * 1e6, values.support_reaction_z};
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        for (unsigned int c = 0; c < 3; ++c)
+          row.push_back(values.displacement[p][c] * 1e6);
+        for (unsigned int c = 0; c < 3; ++c)
+          row.push_back(values.velocity[p][c]);
+        for (unsigned int c = 0; c < 3; ++c)
+          row.push_back(values.acceleration[p][c]);
+        for (unsigned int s = 0; s < 6; ++s)
+          row.push_back(values.stress[p][component[s][0]][component[s][1]] *
+                        1e-6);
+      }
+    return row;
+  }
+} // namespace fgimpact

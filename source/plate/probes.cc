@@ -1,0 +1,169 @@
+#include <deal.II/base/quadrature.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <fgimpact/plate/probes.h>
+
+namespace fgimpact
+{
+  namespace
+  {
+    constexpr unsigned int voigt[6][2] =
+      {{0, 0}, {1, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};
+  }
+
+
+
+  std::vector<std::pair<DoFHandler<3>::active_cell_iterator, Point<3>>>
+  locally_owned_cells_containing(const PlateModel &plate,
+                                 const Point<3>   &location)
+  {
+    std::vector<std::pair<DoFHandler<3>::active_cell_iterator, Point<3>>> cells;
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const double tolerance = 1e-10 * cell->diameter();
+          bool         inside    = true;
+          for (unsigned int d = 0; d < 3; ++d)
+            inside = inside && location[d] >= cell->vertex(0)[d] - tolerance &&
+                     location[d] <= cell->vertex(7)[d] + tolerance;
+          if (inside)
+            cells.emplace_back(
+              cell,
+              GeometryInfo<3>::project_to_unit_cell(
+                plate.get_mapping().transform_real_to_unit_cell(cell,
+                                                                location)));
+        }
+    return cells;
+  }
+
+
+
+  std::vector<std::pair<types::global_dof_index, double>>
+  owned_nonzeros(const PlateModel                    &plate,
+                 const TrilinosWrappers::MPI::Vector &vector)
+  {
+    std::vector<std::pair<types::global_dof_index, double>> list;
+    for (const auto dof : plate.locally_owned_dofs())
+      if (vector(dof) != 0.)
+        list.emplace_back(dof, vector(dof));
+    return list;
+  }
+
+
+
+  PointProbe::PointProbe(const PlateModel &plate, const Point<3> &location)
+    : point(location)
+    , mpi_communicator(plate.get_mpi_communicator())
+  {
+    const auto &fe = plate.get_fe();
+
+    const auto         cells = locally_owned_cells_containing(plate, location);
+    const unsigned int n_adjacent_cells =
+      Utilities::MPI::sum(static_cast<unsigned int>(cells.size()),
+                          mpi_communicator);
+    AssertThrow(n_adjacent_cells > 0,
+                ExcMessage("A probe point lies outside the plate."));
+
+    const double w = 1. / n_adjacent_cells;
+
+    // The weights of the 3 displacement and 6 stress components, summed
+    // into distributed vectors so that each ends up on the rank that owns
+    // its DoF: evaluation then needs no ghost values.
+    std::array<TrilinosWrappers::MPI::Vector, 9> weights;
+    for (auto &vector : weights)
+      vector.reinit(plate.locally_owned_dofs(),
+                    plate.locally_relevant_dofs(),
+                    mpi_communicator,
+                    /*vector_writable=*/true);
+    std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
+
+    for (const auto &[cell, unit_point] : cells)
+      {
+        const Quadrature<3> quadrature(std::vector<Point<3>>{unit_point});
+        FEValues<3>         fe_values(plate.get_mapping(),
+                              fe,
+                              quadrature,
+                              update_values | update_gradients);
+        fe_values.reinit(cell);
+        cell->get_dof_indices(local_dofs);
+
+        std::vector<double>  E, nu, rho;
+        PropertyInterpolator properties(fe.base_element(0),
+                                        quadrature.get_points(),
+                                        plate.get_material());
+        properties.values(cell, E, nu, rho);
+
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          {
+            const unsigned int c = fe.system_to_component_index(i).first;
+            const auto         g = fe_values.shape_grad(i, 0);
+            // The displacement is continuous: each cell gives the same
+            // value, so averaging is harmless.
+            weights[c](local_dofs[i]) += w * fe_values.shape_value(i, 0);
+            // The stress of this shape function, e_c (x) grad N: the
+            // weights of the 6 independent components.
+            SymmetricTensor<2, 3> eps;
+            for (unsigned int d = 0; d < 3; ++d)
+              eps[c][d] += (c == d ? 1. : 0.5) * g[d];
+            const SymmetricTensor<2, 3> sigma =
+              HookeLaw::stress(E[0], nu[0], eps);
+            for (unsigned int s = 0; s < 6; ++s)
+              {
+                const double value = sigma[voigt[s][0]][voigt[s][1]];
+                if (value != 0.)
+                  weights[3 + s](local_dofs[i]) += w * value;
+              }
+          }
+      }
+
+    for (unsigned int k = 0; k < 9; ++k)
+      {
+        weights[k].compress(VectorOperation::add);
+        (k < 3 ? displacement_weights[k] : stress_weights[k - 3]) =
+          owned_nonzeros(plate, weights[k]);
+      }
+  }
+
+
+
+  template <std::size_t N>
+  std::array<double, N>
+  PointProbe::apply(const std::array<Weights, N>        &weights,
+                    const TrilinosWrappers::MPI::Vector &u) const
+  {
+    // Local sums over the owned DoFs, then one all-reduce for all N.
+    std::array<double, N> local{}, global;
+    for (std::size_t k = 0; k < N; ++k)
+      for (const auto &[dof, weight] : weights[k])
+        local[k] += weight * u(dof);
+    Utilities::MPI::sum(ArrayView<const double>(local),
+                        mpi_communicator,
+                        ArrayView<double>(global));
+    return global;
+  }
+
+
+
+  Tensor<1, 3>
+  PointProbe::displacement(const TrilinosWrappers::MPI::Vector &u) const
+  {
+    const auto   values = apply(displacement_weights, u);
+    Tensor<1, 3> d;
+    for (unsigned int c = 0; c < 3; ++c)
+      d[c] = values[c];
+    return d;
+  }
+
+
+
+  SymmetricTensor<2, 3>
+  PointProbe::stress(const TrilinosWrappers::MPI::Vector &u) const
+  {
+    const auto            values = apply(stress_weights, u);
+    SymmetricTensor<2, 3> sigma;
+    for (unsigned int s = 0; s < 6; ++s)
+      sigma[voigt[s][0]][voigt[s][1]] = values[s];
+    return sigma;
+  }
+} // namespace fgimpact

@@ -1,0 +1,296 @@
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/app/simulator.h>
+#include <fgimpact/contact/contact_law.h>
+#include <fgimpact/contact/contact_model.h>
+#include <fgimpact/contact/impactor.h>
+#include <fgimpact/output/impact_summary.h>
+#include <fgimpact/plate/plate_fields.h>
+#include <fgimpact/plate/probes.h>
+#include <fgimpact/study/impact_study_engine.h>
+#include <fgimpact/time/newmark.h>
+#include <fgimpact/time/time_stepper.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /// A case's contact model, built as ImpactDriver::setup() builds it.
+    std::unique_ptr<ContactModel>
+    contact_model_of(const Parameters      &p,
+                     const HertzContactLaw &law,
+                     const Impactor        &impactor,
+                     const PlateModel      &plate)
+    {
+      const PlateGeometry &g = plate.get_geometry();
+      return create_contact_model(
+        p.contact_model,
+        law,
+        plate,
+        impactor.radius(),
+        impactor.impact_point(g.length(), g.width()),
+        expected_contact_radius(p, plate.get_material(), g.thickness()),
+        top_face_modulus(plate.get_material(), g.thickness()));
+    }
+  } // namespace
+
+
+
+  ImpactStudyEngine::ImpactStudyEngine(const PlateModel &plate,
+                                       const Timer      &total_timer)
+    : plate(plate)
+    , total_timer(total_timer)
+  {}
+
+
+
+  std::string
+  ImpactStudyEngine::unsupported(const Parameters &p,
+                                 const PlateModel &plate,
+                                 const double      memory_limit)
+  {
+    const auto &ti = p.time_integration;
+    if (p.problem_type != ProblemType::impact)
+      return "Problem type is not impact";
+    if (p.contact_model.model != ContactModelParameters::Model::hertz_node)
+      return "Contact/Model is not hertz node";
+    if (ti.scheme != TimeStepper::Scheme::implicit_newmark)
+      return "Time integration/Scheme is not implicit";
+    if (ti.newmark.beta != 0.25 || ti.newmark.gamma != 0.5)
+      return "Newmark beta/gamma are not 1/4, 1/2 (the energy identity "
+             "holds for the average acceleration rule only)";
+    if (p.output.vtu_interval > 0)
+      return "Output/VTU interval > 0 (VTU needs the fields)";
+    const double bytes =
+      16. * ti.n_steps(ti.time_step) * plate.locally_owned_dofs().n_elements();
+    if (bytes > memory_limit)
+      return "the unit responses would need " +
+             std::to_string(static_cast<long long>(bytes / 1e6)) +
+             " MB per rank";
+    return "";
+  }
+
+
+
+  bool
+  ImpactStudyEngine::prepare(const Parameters &p)
+  {
+    setup_time = total_timer.wall_time();
+    Timer                 timer;
+    const Impactor        impactor(p.impactor);
+    const HertzContactLaw law(p.contact, plate.get_material(), impactor);
+    const PlateGeometry  &g       = plate.get_geometry();
+    const auto            contact = contact_model_of(p, law, impactor, plate);
+    dofs                          = contact->contact_dofs();
+    const auto stepper            = create_time_stepper(p.time_integration,
+                                             p.linear_solver,
+                                             plate,
+                                             *contact,
+                                             g.share() * impactor.mass(),
+                                             impactor.initial_velocity());
+    stepper->initialize(false);
+    factorization_time = timer.wall_time();
+    dt                 = stepper->time_step();
+    n_steps            = p.time_integration.n_steps(dt);
+
+    // The history's probes, as the monitor places them.
+    const auto       points = history_probe_points(g);
+    const PointProbe mid(plate, points[0]), top(plate, points[1]);
+    // The probes read the unit response with the constraints distributed
+    // (a probe on a hanging node reads its parents' interpolation).
+    PlateFields fields(plate);
+    contact_response.assign(n_steps, 0.);
+    probe_response.assign(n_steps, PlateSample());
+    const std::size_t n_local = plate.locally_owned_dofs().n_elements();
+    // Column j - 1: the step's local velocity values (contiguous).
+    LAPACKFullMatrix<double> V(n_local, n_steps), MV(n_local, n_steps);
+    const bool               supported =
+      stepper->unit_response(n_steps,
+                             [&](const unsigned int                   j,
+                                 const TrilinosWrappers::MPI::Vector &u,
+                                 const TrilinosWrappers::MPI::Vector &v,
+                                 const TrilinosWrappers::MPI::Vector &Mv) {
+                               contact_response[j - 1] =
+                                 plate.dof_values(u, dofs)[0];
+                               fields.update_displacement(u);
+                               probe_response[j - 1] =
+                                 probe_plate(mid, top, fields.displacement());
+                               for (std::size_t i = 0; i < n_local; ++i)
+                                 {
+                                   V(i, j - 1)  = v.begin()[i];
+                                   MV(i, j - 1) = Mv.begin()[i];
+                                 }
+                             });
+    if (!supported)
+      {
+        reason = "the time stepper has no unit response here (an iterative "
+                 "linear solver: set Linear solver/Type = direct)";
+        return false;
+      }
+    compliance    = -contact_response[0];
+    response_time = timer.wall_time() - factorization_time;
+
+    LAPACKFullMatrix<double> G(n_steps, n_steps);
+    V.Tmmult(G, MV);
+    gram.reinit(n_steps, n_steps);
+    for (unsigned int i = 0; i < n_steps; ++i)
+      for (unsigned int j = 0; j < n_steps; ++j)
+        gram(i, j) = G(i, j);
+    Utilities::MPI::sum(gram, plate.get_mpi_communicator(), gram);
+    prepare_time = timer.wall_time();
+    gram_time    = prepare_time - response_time - factorization_time;
+    return true;
+  }
+
+
+
+  std::string
+  ImpactStudyEngine::preparation_timing() const
+  {
+    std::ostringstream s;
+    s << "factorization " << factorization_time << " s, unit response pass "
+      << response_time << " s (" << n_steps << " solves), Gram matrix "
+      << gram_time << " s";
+    return s.str();
+  }
+
+
+
+  PlateSample
+  ImpactStudyEngine::convolved_plate(const unsigned int         n,
+                                     const std::vector<double> &F) const
+  {
+    // Step n (F[1..n] known): sum_k F_k r_{n-k} over the forces so far.
+    PlateSample s;
+    double      sigma[6] = {0, 0, 0, 0, 0, 0};
+    for (unsigned int k = 1; k <= n; ++k)
+      if (F[k] != 0.)
+        {
+          const PlateSample &r = probe_response[n - k];
+          s.W_mid += F[k] * r.W_mid;
+          s.W_top += F[k] * r.W_top;
+          for (unsigned int c = 0; c < 6; ++c)
+            sigma[c] += F[k] * r.sigma_mid.access_raw_entry(c);
+        }
+    for (unsigned int c = 0; c < 6; ++c)
+      s.sigma_mid.access_raw_entry(c) = sigma[c];
+    // Kinetic energy 1/2 v^T M v with v = sum_k F_k v_{n-k}: the quadratic
+    // form of G over the steps with a force (symmetric: half of it).
+    double kinetic = 0;
+    for (unsigned int k = 1; k <= n; ++k)
+      if (F[k] != 0.)
+        {
+          double row = 0.5 * gram(n - k, n - k) * F[k];
+          for (unsigned int l = 1; l < k; ++l)
+            row += gram(n - k, n - l) * F[l];
+          kinetic += F[k] * row;
+        }
+    s.E_kinetic = kinetic;
+    return s;
+  }
+
+
+
+  const ImpactResults &
+  ImpactStudyEngine::run_case(const Parameters &p)
+  {
+    const Impactor        impactor(p.impactor);
+    const HertzContactLaw law(p.contact, plate.get_material(), impactor);
+    const auto            contact = contact_model_of(p, law, impactor, plate);
+    AssertThrow(contact->contact_dofs() == dofs,
+                ExcMessage("study: a case's contact node differs from the "
+                           "group's; vary Impactor/Impact point x/y only in "
+                           "separate runs."));
+    AssertThrow(p.time_integration.n_steps(dt) == n_steps,
+                ExcMessage("study: a case's number of time steps differs "
+                           "from the group's."));
+    const double m = impactor.mass(), V0 = impactor.initial_velocity();
+    // A symmetric part (Geometry/Symmetry): the part's share of the ball's
+    // mass meets the part's share of the contact force, as in ImpactDriver;
+    // the monitor reports the whole plate.
+    const double share  = plate.get_geometry().share();
+    const double m_part = share * m;
+
+    results        = ImpactResults();
+    results.n_dofs = plate.n_dofs();
+    results.n_mpi_ranks =
+      Utilities::MPI::n_mpi_processes(plate.get_mpi_communicator());
+    results.impactor_mass      = m;
+    results.plate_mass         = plate.total_mass() / share;
+    results.setup_time         = setup_time;
+    results.factorization_time = factorization_time;
+    contact->fill_results(results);
+    results.model = describe_model(p, plate, dt);
+
+    // No probes.csv: its probes need the fields (--study-case K writes it).
+    OutputParameters output = p.output;
+    output.probe_points.points.clear();
+    ImpactMonitor monitor(output, plate, *contact, m, V0, dt, n_steps, results);
+    for (const auto &observer : observers)
+      monitor.add_row_observer(observer);
+    ImpactorState ball;
+    ball.v = V0;
+    ContactState state;
+    monitor.record(0, 0., PlateSample(), ball, state);
+
+    const NewmarkIntegrator newmark(p.time_integration.newmark, dt);
+    const double            a0 = newmark.mass_factor();
+    FullMatrix<double>      C(1, 1);
+    C(0, 0) = compliance;
+    std::vector<double> F(n_steps + 1, 0.);
+    Vector<double>      u_free(1);
+    double              plate_energy = 0, last_uc = 0;
+    Timer               loop_timer;
+    for (unsigned int n = 0; n < n_steps; ++n)
+      {
+        const double t = (n + 1) * dt;
+        // The contact-free displacement at the contact DoF (what the
+        // stepper solves for): the response to the forces so far.
+        double uc = 0;
+        for (unsigned int k = 1; k <= n; ++k)
+          uc += F[k] * contact_response[n + 1 - k];
+        u_free[0]            = uc;
+        const double w_tilde = newmark.predictor(ball.w, ball.v, ball.a) / a0;
+        contact->solve_implicit(u_free,
+                                C,
+                                w_tilde,
+                                1. / (m_part * a0),
+                                p.time_integration.newton,
+                                state);
+        AssertThrow(state.newton_iterations != numbers::invalid_unsigned_int,
+                    ExcMessage(
+                      "Newton for the contact did not converge at " +
+                      time_step_label(n + 1, t) + " within " +
+                      std::to_string(p.time_integration.newton.max_iterations) +
+                      " iterations; reduce Time integration/Time step or "
+                      "raise Newton/Max iterations."));
+        F[n + 1] = state.force;
+        newmark.update(w_tilde - F[n + 1] / (m_part * a0),
+                       ball.w,
+                       ball.v,
+                       ball.a);
+
+        PlateSample sample = convolved_plate(n + 1, F);
+        // The plate's energy grows by the contact force's work on the
+        // contact DoF (average acceleration: exactly, per step).
+        plate_energy +=
+          0.5 * (F[n] + F[n + 1]) * (last_uc - state.node_displacement);
+        last_uc         = state.node_displacement;
+        sample.E_strain = plate_energy - sample.E_kinetic;
+        monitor.record(n + 1, t, sample, ball, state);
+      }
+    monitor.close_output();
+    AssertThrow(monitor.output_failure().empty(),
+                ExcOutputFailure(monitor.output_failure()));
+    monitor.finish(ball,
+                   n_steps,
+                   "completed",
+                   loop_timer.wall_time(),
+                   total_timer.wall_time());
+    return results;
+  }
+} // namespace fgimpact

@@ -1,0 +1,598 @@
+// Parameter studies: the Study subsection, the cases, their grouping by
+// shared plate, and study.csv.  The convolution engine itself is in
+// impact_study_engine.cc.
+
+#include <deal.II/base/utilities.h>
+
+#include <fgimpact/app/parameters.h>
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/app/simulator.h>
+#include <fgimpact/output/output_files.h>
+#include <fgimpact/study/impact_study_engine.h>
+#include <fgimpact/study/study.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+
+namespace fgimpact
+{
+  void
+  StudyParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Study");
+    {
+      prm.declare_entry(
+        "Entries",
+        "",
+        Patterns::Anything(),
+        "The entries a parameter study varies, separated by ';', each "
+        "'Section/Entry = v1, v2, ...' (nested subsections joined by '/'), "
+        "e.g. 'Impactor/Initial velocity = 1, 2, 3, 4'. Empty: no study, "
+        "one run. Each case writes a normal output directory "
+        "Directory/case_NNN and Directory/study.csv gathers their "
+        "summaries. The command-line option --study appends to this list.");
+      prm.declare_entry("Combination",
+                        "product",
+                        Patterns::Selection("product|zip"),
+                        "product: every combination of the lists (the first "
+                        "entry varies slowest). zip: the i-th case takes the "
+                        "i-th value of every list (all lists equally long).");
+      prm.declare_entry(
+        "Method",
+        "auto",
+        Patterns::Selection("auto|time loop"),
+        "auto: cases that share the plate and differ only in the impactor, "
+        "the contact law's constants or Newton's control run as "
+        "convolutions of the plate's unit response (Hertz node contact, "
+        "implicit Newmark with beta = 1/4, gamma = 1/2, no VTU), the others "
+        "through the time loop (logged). time loop: every case through the "
+        "normal time loop.");
+      prm.declare_entry("Write VTU",
+                        "false",
+                        Patterns::Bool(),
+                        "false: the cases write no VTU (Output/VTU interval "
+                        "= 0, so that they can run by convolution); "
+                        "--study-case K reruns one case with the input's "
+                        "VTU output. true: the input's VTU interval (time "
+                        "loop).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  StudyParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Study");
+    entries.clear();
+    for (const auto &entry :
+         Utilities::split_string_list(prm.get("Entries"), ';'))
+      if (!entry.empty())
+        entries.push_back(entry);
+    combination = (prm.get("Combination") == "zip" ? Combination::zip :
+                                                     Combination::product);
+    method      = (prm.get("Method") == "time loop" ? Method::time_loop :
+                                                      Method::automatic);
+    write_vtu   = prm.get_bool("Write VTU");
+    prm.leave_subsection();
+    n_file_entries = entries.size();
+  }
+
+
+
+  void
+  StudyParameters::append_command_line(
+    const std::vector<std::string> &study_options)
+  {
+    entries.insert(entries.end(), study_options.begin(), study_options.end());
+  }
+
+
+
+  std::string
+  StudyParameters::origin(const std::size_t i) const
+  {
+    return i < n_file_entries ? "Study/Entries" : "--study";
+  }
+
+
+
+  std::vector<StudyCase>
+  expand_study(const StudyParameters &study)
+  {
+    std::vector<std::string>              paths;
+    std::vector<std::string>              origins;
+    std::vector<std::vector<std::string>> lists;
+    for (std::size_t i = 0; i < study.entries.size(); ++i)
+      {
+        const std::string &entry = study.entries[i];
+        const std::string  where = study.origin(i) + ": '";
+        const auto         eq    = entry.find('=');
+        AssertThrow(eq != std::string::npos && eq > 0,
+                    ExcMessage(where + entry +
+                               "' is not 'Section/Entry = v1, v2, ...'"));
+        const std::string path = Utilities::trim(entry.substr(0, eq));
+        AssertThrow(std::find(paths.begin(), paths.end(), path) == paths.end(),
+                    ExcMessage(where + path +
+                               "' is listed twice (the second list would "
+                               "replace the first); give it once."));
+        paths.push_back(path);
+        origins.push_back(study.origin(i));
+        lists.push_back(
+          Utilities::split_string_list(entry.substr(eq + 1), ','));
+        AssertThrow(!lists.back().empty() && !paths.back().empty(),
+                    ExcMessage(where + entry + "' has no values"));
+      }
+    std::vector<StudyCase> cases;
+    if (paths.empty())
+      return cases;
+    if (study.combination == StudyParameters::Combination::zip)
+      {
+        for (const auto &list : lists)
+          AssertThrow(list.size() == lists[0].size(),
+                      ExcMessage("Study/Combination = zip: the lists of "
+                                 "Study/Entries differ in length"));
+        for (std::size_t i = 0; i < lists[0].size(); ++i)
+          {
+            StudyCase c;
+            c.paths   = paths;
+            c.origins = origins;
+            for (const auto &list : lists)
+              c.values.push_back(list[i]);
+            cases.push_back(c);
+          }
+        return cases;
+      }
+    // Cartesian product, the last entry varying fastest.
+    std::vector<std::size_t> index(paths.size(), 0);
+    while (true)
+      {
+        StudyCase c;
+        c.paths   = paths;
+        c.origins = origins;
+        for (std::size_t e = 0; e < paths.size(); ++e)
+          c.values.push_back(lists[e][index[e]]);
+        cases.push_back(c);
+        std::size_t e = paths.size();
+        while (e > 0 && ++index[e - 1] == lists[e - 1].size())
+          index[--e] = 0;
+        if (e == 0)
+          return cases;
+      }
+  }
+
+
+
+  namespace
+  {
+    /// A case, parsed and checked.
+    struct ParsedCase
+    {
+      StudyCase   study_case;
+      Parameters  parameters;
+      std::string prm_text; // parameters.prm
+      // The checkpoints' copy (PRM | Short), as main.cc stores it, so that
+      // the resume command printed after a signal (--resume case_NNN,
+      // which reads parameters.prm) finds the same parameters.
+      std::string checkpoint_text;
+      std::string group; // the plate's key
+    };
+
+    /**
+     * The entries that leave the plate, its mesh and the time step alone:
+     * the impactor (unless an automatic contact refinement radius makes
+     * the mesh depend on it), the Hertz law's constants, Newton's control.
+     */
+    bool
+    is_case_entry(const std::string &path, const Parameters &p)
+    {
+      static const std::set<std::string> impactor = {
+        "Impactor/Radius",
+        "Impactor/Density",
+        "Impactor/Mass",
+        "Impactor/Initial velocity",
+        "Impactor/Material",
+        "Impactor/Young's modulus",
+        "Impactor/Poisson's ratio"};
+      static const std::set<std::string> others = {"Contact/Plate modulus",
+                                                   "Contact/Swanson beta",
+                                                   "Contact/Contact stiffness",
+                                                   "Newton/Tolerance",
+                                                   "Newton/Max iterations"};
+      const bool                         mesh_follows_impactor =
+        (p.geometry.contact_refinement_levels > 0 &&
+         p.geometry.contact_refinement_radius == 0.) ||
+        (p.geometry.contact_refinement_auto && p.uses_resolved_contact());
+      return others.count(path) > 0 ||
+             (impactor.count(path) > 0 && !mesh_follows_impactor);
+    }
+
+    std::string
+    case_directory(const std::string &base, const unsigned int i)
+    {
+      char name[32];
+      std::snprintf(name, sizeof(name), "/case_%03u", i);
+      return base + name;
+    }
+
+    /// Parse every case (input errors: before anything is written).
+    std::vector<ParsedCase>
+    parse_cases(const StudyParameters          &study,
+                const InputFile                &input,
+                const std::vector<std::string> &overrides,
+                const std::string              &base_directory)
+    {
+      std::vector<ParsedCase> parsed;
+      const auto              cases = expand_study(study);
+      for (unsigned int i = 0; i < cases.size(); ++i)
+        {
+          ParameterHandler prm;
+          Parameters::declare_parameters(prm);
+          input.parse_into(prm, overrides);
+          for (unsigned int e = 0; e < cases[i].paths.size(); ++e)
+            apply_override(prm, cases[i].assignment(e), cases[i].origins[e]);
+          apply_override(prm,
+                         "Output/Directory=" +
+                           case_directory(base_directory, i));
+          apply_override(prm, "Study/Entries=");
+          if (!study.write_vtu)
+            apply_override(prm, "Output/VTU interval=0");
+          FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
+            prm, input.input_name());
+          ParsedCase c;
+          c.study_case = cases[i];
+          c.parameters.parse_parameters(prm);
+          c.parameters.validate();
+          std::ostringstream text;
+          prm.print_parameters(text, ParameterHandler::PRM);
+          c.prm_text = text.str();
+          std::ostringstream short_text;
+          prm.print_parameters(short_text,
+                               ParameterHandler::OutputStyle(
+                                 ParameterHandler::PRM |
+                                 ParameterHandler::Short));
+          c.checkpoint_text = short_text.str();
+          for (unsigned int e = 0; e < cases[i].paths.size(); ++e)
+            if (!is_case_entry(cases[i].paths[e], c.parameters))
+              c.group += cases[i].assignment(e) + ";";
+          parsed.push_back(std::move(c));
+        }
+      return parsed;
+    }
+
+    /// The case's output directory with parameters.prm and input.prm.
+    void
+    start_case_files(const ParsedCase &c, const InputFile &input)
+    {
+      run_on_root(MPI_COMM_WORLD, [&]() {
+        prepare_output_directory(c.parameters.output);
+        write_file_atomically(c.parameters.output.directory + "/parameters.prm",
+                              c.prm_text);
+        write_file_atomically(c.parameters.output.directory + "/input.prm",
+                              input.original());
+      });
+    }
+
+    /// A case through the normal set-up and time loop.
+    void
+    run_time_loop(const ParsedCase &c, const InputFile &input)
+    {
+      Simulator          simulator(c.parameters, MPI_COMM_WORLD);
+      CheckpointSettings checkpoint;
+      checkpoint.parameters_text = c.checkpoint_text;
+      simulator.set_checkpointing(checkpoint);
+      simulator.setup();
+      start_case_files(c, input);
+      simulator.run();
+    }
+
+    /// "case_NNN" of a case's output directory.
+    std::string
+    case_name(const std::string &directory)
+    {
+      return directory.substr(directory.find_last_of('/') + 1);
+    }
+
+    /// The one-line text of a failure (as report_failure() prints it).
+    std::string
+    failure_text(const std::exception_ptr &failure)
+    {
+      try
+        {
+          std::rethrow_exception(failure);
+        }
+      catch (const ExceptionBase &e)
+        {
+          return message_of(e);
+        }
+      catch (const std::exception &e)
+        {
+          return one_line(e.what());
+        }
+      catch (...)
+        {
+          return "unknown exception";
+        }
+    }
+
+    /// A failed case whose summary.txt was not written (the convolution
+    /// engine's failures): status = failed, as a failed single run's.
+    void
+    ensure_failed_summary(const std::string &directory)
+    {
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      std::ifstream in(directory + "/summary.txt");
+      std::string   text((std::istreambuf_iterator<char>(in)),
+                       std::istreambuf_iterator<char>());
+      if (text.find("status = failed") != std::string::npos)
+        return;
+      try
+        {
+          SummaryWriter out;
+          out.add_text("status", "failed");
+          out.write(directory + "/summary.txt");
+        }
+      catch (...)
+        {}
+    }
+
+    /// The group's cases: by convolution if the engine applies; a case
+    /// that fails is added to failures (name, one-line reason).
+    void
+    run_group(const StudyParameters                            &study,
+              const std::vector<const ParsedCase *>            &cases,
+              const InputFile                                  &input,
+              const Timer                                      &study_timer,
+              std::vector<std::pair<std::string, std::string>> &failures)
+    {
+      ConditionalOStream pcout(
+        std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+      const Parameters &first = cases[0]->parameters;
+      std::string       reason;
+      if (study.method == StudyParameters::Method::time_loop)
+        reason = "Study/Method = time loop";
+      std::unique_ptr<Simulator>         plate_owner;
+      std::unique_ptr<ImpactStudyEngine> engine;
+      if (reason.empty())
+        {
+          plate_owner = std::make_unique<Simulator>(first, MPI_COMM_WORLD);
+          const PlateModel &plate = plate_owner->setup_plate();
+          for (const auto *c : cases)
+            if (reason.empty())
+              reason = ImpactStudyEngine::unsupported(c->parameters, plate);
+          if (reason.empty())
+            {
+              engine = std::make_unique<ImpactStudyEngine>(plate, study_timer);
+              if (!engine->prepare(first))
+                reason = engine->fallback_reason();
+              else
+                pcout << "  study: " << cases.size()
+                      << " case(s) by convolution of the plate's unit "
+                         "response ("
+                      << engine->preparation_timing() << ")\n";
+            }
+        }
+      if (!reason.empty())
+        pcout << "  study: " << cases.size()
+              << " case(s) through the time loop: " << reason << '\n';
+      for (const auto *c : cases)
+        {
+          pcout << "study case " << c->parameters.output.directory << ":";
+          for (unsigned int e = 0; e < c->study_case.paths.size(); ++e)
+            pcout << ' ' << c->study_case.assignment(e) << ';';
+          pcout << '\n';
+          try
+            {
+              if (engine && reason.empty())
+                {
+                  start_case_files(*c, input);
+                  engine->run_case(c->parameters);
+                }
+              else
+                run_time_loop(*c, input);
+            }
+          catch (const RunInterrupted &)
+            {
+              throw; // a signal stops the study
+            }
+          catch (...)
+            {
+              // The case failed (its summary.txt says so); the others run.
+              failures.push_back({case_name(c->parameters.output.directory),
+                                  failure_text(std::current_exception())});
+              pcout << "  study case failed: " << failures.back().second
+                    << '\n';
+              ensure_failed_summary(c->parameters.output.directory);
+            }
+        }
+    }
+
+    /// "key = value" lines of a summary.txt ('#' lines skipped).
+    std::vector<std::pair<std::string, std::string>>
+    read_summary(const std::string &filename)
+    {
+      std::vector<std::pair<std::string, std::string>> entries;
+      std::ifstream                                    in(filename);
+      std::string                                      line;
+      while (std::getline(in, line))
+        {
+          const auto eq = line.find(" = ");
+          if (line.empty() || line[0] == '#' || eq == std::string::npos)
+            continue;
+          entries.emplace_back(line.substr(0, eq), line.substr(eq + 3));
+        }
+      return entries;
+    }
+
+    /// study.csv: case, the varied entries, every summary key (of the
+    /// first case: the numbers, "none", and the words that say what was
+    /// modelled and how the case ended; no value holds a comma).
+    void
+    write_study_csv(const std::vector<ParsedCase> &cases,
+                    const std::string             &filename)
+    {
+      std::vector<std::string> keys;
+      for (const auto &c : cases)
+        for (const auto &[key, value] :
+             read_summary(c.parameters.output.directory + "/summary.txt"))
+          if (std::find(keys.begin(), keys.end(), key) == keys.end())
+            keys.push_back(key);
+      std::ostringstream csv;
+      csv << "case";
+      for (const auto &path : cases[0].study_case.paths)
+        csv << ", " << path;
+      for (const auto &key : keys)
+        csv << ", " << key;
+      csv << '\n';
+      for (unsigned int i = 0; i < cases.size(); ++i)
+        {
+          std::map<std::string, std::string> summary;
+          for (const auto &[key, value] : read_summary(
+                 cases[i].parameters.output.directory + "/summary.txt"))
+            summary[key] = value;
+          csv << i;
+          for (const auto &value : cases[i].study_case.values)
+            csv << ", " << value;
+          for (const auto &key : keys)
+            csv << ", " << (summary.count(key) ? summary[key] : "none");
+          csv << '\n';
+        }
+      write_file_atomically(filename, csv.str());
+    }
+
+    /// The study's directory checked, locked and cleaned; an unusable one
+    /// is bad input (exit code 1, as for a single run), 0 if all went well.
+    int
+    prepare_study_directory(const OutputParameters &output, const bool root)
+    {
+      try
+        {
+          run_on_root(MPI_COMM_WORLD, [&]() {
+            check_output_directory_usable(output.directory);
+            lock_output_directory(output.directory);
+            prepare_output_directory(output);
+          });
+        }
+      catch (const ExcOutputFailure &)
+        {
+          throw;
+        }
+      catch (...)
+        {
+          return report_failure(std::current_exception(), root, 1);
+        }
+      return 0;
+    }
+
+    /// The cases grouped by their plate (ParsedCase::group), the groups in
+    /// the order of their first case.
+    std::vector<std::vector<const ParsedCase *>>
+    groups_of(const std::vector<ParsedCase> &cases)
+    {
+      std::vector<std::string>                               order;
+      std::map<std::string, std::vector<const ParsedCase *>> groups;
+      for (const auto &c : cases)
+        {
+          if (groups.count(c.group) == 0)
+            order.push_back(c.group);
+          groups[c.group].push_back(&c);
+        }
+      std::vector<std::vector<const ParsedCase *>> ordered;
+      for (const auto &key : order)
+        ordered.push_back(groups[key]);
+      return ordered;
+    }
+  } // namespace
+
+
+
+  int
+  run_study(const StudyParameters          &study,
+            const InputFile                &input,
+            const std::vector<std::string> &overrides,
+            const int                       only_case,
+            const std::string              &provenance,
+            Logger                         &logger)
+  {
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    Timer      study_timer;
+    std::vector<ParsedCase> cases;
+    Parameters              base;
+    try
+      {
+        ParameterHandler prm;
+        Parameters::declare_parameters(prm);
+        input.parse_into(prm, overrides);
+        FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
+          prm, input.input_name());
+        base.parse_parameters(prm);
+        StudyParameters rerun = study;
+        rerun.write_vtu       = rerun.write_vtu || only_case >= 0;
+        cases = parse_cases(rerun, input, overrides, base.output.directory);
+        AssertThrow(only_case < static_cast<int>(cases.size()),
+                    ExcMessage("--study-case " + std::to_string(only_case) +
+                               ": the study has " +
+                               std::to_string(cases.size()) + " cases"));
+      }
+    catch (...)
+      {
+        return report_failure(std::current_exception(),
+                              root,
+                              1,
+                              "error in " + input.input_name());
+      }
+
+    try
+      {
+        if (only_case >= 0)
+          {
+            run_time_loop(cases[only_case], input);
+            if (root)
+              std::cout << "fgimpact: results in "
+                        << cases[only_case].parameters.output.directory << '\n';
+            return 0;
+          }
+        if (const int code = prepare_study_directory(base.output, root))
+          return code;
+        run_on_root(MPI_COMM_WORLD, [&]() {
+          logger.open(base.output.directory + "/log.txt", provenance);
+          SummaryWriter::set_preamble(provenance);
+        });
+        if (root)
+          std::cout << "fgimpact: study of " << cases.size() << " cases\n";
+        std::vector<std::pair<std::string, std::string>> failures;
+        for (const auto &group : groups_of(cases))
+          run_group(study, group, input, study_timer, failures);
+        run_on_root(MPI_COMM_WORLD, [&]() {
+          write_study_csv(cases, base.output.directory + "/study.csv");
+        });
+        if (root)
+          std::cout << "fgimpact: study of " << cases.size() << " cases in "
+                    << study_timer.wall_time() << " s; results in "
+                    << base.output.directory
+                    << " (study.csv; figures: scripts/plot_study.py "
+                    << base.output.directory << "/study.csv)\n";
+        // Every case ran; the failed ones make the study a failed run.
+        AssertThrow(failures.empty(),
+                    ExcNumericalFailure(
+                      std::to_string(failures.size()) + " of " +
+                      std::to_string(cases.size()) +
+                      " study cases failed (study.csv gives every case's "
+                      "status); " +
+                      failures[0].first + ": " + failures[0].second));
+      }
+    catch (...)
+      {
+        return report_failure(std::current_exception(), root, 2);
+      }
+    return 0;
+  }
+} // namespace fgimpact

@@ -1,0 +1,530 @@
+#include <deal.II/lac/solver_control.h>
+
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/app/simulator.h>
+#include <fgimpact/output/impact_summary.h>
+#include <fgimpact/time/impact_driver.h>
+
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <limits>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /// ContactState field by field (it holds a vector), in a fixed order.
+    template <typename Apply, typename State>
+    void
+    contact_state_fields(const Apply &archive, State &state)
+    {
+      archive(state.alpha);
+      archive(state.force);
+      archive(state.node_displacement);
+      archive(state.newton_iterations);
+      archive(state.forces);
+      archive(state.n_active);
+      archive(state.contact_radius);
+      archive(state.max_pressure);
+      archive(state.candidates_exhausted);
+    }
+
+    /// The message of a failed output write in f ("" if none).
+    template <typename F>
+    std::string
+    failure_of(const F &f)
+    {
+      try
+        {
+          f();
+        }
+      catch (const ExcOutputFailure &e)
+        {
+          return one_line(message_of(e));
+        }
+      return "";
+    }
+
+    /// The one line after SIGINT/SIGTERM, with how to resume.
+    std::string
+    interruption_message(const int          stop,
+                         const unsigned int steps_done,
+                         const unsigned int n_steps,
+                         const double       dt,
+                         const std::string &directory,
+                         const std::string &checkpoint_failure,
+                         const unsigned int n_ranks)
+    {
+      char text[400];
+      std::snprintf(text,
+                    sizeof(text),
+                    "interrupted by %s after time step %u of %u (t = %.3f "
+                    "us); history.csv, solution.pvd and summary.txt "
+                    "(status = interrupted) are complete; ",
+                    signal_name(stop),
+                    steps_done,
+                    n_steps,
+                    steps_done * dt * 1e6);
+      // A checkpoint is resumed on as many ranks as wrote it.
+      const std::string launcher =
+        n_ranks > 1 ? "mpirun -n " + std::to_string(n_ranks) + " " : "";
+      return text + (checkpoint_failure.empty() ?
+                       "continue with: " + launcher + "fgimpact --resume " +
+                         directory :
+                       "no checkpoint (" + checkpoint_failure + ")");
+    }
+  } // namespace
+
+
+
+  ImpactDriver::ImpactDriver(const Parameters &parameters,
+                             const PlateModel &plate,
+                             const Timer      &total_timer)
+    : parameters(parameters)
+    , plate(plate)
+    , total_timer(total_timer)
+    , pcout(std::cout,
+            Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+    , impactor(parameters.impactor)
+    , contact_law(parameters.contact, plate.get_material(), impactor)
+  {}
+
+
+
+  void
+  ImpactDriver::setup()
+  {
+    const PlateGeometry &geometry = plate.get_geometry();
+    const double         h        = geometry.thickness();
+    contact                       = create_contact_model(
+      parameters.contact_model,
+      contact_law,
+      plate,
+      impactor.radius(),
+      impactor.impact_point(geometry.length(), geometry.width()),
+      expected_contact_radius(parameters, plate.get_material(), h),
+      top_face_modulus(plate.get_material(), h));
+    pcout << "  impactor mass " << impactor.mass()
+          << " kg, V0 = " << impactor.initial_velocity() << " m/s; "
+          << contact->description() << '\n';
+    if (!contact->warning().empty())
+      pcout << "  " << contact->warning() << '\n';
+
+    results.n_dofs = plate.n_dofs();
+    results.n_mpi_ranks =
+      Utilities::MPI::n_mpi_processes(plate.get_mpi_communicator());
+    results.impactor_mass = impactor.mass();
+    // A symmetric part: its mass is share() of the plate's.
+    const double share = geometry.share();
+    results.plate_mass = plate.total_mass() / share;
+    contact->fill_results(results);
+    results.setup_time = total_timer.wall_time();
+
+    // The time stepper (implicit Newmark or explicit central difference)
+    // builds its matrices and fixes the time step.  On a symmetric part
+    // the ball's share of the mass meets the part's share of the force.
+    Timer factorization_timer;
+    stepper = create_time_stepper(parameters.time_integration,
+                                  parameters.linear_solver,
+                                  plate,
+                                  *contact,
+                                  share * impactor.mass(),
+                                  impactor.initial_velocity());
+    try
+      {
+        stepper->initialize(parameters.output.instrumentation);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        AssertThrow(false,
+                    ExcNumericalFailure(
+                      "the linear solver did not converge during set-up "
+                      "(the contact compliance solves) after " +
+                      std::to_string(e.last_step) +
+                      " iterations; raise Linear solver/Max iterations (now " +
+                      std::to_string(parameters.linear_solver.max_iterations) +
+                      ") or use Linear solver/Type = auto."));
+      }
+    catch (const ExcNumericalFailure &e)
+      {
+        // The factorization: name the phase.
+        AssertThrow(false,
+                    ExcNumericalFailure("during set-up (the effective matrix "
+                                        "of the time stepper): " +
+                                        message_of(e)));
+      }
+    results.factorization_time = factorization_timer.wall_time();
+    results.spmv_time          = stepper->costs().spmv;
+    results.solve_time         = stepper->costs().solve;
+
+    dt      = stepper->time_step();
+    n_steps = parameters.time_integration.n_steps(dt);
+    pcout << "  " << stepper->description() << "; dt = " << dt * 1e6 << " us, "
+          << n_steps << " steps\n";
+    results.model = describe_model(parameters, plate, dt);
+    note_contact_resolution();
+    // Machine-dependent (the memory available): with the timings.
+    if (parameters.output.print_timing && !stepper->solver_log().empty())
+      pcout << "  " << stepper->solver_log() << '\n';
+    check_time_step();
+  }
+
+
+
+  void
+  ImpactDriver::check_time_step() const
+  {
+    // The automatic explicit step is known only now (a given step is
+    // checked with the parameters).
+    AssertThrow(parameters.time_integration.end_time >= dt * (1. - 1e-9),
+                ExcMessage(
+                  "Time integration/End time = " +
+                  std::to_string(parameters.time_integration.end_time * 1e6) +
+                  " us is shorter than one time step (" +
+                  std::to_string(dt * 1e6) + " us)."));
+    // Can dt resolve the contact?  Hertz's duration on a rigid half-space,
+    // T = 2.943 alpha_max / V0 with alpha_max = (5 m V0^2 / (4 K))^(2/5),
+    // is a lower bound of the plate's (99 us against 126 us in the default
+    // scene): fewer than 20 steps in it is a coarse time history.
+    const double m = impactor.mass(), V0 = impactor.initial_velocity();
+    const double alpha_max =
+      std::pow(1.25 * m * V0 * V0 / contact_law.force(1.), 0.4);
+    const double T_hertz = 2.943 * alpha_max / V0;
+    if (dt > T_hertz / 20.)
+      {
+        char text[400];
+        std::snprintf(text,
+                      sizeof(text),
+                      "  WARNING: Time integration/Time step = %.4g us "
+                      "resolves the contact (Hertz half-space estimate %.4g "
+                      "us) with only %.1f steps; use at most %.3g us.\n",
+                      dt * 1e6,
+                      T_hertz * 1e6,
+                      T_hertz / dt,
+                      T_hertz / 20. * 1e6);
+        pcout << text;
+      }
+  }
+
+
+
+  void
+  ImpactDriver::note_contact_resolution()
+  {
+    const ModelDescription &d = results.model;
+    const double            h = d.element_size_under_ball;
+    char                    text[600];
+    if (parameters.contact_model.model ==
+        ContactModelParameters::Model::hertz_node)
+      {
+        // The paper's point force: u ~ 1/r under it, so the force depends
+        // on the mesh (README, doc/contact.md).
+        std::snprintf(text,
+                      sizeof(text),
+                      "  note: Contact/Model = hertz node puts the contact "
+                      "force on one node: the peak force depends on the "
+                      "element size under the ball (%.4g mm here) and does "
+                      "not converge under refinement; "
+                      "scripts/contact_convergence.sh FILE.prm measures its "
+                      "error for this scene against the resolved sphere.\n",
+                      h * 1e3);
+        pcout << text;
+        return;
+      }
+    const double a_max =
+      expected_contact_radius(parameters,
+                              plate.get_material(),
+                              plate.get_geometry().thickness());
+    if (parameters.contact_model.model ==
+          ContactModelParameters::Model::resolved_sphere &&
+        a_max < contact_elements_per_radius * h)
+      {
+        std::snprintf(text,
+                      sizeof(text),
+                      "  WARNING: the estimated largest contact radius "
+                      "(%.4g mm, Hertz on a half-space) spans %.2f element "
+                      "sizes (%.4g mm), fewer than %.0f: the resolved "
+                      "contact force will not be accurate; raise "
+                      "Geometry/Contact refinement levels (now %u) or set "
+                      "it to auto.\n",
+                      a_max * 1e3,
+                      a_max / h,
+                      h * 1e3,
+                      contact_elements_per_radius,
+                      d.contact_refinement_levels);
+        pcout << text;
+      }
+  }
+
+
+
+  void
+  ImpactDriver::add_row_observer(const ImpactMonitor::RowObserver &observer)
+  {
+    observers.push_back(observer);
+  }
+
+
+
+  void
+  ImpactDriver::run()
+  {
+    // SIGINT/SIGTERM only set a flag from here on (before history.csv
+    // exists, so that its existence tells a test that the loop can be
+    // stopped).
+    const SignalGuard signals;
+    // A resumed run restores the state of the checkpoint first (the
+    // monitor reads its part when it reopens the output files).
+    const std::unique_ptr<CheckpointReader> resume = load_checkpoint();
+    open_monitor(resume.get());
+    // Plain timers (not TimerOutput, whose destructor writes to the screen
+    // when an exception such as a Newton failure is on its way out).  The
+    // loop timer includes the initial state's output, which the monitor
+    // counts as output time (time_loop_s = loop - output stays >= 0).
+    Timer loop_timer;
+
+    // SIGINT/SIGTERM and failed writes are looked at once per step, agreed
+    // over the ranks (one all-reduce of an int), so all stop together.
+    const MPI_Comm     comm       = plate.get_mpi_communicator();
+    unsigned int       steps_done = resume ? resume->step : 0;
+    int                stop       = 0;
+    const unsigned int interval   = parameters.output.checkpoint_interval;
+    std::string        checkpoint_failure;
+    try
+      {
+        if (resume)
+          monitor->resume_output(resume->step, resume->step * dt, *stepper);
+        else
+          monitor->record(0, 0., *stepper, ball, contact_state);
+        while (steps_done < n_steps && stop == 0)
+          {
+            timestep = steps_done + 1;
+            do_timestep();
+            steps_done = timestep;
+            stop       = agreed_stop(comm, !monitor->output_failure().empty());
+            if (stop == 0 && interval > 0 && steps_done % interval == 0 &&
+                steps_done < n_steps)
+              stop = write_checkpoint(steps_done);
+          }
+        // SIGINT/SIGTERM: a checkpoint at the stop, whatever the interval
+        // (a failure to write it does not hide the interruption).
+        if (stop > 0)
+          checkpoint_failure = failure_of([&]() {
+            AssertThrow(write_checkpoint(steps_done) == 0,
+                        ExcOutputFailure(monitor->output_failure()));
+          });
+        monitor->close_output();
+        if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
+          stop = -1;
+      }
+    catch (...)
+      {
+        finish_failed_run(steps_done, loop_timer.wall_time());
+        throw;
+      }
+    loop_timer.stop();
+    if (stop < 0)
+      stop_on_output_failure(steps_done, loop_timer.wall_time());
+
+    monitor->finish(ball,
+                    steps_done,
+                    stop > 0 ? "interrupted" : "completed",
+                    loop_timer.wall_time(),
+                    total_timer.wall_time());
+    report_checkpoints(loop_timer.wall_time());
+    if (stop > 0)
+      throw RunInterrupted(
+        stop,
+        interruption_message(stop,
+                             steps_done,
+                             n_steps,
+                             dt,
+                             parameters.output.directory,
+                             checkpoint_failure,
+                             Utilities::MPI::n_mpi_processes(
+                               plate.get_mpi_communicator())));
+  }
+
+
+
+  void
+  ImpactDriver::open_monitor(CheckpointReader *resume)
+  {
+    // The monitor opens the output files: only now, after setup() passed.
+    monitor = std::make_unique<ImpactMonitor>(parameters.output,
+                                              plate,
+                                              *contact,
+                                              impactor.mass(),
+                                              impactor.initial_velocity(),
+                                              dt,
+                                              n_steps,
+                                              results,
+                                              resume);
+    for (const auto &observer : observers)
+      monitor->add_row_observer(observer);
+    const PlateGeometry &g = plate.get_geometry();
+    const Point<2>       p = impactor.impact_point(g.length(), g.width());
+    monitor->add_contact_output(Point<3>(p[0], p[1], g.thickness()),
+                                impactor.radius());
+    // Rank 0 alone has opened history.csv (and probes.csv): every rank
+    // learns whether that worked before the first collective output.
+    stop_on_output_failure(resume ? resume->step : 0, 0.);
+  }
+
+
+
+  void
+  ImpactDriver::finish_failed_run(const unsigned int steps_done,
+                                  const double       loop_time)
+  {
+    try
+      {
+        monitor->close_output();
+        monitor->finish(
+          ball, steps_done, "failed", loop_time, total_timer.wall_time());
+      }
+    catch (...)
+      {}
+  }
+
+
+
+  void
+  ImpactDriver::stop_on_output_failure(const unsigned int steps_done,
+                                       const double       loop_time)
+  {
+    const MPI_Comm comm = plate.get_mpi_communicator();
+    if (agreed_stop(comm, !monitor->output_failure().empty()) >= 0)
+      return;
+    // A failed write (disk full): summary.txt marked failed if it can
+    // still be written, then one line naming the file, which rank 0
+    // learns from the failing rank (all ranks are here together).
+    finish_failed_run(steps_done, loop_time);
+    std::string message;
+    for (const auto &m :
+         Utilities::MPI::all_gather(comm, monitor->output_failure()))
+      if (message.empty())
+        message = m;
+    AssertThrow(false, ExcOutputFailure(message));
+  }
+
+
+
+  void
+  ImpactDriver::write_failed_summary(const std::string &status) const
+  {
+    if (monitor || !checkpoint_settings.resume_directory.empty() ||
+        Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
+      return;
+    // The time history has not started: its maxima are 0, and the ball
+    // has not left (contact_duration and departure_velocity are none).
+    ImpactResults r      = results;
+    r.contact_duration   = std::numeric_limits<double>::quiet_NaN();
+    r.departure_velocity = std::numeric_limits<double>::quiet_NaN();
+    r.wall_time          = total_timer.wall_time();
+    write_impact_summary(parameters.output.directory + "/summary.txt",
+                         r,
+                         contact && contact->reports_contact_area(),
+                         parameters.output.instrumentation,
+                         status,
+                         0.);
+  }
+
+
+
+  void
+  ImpactDriver::do_timestep()
+  {
+    const double t = timestep * dt;
+    stepper->advance(timestep, t, ball, contact_state);
+    monitor->record(timestep, t, *stepper, ball, contact_state);
+  }
+
+
+
+  void
+  ImpactDriver::set_checkpointing(const CheckpointSettings &settings)
+  {
+    checkpoint_settings = settings;
+  }
+
+
+
+  std::unique_ptr<CheckpointReader>
+  ImpactDriver::load_checkpoint()
+  {
+    // Eq. 2.16: plate at rest, alpha(0) = 0, alpha'(0) = V0; a(0) = 0 as
+    // F(0) = 0.  The impactor moves in the impact direction (-z).
+    ball          = ImpactorState();
+    ball.v        = impactor.initial_velocity();
+    contact_state = ContactState();
+    if (checkpoint_settings.resume_directory.empty())
+      return nullptr;
+    auto in = std::make_unique<CheckpointReader>(
+      read_checkpoint(parameters.output.directory,
+                      plate.get_mpi_communicator()));
+    AssertThrow(in->step <= n_steps,
+                ExcMessage("--resume: the checkpoint is at time step " +
+                           std::to_string(in->step) +
+                           ", after Time integration/End time (" +
+                           std::to_string(n_steps) + " steps)"));
+    // The order of write_checkpoint(); the stepper regrows the contact
+    // set before the contact model reads its active set.
+    in->get(ball);
+    contact_state_fields([&in](auto &value) { in->get(value); }, contact_state);
+    stepper->load(*in);
+    contact->load(*in);
+    pcout << "  resumed from the checkpoint after "
+          << time_step_label(in->step, in->step * dt) << '\n';
+    return in;
+  }
+
+
+
+  int
+  ImpactDriver::write_checkpoint(const unsigned int step)
+  {
+    Timer            timer;
+    CheckpointWriter out;
+    out.put(ball);
+    contact_state_fields([&out](const auto &value) { out.put(value); },
+                         contact_state);
+    stepper->save(out);
+    contact->save(out);
+    monitor->save(out, step); // flushes history.csv
+    const MPI_Comm comm = plate.get_mpi_communicator();
+    if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
+      return -1;
+    fgimpact::write_checkpoint(parameters.output.directory,
+                               comm,
+                               step,
+                               checkpoint_settings.parameters_text,
+                               out.data());
+    ++n_checkpoints;
+    checkpoint_bytes = out.data().size();
+    checkpoint_time += timer.wall_time();
+    return 0;
+  }
+
+
+
+  void
+  ImpactDriver::report_checkpoints(const double loop_time) const
+  {
+    if (n_checkpoints == 0 || !parameters.output.print_timing)
+      return;
+    const double per_step = loop_time / std::max(results.n_time_steps, 1u);
+    const double each     = checkpoint_time / n_checkpoints;
+    char         line[200];
+    std::snprintf(line,
+                  sizeof(line),
+                  "  checkpoints: %u written, %.3f MB per rank, %.2f ms each "
+                  "(%.2f time steps)\n",
+                  n_checkpoints,
+                  checkpoint_bytes * 1e-6,
+                  each * 1e3,
+                  each / per_step);
+    pcout << line;
+  }
+} // namespace fgimpact

@@ -1,0 +1,550 @@
+#include <deal.II/base/timer.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/lac/solver_control.h>
+
+#include <fgimpact/contact/compliance.h>
+#include <fgimpact/time/time_stepper.h>
+
+#include <Epetra_CrsMatrix.h>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace fgimpact
+{
+  void
+  TimeStepper::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time integration");
+    {
+      prm.declare_entry(
+        "Scheme",
+        "implicit",
+        Patterns::Selection("implicit|explicit"),
+        "implicit: Newmark with 'Newmark beta/gamma' and a Newton iteration "
+        "on the contact (block-eliminated: one linear solve per step). "
+        "explicit: central difference (beta = 0, gamma = 1/2) with a "
+        "row-sum lumped mass; one matrix-vector product per step, time step "
+        "limited by stability.");
+      prm.declare_entry(
+        "Stable step safety factor",
+        "0.9",
+        Patterns::Double(0.01, 1.),
+        "explicit scheme: the automatic time step (Time step = 0) is this "
+        "factor times the estimated stability limit 2/omega_max. "
+        "Dimensionless.");
+      prm.declare_entry("Newmark beta",
+                        "0.25",
+                        Patterns::Double(1e-6, 0.5),
+                        "Newmark's beta. 1/4 with gamma = 1/2 is the average "
+                        "acceleration rule (unconditionally stable, energy "
+                        "conserving). Dimensionless.");
+      prm.declare_entry("Newmark gamma",
+                        "0.5",
+                        Patterns::Double(0.5, 1.),
+                        "Newmark's gamma; values above 1/2 add numerical "
+                        "damping and make the scheme first order. "
+                        "Dimensionless.");
+      prm.declare_entry("Time step",
+                        "1e-6",
+                        Patterns::Double(0., 1.),
+                        "Time step dt; 0 = automatic, the explicit scheme's "
+                        "stability limit times the safety factor (explicit "
+                        "only). Unit: s.");
+      prm.declare_entry("End time",
+                        "400e-6",
+                        Patterns::Double(1e-12, 1e3),
+                        "Simulated time span. Unit: s.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Newton");
+    {
+      prm.declare_entry("Tolerance",
+                        "1e-3",
+                        Patterns::Double(1e-15, 0.1),
+                        "implicit scheme: Newton stops when the relative "
+                        "change of the indentation between two iterations is "
+                        "below this (the paper: 0.1 %). Newton converges "
+                        "quadratically here, so the error left is about its "
+                        "square. Dimensionless.");
+      prm.declare_entry("Max iterations",
+                        "50",
+                        Patterns::Integer(1, 10000),
+                        "Iteration cap per time step; reaching it stops the "
+                        "run with an error naming the step.");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  TimeStepper::Parameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Time integration");
+    scheme = (prm.get("Scheme") == "explicit" ? Scheme::central_difference :
+                                                Scheme::implicit_newmark);
+    safety_factor = prm.get_double("Stable step safety factor");
+    newmark.beta  = prm.get_double("Newmark beta");
+    newmark.gamma = prm.get_double("Newmark gamma");
+    time_step     = prm.get_double("Time step");
+    end_time      = prm.get_double("End time");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Newton");
+    newton.tolerance      = prm.get_double("Tolerance");
+    newton.max_iterations = prm.get_integer("Max iterations");
+    prm.leave_subsection();
+  }
+
+
+
+  std::string
+  time_step_label(const unsigned int step, const double t)
+  {
+    std::ostringstream s;
+    s << "time step " << step << " (t = " << t * 1e6 << " us)";
+    return s.str();
+  }
+
+
+
+  unsigned int
+  TimeStepper::Parameters::n_steps(const double dt) const
+  {
+    return static_cast<unsigned int>(std::ceil(end_time / dt - 1e-9));
+  }
+
+
+
+  void
+  TimeStepper::save(CheckpointWriter &out) const
+  {
+    out.put(u);
+    out.put(v);
+    out.put(kinetic);
+    out.put(strain);
+    out.put(last_linear_iterations);
+  }
+
+
+
+  void
+  TimeStepper::load(CheckpointReader &in)
+  {
+    in.get(u);
+    in.get(v);
+    in.get(kinetic);
+    in.get(strain);
+    in.get(last_linear_iterations);
+  }
+
+
+
+  namespace
+  {
+
+    /**
+     * Implicit Newmark.  The plate is linear and K_eff = K + a0 M constant,
+     * so with the contact-free response u* = K_eff^{-1} M r_n and the unit
+     * responses c_j = K_eff^{-1} g_j of the m contact DoFs (computed once),
+     * u_{n+1} = u* - sum_j lambda_j c_j, and the coupled problem reduces to
+     * the contact model's m unknowns with the dense compliance
+     * C_ij = g_i^T c_j (for the Hertz node, m = 1 and Newton on the scalar
+     * alpha: exactly the monolithic Newton's iterates, doc/theory.md,
+     * section 7).
+     *
+     * The products M u, M v, M a are carried along by the same linear
+     * Newmark recursion as u, v, a, so a step costs one solve and one
+     * matrix-vector product (M u_{n+1}), energies included.
+     */
+    class ImplicitNewmarkStepper : public TimeStepper
+    {
+    public:
+      ImplicitNewmarkStepper(const Parameters &parameters,
+                             const EffectiveMatrixSolver::Parameters &solver,
+                             const PlateModel                        &plate,
+                             ContactModel                            &contact,
+                             const double impactor_mass)
+        : parameters(parameters)
+        , newmark(parameters.newmark, parameters.time_step)
+        , solver(solver)
+        , plate(plate)
+        , contact_model(contact)
+        , dofs(contact.contact_dofs())
+        , m_i(impactor_mass)
+      {}
+
+      void
+      initialize(const bool measure_reference_costs) override
+      {
+        effective.copy_from(plate.stiffness_matrix());
+        setup_mass_matrix();
+        effective.add(newmark.mass_factor(), *mass);
+        solver.initialize(effective, &plate.get_dof_handler());
+        iterative = (solver.type() == "cg");
+
+        for (auto *vector : {&u, &v, &a, &Mu, &Mv, &Ma, &u_new, &Mu_new, &rhs})
+          plate.initialize_vector(*vector);
+        compute_compliance();
+        if (measure_reference_costs)
+          measure_costs();
+      }
+
+      double
+      time_step() const override
+      {
+        return newmark.time_step();
+      }
+
+      void
+      advance(const unsigned int step,
+              const double       t,
+              ImpactorState     &impactor,
+              ContactState      &contact) override
+      {
+        const double a0 = newmark.mass_factor();
+        solve_contact_free(step, t, contact);
+
+        // Impactor: m a0 w = m r_p - F  =>  w = w~ - F/(m a0).
+        const double w_tilde =
+          newmark.predictor(impactor.w, impactor.v, impactor.a) / a0;
+        // The only communication of the contact problem: u* at the contact
+        // DoFs (one all-reduce of m values).
+        const Vector<double> u_free = plate.dof_values(u_new, dofs);
+        contact_model.solve_implicit(u_free,
+                                     compliance,
+                                     w_tilde,
+                                     1. / (m_i * a0),
+                                     parameters.newton,
+                                     contact);
+        if (contact.candidates_exhausted)
+          {
+            // Nothing of the state has changed yet: grow, rebuild and
+            // repeat the step.
+            grow_contact(step, t);
+            contact = ContactState();
+            advance(step, t, impactor, contact);
+            return;
+          }
+        AssertThrow(contact.newton_iterations != numbers::invalid_unsigned_int,
+                    ExcMessage(
+                      "Newton for the contact did not converge at " +
+                      time_step_label(step, t) + " within " +
+                      std::to_string(parameters.newton.max_iterations) +
+                      " iterations; reduce Time integration/Time step or "
+                      "raise Newton/Max iterations."));
+        const double F = contact.force;
+
+        // Back-substitute: plate and impactor at t_{n+1}.
+        double work = 0; // sum_j lambda_j u_j(t_{n+1}) = u^T (sum lambda g)
+        for (unsigned int j = 0; j < dofs.size(); ++j)
+          {
+            if (contact.forces[j] != 0.) // most candidates are inactive
+              u_new.add(-contact.forces[j], c[j]);
+            double u_j = u_free[j];
+            for (unsigned int k = 0; k < dofs.size(); ++k)
+              u_j -= compliance(j, k) * contact.forces[k];
+            work += contact.forces[j] * u_j;
+          }
+        mass->vmult(Mu_new, u_new);
+        // u^T K u from K_eff u = M r_n - sum lambda_j g_j - a0 M u.
+        strain = 0.5 * (u_new * rhs - work - a0 * (u_new * Mu_new));
+
+        newmark.update(u_new, u, v, a);
+        newmark.update(Mu_new, Mu, Mv, Ma);
+        newmark.update(w_tilde - F / (m_i * a0),
+                       impactor.w,
+                       impactor.v,
+                       impactor.a);
+        // Refresh the carried products now and then against round-off.
+        if (step % 64 == 0)
+          {
+            mass->vmult(Mv, v);
+            mass->vmult(Ma, a);
+          }
+        kinetic = 0.5 * (v * Mv);
+
+        AssertThrow(std::isfinite(contact.alpha) && std::isfinite(strain) &&
+                      std::isfinite(kinetic),
+                    ExcMessage("the solution is not finite (NaN or Inf) at " +
+                               time_step_label(step, t) + "."));
+      }
+
+      bool
+      unit_response(const unsigned int      n_steps,
+                    const ResponseObserver &observe) override
+      {
+        if (dofs.size() != 1 || iterative)
+          return false;
+        const ContactState no_force;
+        for (unsigned int step = 1; step <= n_steps; ++step)
+          {
+            // As advance() with F_1 = 1 N and F_j = 0 after.
+            solve_contact_free(step, step * newmark.time_step(), no_force);
+            if (step == 1)
+              u_new.add(-1., c[0]);
+            mass->vmult(Mu_new, u_new);
+            newmark.update(u_new, u, v, a);
+            newmark.update(Mu_new, Mu, Mv, Ma);
+            if (step % 64 == 0)
+              {
+                mass->vmult(Mv, v);
+                mass->vmult(Ma, a);
+              }
+            observe(step, u, v, Mv);
+          }
+        for (auto *vector : {&u, &v, &a, &Mu, &Mv, &Ma})
+          *vector = 0.;
+        kinetic = strain = 0;
+        return true;
+      }
+
+      std::string
+      description() const override
+      {
+        std::ostringstream s;
+        s << "implicit Newmark (beta = " << newmark.beta()
+          << ", gamma = " << newmark.gamma() << "), linear solver "
+          << solver.type();
+        if (mass != &plate.mass_matrix())
+          s << "; modified mass: the contact candidates' z DoFs massless ("
+            << removed_mass << " kg removed)";
+        return s.str();
+      }
+
+      void
+      save(CheckpointWriter &out) const override
+      {
+        TimeStepper::save(out);
+        out.put<std::uint64_t>(dofs.size());
+        for (const auto *vector : {&a, &Mu, &Mv, &Ma})
+          out.put(*vector);
+      }
+
+      void
+      load(CheckpointReader &in) override
+      {
+        TimeStepper::load(in);
+        std::uint64_t n_contact_dofs = 0;
+        in.get(n_contact_dofs);
+        if (n_contact_dofs != dofs.size())
+          {
+            // The candidate set had grown: grow it alike (M u, M v, M a
+            // come from the checkpoint below).
+            while (contact_model.contact_dofs().size() < n_contact_dofs)
+              AssertThrow(contact_model.grow_candidates(),
+                          ExcMessage("the checkpoint's contact candidate "
+                                     "set cannot be rebuilt"));
+            rebuild_for_contact_dofs();
+          }
+        AssertThrow(dofs.size() == n_contact_dofs,
+                    ExcMessage("the checkpoint's contact candidate set "
+                               "does not match this set-up"));
+        for (auto *vector : {&a, &Mu, &Mv, &Ma})
+          in.get(*vector);
+      }
+
+      std::string
+      solver_log() const override
+      {
+        return solver.memory_log();
+      }
+
+    private:
+      /**
+       * The plate's consistent mass matrix, or for a contact model with
+       * massless DoFs (the modified mass method of Khenous, Laborde and
+       * Renard 2008) a copy with their rows and columns zeroed: contact
+       * nodes without inertia cannot chatter, and the removed mass, on the
+       * contact candidates alone, vanishes with the element size (logged).
+       */
+      void
+      setup_mass_matrix()
+      {
+        const auto &massless = contact_model.massless_dofs();
+        mass                 = &plate.mass_matrix();
+        if (massless.empty())
+          return;
+        modified_mass.copy_from(plate.mass_matrix());
+        std::vector<bool> zero(plate.n_dofs(), false);
+        for (const auto dof : massless)
+          zero[dof] = true;
+        // In place on the Epetra rows (deal.II's entry-wise set() on an
+        // assembled Trilinos matrix costs a search per call).
+        auto &matrix =
+          const_cast<Epetra_CrsMatrix &>(modified_mass.trilinos_matrix());
+        double removed = 0; // kg: sum of the zeroed rows' entries
+        for (int row = 0; row < matrix.NumMyRows(); ++row)
+          {
+            int     n       = 0;
+            double *values  = nullptr;
+            int    *columns = nullptr;
+            matrix.ExtractMyRowView(row, n, values, columns);
+            const bool zero_row = zero[matrix.RowMap().GID(row)];
+            for (int k = 0; k < n; ++k)
+              if (zero_row || zero[matrix.ColMap().GID(columns[k])])
+                {
+                  if (zero_row)
+                    removed += values[k];
+                  values[k] = 0.;
+                }
+          }
+        removed_mass =
+          Utilities::MPI::sum(removed, plate.get_mpi_communicator());
+        mass = &modified_mass;
+      }
+
+      /// The contact reached the candidate set's edge: a larger set, its
+      /// massless DoFs (a new K_eff, factorized again, and the carried
+      /// products M u, M v, M a) and its compliance.
+      void
+      grow_contact(const unsigned int step, const double t)
+      {
+        AssertThrow(contact_model.grow_candidates(),
+                    ExcMessage("the contact reached the edge of the "
+                               "candidate set at " +
+                               time_step_label(step, t) +
+                               ", which cannot grow beyond the sphere's "
+                               "radius: the elements under the ball are too "
+                               "coarse for the resolved contact; raise "
+                               "Geometry/Contact refinement levels (auto "
+                               "chooses them from the scene)."));
+        rebuild_for_contact_dofs();
+        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+          std::cout << "  " << time_step_label(step, t)
+                    << ": the contact reached the edge of the candidate "
+                       "set; grown to "
+                    << dofs.size() << " candidates" << std::endl;
+      }
+
+      /// After the contact set grew: its massless DoFs (a new K_eff,
+      /// factorized again, and the carried products M u, M v, M a) and
+      /// its compliance.
+      void
+      rebuild_for_contact_dofs()
+      {
+        dofs = contact_model.contact_dofs();
+        if (mass != &plate.mass_matrix())
+          {
+            setup_mass_matrix();
+            effective.copy_from(plate.stiffness_matrix());
+            effective.add(newmark.mass_factor(), *mass);
+            solver.initialize(effective, &plate.get_dof_handler());
+            mass->vmult(Mu, u);
+            mass->vmult(Mv, v);
+            mass->vmult(Ma, a);
+          }
+        compute_compliance();
+      }
+
+      /// c_j = K_eff^{-1} g_j and the dense compliance C (m/N).
+      void
+      compute_compliance()
+      {
+        fgimpact::compute_compliance(solver, plate, dofs, compliance, &c);
+      }
+
+      /// The contact-free response u_new = u* (K_eff u* = M r_n) and M r_n
+      /// in rhs, from the carried products (no matrix-vector product).
+      void
+      solve_contact_free(const unsigned int  step,
+                         const double        t,
+                         const ContactState &contact)
+      {
+        newmark.predictor(Mu, Mv, Ma, rhs);
+        if (iterative)
+          {
+            // Warm start: u* = u_{n+1} + sum lambda_j c_j with the explicit
+            // predictor u_{n+1} ~ u + dt v + dt^2/2 a and the last forces.
+            const double dt = newmark.time_step();
+            u_new           = u;
+            u_new.add(dt, v, 0.5 * dt * dt, a);
+            for (unsigned int j = 0; j < contact.forces.size(); ++j)
+              if (contact.forces[j] != 0.)
+                u_new.add(contact.forces[j], c[j]);
+          }
+        try
+          {
+            solver.solve(u_new, rhs);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        ExcMessage("the linear solver did not converge at " +
+                                   time_step_label(step, t) + " after " +
+                                   std::to_string(e.last_step) +
+                                   " iterations; raise Linear solver/Max "
+                                   "iterations or use a direct solver."));
+          }
+        last_linear_iterations = solver.last_iterations();
+      }
+
+      /// Reference costs for the benchmarks (Output/Instrumentation).
+      void
+      measure_costs()
+      {
+        TrilinosWrappers::MPI::Vector x, y;
+        plate.initialize_vector(x);
+        plate.initialize_vector(y);
+        x = 1.;
+        Timer              timer;
+        const unsigned int n_spmv = 20;
+        for (unsigned int i = 0; i < n_spmv; ++i)
+          effective.vmult(y, x);
+        measured_costs.spmv = timer.wall_time() / n_spmv;
+        timer.restart();
+        const unsigned int n_solves = 3;
+        for (unsigned int i = 0; i < n_solves; ++i)
+          {
+            y = 0.;
+            solver.solve(y, x);
+          }
+        measured_costs.solve = timer.wall_time() / n_solves;
+      }
+
+      const Parameters                      parameters;
+      const NewmarkIntegrator               newmark;
+      TrilinosWrappers::SparseMatrix        modified_mass;
+      const TrilinosWrappers::SparseMatrix *mass         = nullptr;
+      double                                removed_mass = 0; // kg
+      // Declared before the solver, which refers to it: members are
+      // destroyed in reverse order (Amesos_Mumps crashed otherwise).
+      TrilinosWrappers::SparseMatrix             effective;
+      EffectiveMatrixSolver                      solver;
+      const PlateModel                          &plate;
+      ContactModel                              &contact_model;
+      std::vector<types::global_dof_index>       dofs;
+      const double                               m_i;
+      TrilinosWrappers::MPI::Vector              Mu, Mv, Ma, u_new, Mu_new, rhs;
+      std::vector<TrilinosWrappers::MPI::Vector> c;
+      FullMatrix<double>                         compliance;
+      bool                                       iterative = false;
+    };
+  } // namespace
+
+
+
+  std::unique_ptr<TimeStepper>
+  create_time_stepper(const TimeStepper::Parameters           &parameters,
+                      const EffectiveMatrixSolver::Parameters &solver,
+                      const PlateModel                        &plate,
+                      ContactModel                            &contact,
+                      const double                             impactor_mass,
+                      const double                             impact_velocity)
+  {
+    switch (parameters.scheme)
+      {
+        case TimeStepper::Scheme::central_difference:
+          return create_central_difference_stepper(
+            parameters, plate, contact, impactor_mass, impact_velocity);
+        case TimeStepper::Scheme::implicit_newmark:
+          break;
+      }
+    return std::make_unique<ImplicitNewmarkStepper>(
+      parameters, solver, plate, contact, impactor_mass);
+  }
+} // namespace fgimpact
