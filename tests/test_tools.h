@@ -7,6 +7,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fgimpact/app/input_file.h>
+#include <fgimpact/app/run.h>
 #include <fgimpact/app/simulator.h>
 
 #include <filesystem>
@@ -38,19 +40,18 @@ namespace fgimpact_tests
               const MPI_Comm     communicator = MPI_COMM_WORLD,
               const bool         keep_history = false)
   {
-    dealii::ParameterHandler prm;
-    fgimpact::Parameters::declare_parameters(prm);
     // The references of these tests are the whole plate: pin it (the
     // built-in default is Symmetry = auto); a file or the settings that
-    // set Geometry/Symmetry still decide.
-    prm.parse_input_from_string(
-      "subsection Geometry\n set Symmetry = none\nend\n");
+    // set Geometry/Symmetry still decide.  Read by the executable's reader.
+    std::string text = "subsection Geometry\n set Symmetry = none\nend\n";
     if (!prm_file.empty())
-      prm.parse_input(prm_file);
-    prm.parse_input_from_string(settings);
-    fgimpact::Parameters p;
-    p.parse_parameters(prm);
-    p.validate();
+      text += fgimpact::InputFile(prm_file).expanded() + "\n";
+    text += settings;
+    const fgimpact::InputFile input(prm_file.empty() ? "settings" : prm_file,
+                                    text);
+    dealii::ParameterHandler prm;
+    fgimpact::Parameters     p;
+    fgimpact::read_run_parameters(input, {}, prm, p);
     std::filesystem::create_directories(p.output.directory);
 
     RunOutput          output;

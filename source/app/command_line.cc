@@ -14,6 +14,27 @@ namespace fgimpact
   {
     namespace
     {
+      /// --resume DIR: the run's own expanded parameters, with
+      /// Output/Directory set to DIR (wherever the run was started from);
+      /// false (an error in options) if a parameter file was given too.
+      bool
+      resume_input(Options &options)
+      {
+        if (!options.prm_file.empty())
+          {
+            options.action = Action::error;
+            options.error  = "--resume takes the parameters from " +
+                            options.resume_directory +
+                            "/parameters.prm: give no parameter file";
+            return false;
+          }
+        options.prm_file = options.resume_directory + "/parameters.prm";
+        options.overrides.insert(options.overrides.begin(),
+                                 "Output/Directory=" +
+                                   options.resume_directory);
+        return true;
+      }
+
       /// The options followed by a value.
       bool
       takes_argument(const std::string &arg)
@@ -123,23 +144,8 @@ namespace fgimpact
               options.action == Action::print_parameters)
             return options;
         }
-      if (!options.resume_directory.empty())
-        {
-          // The run's own expanded parameters (Output/Directory is set to
-          // the directory given, wherever the run was started from).
-          if (!options.prm_file.empty())
-            {
-              options.action = Action::error;
-              options.error  = "--resume takes the parameters from " +
-                              options.resume_directory +
-                              "/parameters.prm: give no parameter file";
-              return options;
-            }
-          options.prm_file = options.resume_directory + "/parameters.prm";
-          options.overrides.insert(options.overrides.begin(),
-                                   "Output/Directory=" +
-                                     options.resume_directory);
-        }
+      if (!options.resume_directory.empty() && !resume_input(options))
+        return options;
       if (options.prm_file.empty())
         {
           options.action = Action::error;

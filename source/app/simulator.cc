@@ -104,21 +104,24 @@ namespace fgimpact
     class StaticDriver : public LinearProblemDriver
     {
     public:
-      using LinearProblemDriver::LinearProblemDriver;
+      StaticDriver(const Parameters &parameters,
+                   const PlateModel &plate,
+                   const Scene      &scene)
+        : LinearProblemDriver(parameters, plate)
+        , scene(scene)
+      {}
 
       void
       run() override
       {
-        const Impactor       impactor(parameters.impactor);
-        const PlateGeometry &g = plate.get_geometry();
-        SphereIndenter       indenter;
-        indenter.radius           = impactor.radius();
+        SphereIndenter indenter;
+        indenter.radius           = scene.impactor().radius();
         indenter.candidate_radius = parameters.contact_model.candidate_radius;
         indenter.paraboloid_gap   = parameters.contact_model.paraboloid_gap;
         StaticAnalysis analysis(parameters.static_analysis,
                                 parameters.linear_solver,
                                 plate,
-                                impactor.impact_point(g.length(), g.width()),
+                                scene.impact_point_in_plane(),
                                 indenter);
         solve_in_phase("static solve", [&]() { analysis.solve(); });
         analysis.write_output(parameters.output.directory,
@@ -154,6 +157,9 @@ namespace fgimpact
             pcout << line;
           }
       }
+
+    private:
+      const Scene &scene;
     };
 
 
@@ -211,8 +217,10 @@ namespace fgimpact
       {
         case ProblemType::impact:
           {
-            auto impact =
-              std::make_unique<ImpactDriver>(parameters, *plate, total_timer);
+            auto impact = std::make_unique<ImpactDriver>(parameters,
+                                                         *scene,
+                                                         *plate,
+                                                         total_timer);
             for (const auto &observer : observers)
               impact->add_row_observer(observer);
             impact->set_checkpointing(checkpoint_settings);
@@ -220,7 +228,7 @@ namespace fgimpact
             break;
           }
         case ProblemType::static_load:
-          driver = std::make_unique<StaticDriver>(parameters, *plate);
+          driver = std::make_unique<StaticDriver>(parameters, *plate, *scene);
           break;
         case ProblemType::modal:
           driver = std::make_unique<ModalDriver>(parameters, *plate);
@@ -239,6 +247,7 @@ namespace fgimpact
     material =
       std::make_unique<FunctionallyGradedMaterial>(parameters.material,
                                                    geometry->thickness());
+    scene = std::make_unique<Scene>(parameters, *material);
     // Refuse a run that cannot fit before the long set-up (the mesh).
     const LocalRefinement refinement = contact_refinement();
     resource_estimate = estimate_resources(parameters, refinement);
@@ -320,13 +329,9 @@ namespace fgimpact
   LocalRefinement
   Simulator::contact_refinement() const
   {
-    const Impactor       impactor(parameters.impactor);
-    const PlateGeometry &g = *geometry;
-    const Point<2>       p = impactor.impact_point(g.length(), g.width());
-    LocalRefinement      refinement;
-    refinement.centre = Point<3>(p[0], p[1], g.thickness());
-    const double a_max =
-      expected_contact_radius(parameters, *material, g.thickness());
+    LocalRefinement refinement;
+    refinement.centre  = scene->impact_point();
+    const double a_max = scene->expected_contact_radius();
     refinement.levels =
       parameters.geometry.contact_refinement_auto ?
         automatic_contact_refinement_levels(parameters, a_max) :
@@ -357,24 +362,6 @@ namespace fgimpact
              contact_radius / contact_elements_per_radius * (1. + 1e-12))
       ++levels;
     return levels;
-  }
-
-
-
-  double
-  expected_contact_radius(const Parameters                 &parameters,
-                          const FunctionallyGradedMaterial &material,
-                          const double                      thickness)
-  {
-    const Impactor impactor(parameters.impactor);
-    const double   R = impactor.radius();
-    if (parameters.problem_type == ProblemType::static_load &&
-        parameters.static_analysis.load == StaticAnalysis::Load::sphere)
-      return std::sqrt(R * parameters.static_analysis.indentation);
-    return hertz_impact_contact_radius(top_face_modulus(material, thickness),
-                                       R,
-                                       impactor.mass(),
-                                       impactor.initial_velocity());
   }
 
 

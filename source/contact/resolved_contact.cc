@@ -217,9 +217,11 @@ namespace fgimpact
     Vector<double>      lambda;
     const LcpStatistics statistics = solve_lcp(A, q, lambda, active);
     // Not solved: the time stepper reports the step (as for Newton).
-    state.newton_iterations = statistics.converged ?
-                                statistics.iterations :
-                                numbers::invalid_unsigned_int;
+    state.newton_iterations    = statistics.converged ?
+                                   statistics.iterations :
+                                   numbers::invalid_unsigned_int;
+    state.used_lcp_fallback    = statistics.used_fallback;
+    state.residual_penetration = statistics.penetration;
     state.forces.assign(lambda.begin(), lambda.end());
     state.force = std::accumulate(lambda.begin(), lambda.end(), 0.);
 

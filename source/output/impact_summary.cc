@@ -11,6 +11,7 @@ namespace fgimpact
 {
   ModelDescription
   describe_model(const Parameters &parameters,
+                 const Scene      &scene,
                  const PlateModel &plate,
                  const double      time_step)
   {
@@ -23,17 +24,14 @@ namespace fgimpact
                                   model == Model::hertz_midplane ? "hertz midplane" :
                                                                    "resolved sphere";
     d.contact_refinement_levels = plate.contact_refinement().levels;
-    const Point<2> p =
-      Impactor(parameters.impactor).impact_point(g.length(), g.width());
-    d.element_size_under_ball =
-      plate.cell_size_at(Point<3>(p[0], p[1], g.thickness()));
-    d.time_step        = time_step;
-    d.scheme           = parameters.time_integration.scheme ==
+    d.element_size_under_ball   = plate.cell_size_at(scene.impact_point());
+    d.time_step                 = time_step;
+    d.scheme                    = parameters.time_integration.scheme ==
                    TimeStepper::Scheme::central_difference ?
-                           "explicit" :
-                           "implicit";
-    d.element_degree   = plate.get_fe().degree;
-    const double share = g.share();
+                                    "explicit" :
+                                    "implicit";
+    d.element_degree            = plate.get_fe().degree;
+    const double share          = g.share();
     d.symmetry      = share > 0.75 ? "none" : share > 0.3 ? "half" : "quarter";
     d.property_mode = m.property_mode == PropertyMode::graded ? "graded" :
                       m.property_mode == PropertyMode::homogeneous ?

@@ -64,31 +64,8 @@ namespace fgimpact
     if (!parameters.probe_points.points.empty())
       probe_set =
         std::make_unique<ProbeSet>(plate, parameters.probe_points.points);
-    // Rank 0 alone opens the CSV files: a failure (disk full, a resumed
-    // file too short) is kept in output_failure() as in record(), for the
-    // driver to agree on over the ranks before any collective output.
     if (root)
-      try
-        {
-          std::vector<std::pair<std::string, int>> header;
-          for (const auto &column : columns)
-            header.emplace_back(column.name, column.decimals);
-          history =
-            std::make_unique<CsvWriter>(parameters.directory + "/history.csv",
-                                        header,
-                                        history_length);
-          if (probe_set)
-            probe_csv =
-              std::make_unique<CsvWriter>(parameters.directory + "/probes.csv",
-                                          probe_set->columns(),
-                                          probe_length);
-        }
-      catch (const ExceptionBase &e)
-        {
-          output_failure_message = message_of(e);
-          history.reset();
-          probe_csv.reset();
-        }
+      open_csv_files();
     if (parameters.vtu_interval > 0)
       vtu = std::make_unique<VtuWriter>(plate,
                                         parameters.directory,
@@ -96,6 +73,37 @@ namespace fgimpact
                                         parameters.vtu_fields);
     if (vtu && resume)
       vtu->restore(vtu_records);
+  }
+
+
+
+  void
+  ImpactMonitor::open_csv_files()
+  {
+    // Rank 0 alone opens the CSV files: a failure (disk full, a resumed
+    // file too short) is kept in output_failure() as in record(), for the
+    // driver to agree on over the ranks before any collective output.
+    try
+      {
+        std::vector<std::pair<std::string, int>> header;
+        for (const auto &column : columns)
+          header.emplace_back(column.name, column.decimals);
+        history =
+          std::make_unique<CsvWriter>(parameters.directory + "/history.csv",
+                                      header,
+                                      history_length);
+        if (probe_set)
+          probe_csv =
+            std::make_unique<CsvWriter>(parameters.directory + "/probes.csv",
+                                        probe_set->columns(),
+                                        probe_length);
+      }
+    catch (const ExceptionBase &e)
+      {
+        output_failure_message = message_of(e);
+        history.reset();
+        probe_csv.reset();
+      }
   }
 
 
@@ -208,6 +216,7 @@ namespace fgimpact
         probe_row = probe_set->row(t, values);
       }
     update_extremes(t, sample);
+    report_lcp_fallback(step, t, part_contact);
     watch_energy(step, t, std::abs(sample.E_total - E0) / E0);
     impact_results.linear_iterations += plate.linear_iterations;
     impact_results.max_linear_iterations =
@@ -216,6 +225,31 @@ namespace fgimpact
     last_force    = contact.force;
     last_alpha    = contact.alpha;
     last_approach = approach;
+  }
+
+
+
+  void
+  ImpactMonitor::report_lcp_fallback(const unsigned int  step,
+                                     const double        t,
+                                     const ContactState &contact)
+  {
+    // Rare (PDAS settles in a few iterations for contact Delassus
+    // matrices): say so once, with what the fallback left.
+    if (!contact.used_lcp_fallback || lcp_fallback_reported)
+      return;
+    lcp_fallback_reported = true;
+    char line[320];
+    std::snprintf(line,
+                  sizeof(line),
+                  "  note: at time step %u (t = %.3f us) the contact's "
+                  "active-set iteration did not settle; projected "
+                  "Gauss-Seidel finished the solve (largest penetration "
+                  "left %.3e um); later such steps are not reported.\n",
+                  step,
+                  t * 1e6,
+                  contact.residual_penetration * 1e6);
+    pcout << line;
   }
 
 

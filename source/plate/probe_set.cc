@@ -295,6 +295,28 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The six stress components' weight vectors of n_points probes,
+    /// ghosted and writable (each cell adds to its own DoFs).
+    std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>>
+    writable_weight_vectors(const PlateModel  &plate,
+                            const unsigned int n_points,
+                            const MPI_Comm     communicator)
+    {
+      std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>> w(n_points);
+      for (auto &list : w)
+        for (auto &vector : list)
+          vector.reinit(plate.locally_owned_dofs(),
+                        plate.locally_relevant_dofs(),
+                        communicator,
+                        /*vector_writable=*/true);
+      return w;
+    }
+  } // namespace
+
+
+
   void
   ProbeSet::setup_stress_weights(const PlateModel &plate)
   {
@@ -323,13 +345,7 @@ namespace fgimpact
     const HookeLaw                       hooke(plate.get_material());
     std::vector<double>                  E, nu, rho;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>> w(n_points);
-    for (auto &list : w)
-      for (auto &vector : list)
-        vector.reinit(plate.locally_owned_dofs(),
-                      plate.locally_relevant_dofs(),
-                      mpi_communicator,
-                      /*vector_writable=*/true);
+    auto w = writable_weight_vectors(plate, n_points, mpi_communicator);
 
     for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())

@@ -23,18 +23,16 @@ namespace fgimpact
     std::unique_ptr<ContactModel>
     contact_model_of(const Parameters      &p,
                      const HertzContactLaw &law,
-                     const Impactor        &impactor,
+                     const Scene           &scene,
                      const PlateModel      &plate)
     {
-      const PlateGeometry &g = plate.get_geometry();
-      return create_contact_model(
-        p.contact_model,
-        law,
-        plate,
-        impactor.radius(),
-        impactor.impact_point(g.length(), g.width()),
-        expected_contact_radius(p, plate.get_material(), g.thickness()),
-        top_face_modulus(plate.get_material(), g.thickness()));
+      return create_contact_model(p.contact_model,
+                                  law,
+                                  plate,
+                                  scene.impactor().radius(),
+                                  scene.impact_point_in_plane(),
+                                  scene.expected_contact_radius(),
+                                  scene.top_face_modulus());
     }
   } // namespace
 
@@ -81,10 +79,11 @@ namespace fgimpact
   {
     setup_time = total_timer.wall_time();
     Timer                 timer;
-    const Impactor        impactor(p.impactor);
+    const Scene           scene(p, plate.get_material());
+    const Impactor       &impactor = scene.impactor();
     const HertzContactLaw law(p.contact, plate.get_material(), impactor);
     const PlateGeometry  &g       = plate.get_geometry();
-    const auto            contact = contact_model_of(p, law, impactor, plate);
+    const auto            contact = contact_model_of(p, law, scene, plate);
     dofs                          = contact->contact_dofs();
     const auto stepper            = create_time_stepper(p.time_integration,
                                              p.linear_solver,
@@ -195,12 +194,47 @@ namespace fgimpact
 
 
 
+  double
+  ImpactStudyEngine::contact_free_displacement(
+    const unsigned int         step,
+    const std::vector<double> &F) const
+  {
+    // The response to the forces of the steps before (what the stepper
+    // solves for).
+    double uc = 0;
+    for (unsigned int k = 1; k < step; ++k)
+      uc += F[k] * contact_response[step - k];
+    return uc;
+  }
+
+
+
+  void
+  ImpactStudyEngine::start_results(const Parameters   &p,
+                                   const Scene        &scene,
+                                   const ContactModel &contact)
+  {
+    results        = ImpactResults();
+    results.n_dofs = plate.n_dofs();
+    results.n_mpi_ranks =
+      Utilities::MPI::n_mpi_processes(plate.get_mpi_communicator());
+    results.impactor_mass = scene.impactor().mass();
+    results.plate_mass    = plate.total_mass() / plate.get_geometry().share();
+    results.setup_time    = setup_time;
+    results.factorization_time = factorization_time;
+    contact.fill_results(results);
+    results.model = describe_model(p, scene, plate, dt);
+  }
+
+
+
   const ImpactResults &
   ImpactStudyEngine::run_case(const Parameters &p)
   {
-    const Impactor        impactor(p.impactor);
+    const Scene           scene(p, plate.get_material());
+    const Impactor       &impactor = scene.impactor();
     const HertzContactLaw law(p.contact, plate.get_material(), impactor);
-    const auto            contact = contact_model_of(p, law, impactor, plate);
+    const auto            contact = contact_model_of(p, law, scene, plate);
     AssertThrow(contact->contact_dofs() == dofs,
                 ExcMessage("study: a case's contact node differs from the "
                            "group's; vary Impactor/Impact point x/y only in "
@@ -215,16 +249,7 @@ namespace fgimpact
     const double share  = plate.get_geometry().share();
     const double m_part = share * m;
 
-    results        = ImpactResults();
-    results.n_dofs = plate.n_dofs();
-    results.n_mpi_ranks =
-      Utilities::MPI::n_mpi_processes(plate.get_mpi_communicator());
-    results.impactor_mass      = m;
-    results.plate_mass         = plate.total_mass() / share;
-    results.setup_time         = setup_time;
-    results.factorization_time = factorization_time;
-    contact->fill_results(results);
-    results.model = describe_model(p, plate, dt);
+    start_results(p, scene, *contact);
 
     // No probes.csv: its probes need the fields (--study-case K writes it).
     OutputParameters output = p.output;
@@ -247,13 +272,8 @@ namespace fgimpact
     Timer               loop_timer;
     for (unsigned int n = 0; n < n_steps; ++n)
       {
-        const double t = (n + 1) * dt;
-        // The contact-free displacement at the contact DoF (what the
-        // stepper solves for): the response to the forces so far.
-        double uc = 0;
-        for (unsigned int k = 1; k <= n; ++k)
-          uc += F[k] * contact_response[n + 1 - k];
-        u_free[0]            = uc;
+        const double t       = (n + 1) * dt;
+        u_free[0]            = contact_free_displacement(n + 1, F);
         const double w_tilde = newmark.predictor(ball.w, ball.v, ball.a) / a0;
         contact->solve_implicit(u_free,
                                 C,
@@ -261,13 +281,7 @@ namespace fgimpact
                                 1. / (m_part * a0),
                                 p.time_integration.newton,
                                 state);
-        AssertThrow(state.newton_iterations != numbers::invalid_unsigned_int,
-                    ExcMessage(
-                      "Newton for the contact did not converge at " +
-                      time_step_label(n + 1, t) + " within " +
-                      std::to_string(p.time_integration.newton.max_iterations) +
-                      " iterations; reduce Time integration/Time step or "
-                      "raise Newton/Max iterations."));
+        check_contact_converged(state, n + 1, t, p.time_integration.newton);
         F[n + 1] = state.force;
         newmark.update(w_tilde - F[n + 1] / (m_part * a0),
                        ball.w,

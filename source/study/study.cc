@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fgimpact/app/parameters.h>
+#include <fgimpact/app/run.h>
 #include <fgimpact/app/run_control.h>
 #include <fgimpact/app/simulator.h>
 #include <fgimpact/output/output_files.h>
@@ -529,11 +530,7 @@ namespace fgimpact
     try
       {
         ParameterHandler prm;
-        Parameters::declare_parameters(prm);
-        input.parse_into(prm, overrides);
-        FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
-          prm, input.input_name());
-        base.parse_parameters(prm);
+        read_run_parameters(input, overrides, prm, base);
         StudyParameters rerun = study;
         rerun.write_vtu       = rerun.write_vtu || only_case >= 0;
         cases = parse_cases(rerun, input, overrides, base.output.directory);

@@ -79,6 +79,7 @@ namespace fgimpact
 
 
   ImpactDriver::ImpactDriver(const Parameters &parameters,
+                             const Scene      &scene,
                              const PlateModel &plate,
                              const Timer      &total_timer)
     : parameters(parameters)
@@ -86,7 +87,8 @@ namespace fgimpact
     , total_timer(total_timer)
     , pcout(std::cout,
             Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
-    , impactor(parameters.impactor)
+    , scene(scene)
+    , impactor(scene.impactor())
     , contact_law(parameters.contact, plate.get_material(), impactor)
   {}
 
@@ -95,16 +97,13 @@ namespace fgimpact
   void
   ImpactDriver::setup()
   {
-    const PlateGeometry &geometry = plate.get_geometry();
-    const double         h        = geometry.thickness();
-    contact                       = create_contact_model(
-      parameters.contact_model,
-      contact_law,
-      plate,
-      impactor.radius(),
-      impactor.impact_point(geometry.length(), geometry.width()),
-      expected_contact_radius(parameters, plate.get_material(), h),
-      top_face_modulus(plate.get_material(), h));
+    contact = create_contact_model(parameters.contact_model,
+                                   contact_law,
+                                   plate,
+                                   impactor.radius(),
+                                   scene.impact_point_in_plane(),
+                                   scene.expected_contact_radius(),
+                                   scene.top_face_modulus());
     pcout << "  impactor mass " << impactor.mass()
           << " kg, V0 = " << impactor.initial_velocity() << " m/s; "
           << contact->description() << '\n';
@@ -116,7 +115,7 @@ namespace fgimpact
       Utilities::MPI::n_mpi_processes(plate.get_mpi_communicator());
     results.impactor_mass = impactor.mass();
     // A symmetric part: its mass is share() of the plate's.
-    const double share = geometry.share();
+    const double share = scene.share();
     results.plate_mass = plate.total_mass() / share;
     contact->fill_results(results);
     results.setup_time = total_timer.wall_time();
@@ -162,7 +161,7 @@ namespace fgimpact
     n_steps = parameters.time_integration.n_steps(dt);
     pcout << "  " << stepper->description() << "; dt = " << dt * 1e6 << " us, "
           << n_steps << " steps\n";
-    results.model = describe_model(parameters, plate, dt);
+    results.model = describe_model(parameters, scene, plate, dt);
     note_contact_resolution();
     // Machine-dependent (the memory available): with the timings.
     if (parameters.output.print_timing && !stepper->solver_log().empty())
@@ -232,10 +231,7 @@ namespace fgimpact
         pcout << text;
         return;
       }
-    const double a_max =
-      expected_contact_radius(parameters,
-                              plate.get_material(),
-                              plate.get_geometry().thickness());
+    const double a_max = scene.expected_contact_radius();
     if (parameters.contact_model.model ==
           ContactModelParameters::Model::resolved_sphere &&
         a_max < contact_elements_per_radius * h)
@@ -363,10 +359,7 @@ namespace fgimpact
                                               resume);
     for (const auto &observer : observers)
       monitor->add_row_observer(observer);
-    const PlateGeometry &g = plate.get_geometry();
-    const Point<2>       p = impactor.impact_point(g.length(), g.width());
-    monitor->add_contact_output(Point<3>(p[0], p[1], g.thickness()),
-                                impactor.radius());
+    monitor->add_contact_output(scene.impact_point(), impactor.radius());
     // Rank 0 alone has opened history.csv (and probes.csv): every rank
     // learns whether that worked before the first collective output.
     stop_on_output_failure(resume ? resume->step : 0, 0.);

@@ -112,6 +112,22 @@ namespace fgimpact
 
 
 
+  void
+  check_contact_converged(const ContactState  &state,
+                          const unsigned int   step,
+                          const double         t,
+                          const NewtonControl &newton)
+  {
+    AssertThrow(state.newton_iterations != numbers::invalid_unsigned_int,
+                ExcMessage("Newton for the contact did not converge at " +
+                           time_step_label(step, t) + " within " +
+                           std::to_string(newton.max_iterations) +
+                           " iterations; reduce Time integration/Time step or "
+                           "raise Newton/Max iterations."));
+  }
+
+
+
   unsigned int
   TimeStepper::Parameters::n_steps(const double dt) const
   {
@@ -230,13 +246,7 @@ namespace fgimpact
             advance(step, t, impactor, contact);
             return;
           }
-        AssertThrow(contact.newton_iterations != numbers::invalid_unsigned_int,
-                    ExcMessage(
-                      "Newton for the contact did not converge at " +
-                      time_step_label(step, t) + " within " +
-                      std::to_string(parameters.newton.max_iterations) +
-                      " iterations; reduce Time integration/Time step or "
-                      "raise Newton/Max iterations."));
+        check_contact_converged(contact, step, t, parameters.newton);
         const double F = contact.force;
 
         // Back-substitute: plate and impactor at t_{n+1}.

@@ -7,6 +7,7 @@
 
 #include <fgimpact/app/parameters.h>
 #include <fgimpact/app/resources.h>
+#include <fgimpact/app/scene.h>
 #include <fgimpact/material/material.h>
 #include <fgimpact/output/results.h>
 #include <fgimpact/plate/geometry.h>
@@ -19,13 +20,6 @@ namespace fgimpact
 {
   using namespace dealii;
 
-  /**
-   * The largest contact radius to expect (m): for an impact the rigid ball
-   * on a half-space of the top face's modulus
-   * (hertz_impact_contact_radius()), for a static sphere indentation delta
-   * sqrt(R delta).  Sizes the contact refinement and the resolved
-   * contact's candidate set.
-   */
   /// The element sizes across the largest contact radius that the
   /// automatic contact refinement aims at, and below which a finished
   /// resolved run warns (doc/contact.md).
@@ -38,11 +32,6 @@ namespace fgimpact
   unsigned int
   automatic_contact_refinement_levels(const Parameters &parameters,
                                       const double      contact_radius);
-
-  double
-  expected_contact_radius(const Parameters                 &parameters,
-                          const FunctionallyGradedMaterial &material,
-                          const double                      thickness);
 
   /**
    * The program: parameters -> plate model (geometry, material, mesh and
@@ -103,8 +92,8 @@ namespace fgimpact
     set_checkpointing(const CheckpointSettings &settings);
 
   private:
-    /// Geometry/Contact refinement *: centre, radius (automatic from
-    /// expected_contact_radius()) and levels.
+    /// Geometry/Contact refinement *: centre, radius (automatic from the
+    /// scene's expected contact radius) and levels.
     LocalRefinement
     contact_refinement() const;
 
@@ -122,6 +111,7 @@ namespace fgimpact
 
     std::unique_ptr<PlateGeometry>              geometry;
     std::unique_ptr<FunctionallyGradedMaterial> material;
+    std::unique_ptr<Scene>                      scene;
     std::unique_ptr<PlateModel>                 plate;
     std::unique_ptr<ProblemDriver>              driver;
     std::vector<ImpactMonitor::RowObserver>     observers;

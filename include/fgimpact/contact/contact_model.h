@@ -47,6 +47,11 @@ namespace fgimpact
     /// Resolved contact: a node of the candidate set's outermost ring is
     /// in contact, so the solution may be cut off: grow and repeat.
     bool candidates_exhausted = false;
+    /// Resolved contact: the LCP's active-set iteration did not settle and
+    /// projected Gauss-Seidel finished the solve; the largest penetration
+    /// left (m) either way.
+    bool   used_lcp_fallback    = false;
+    double residual_penetration = 0;
   };
 
   /// The stopping rule of a contact model's Newton iteration.

@@ -2,6 +2,7 @@
 #define fgimpact_impact_summary_h
 
 #include <fgimpact/app/parameters.h>
+#include <fgimpact/app/scene.h>
 #include <fgimpact/output/results.h>
 #include <fgimpact/plate/plate_model.h>
 
@@ -27,6 +28,7 @@ namespace fgimpact
    */
   ModelDescription
   describe_model(const Parameters &parameters,
+                 const Scene      &scene,
                  const PlateModel &plate,
                  const double      time_step);
 

@@ -218,6 +218,17 @@ namespace fgimpact
            const double         wall_time);
 
   private:
+    /// One log line at the first step whose LCP needed the fallback.
+    void
+    report_lcp_fallback(const unsigned int  step,
+                        const double        t,
+                        const ContactState &contact);
+
+    /// Rank 0: history.csv and probes.csv, new or continued from the
+    /// checkpoint's lengths; a failure is kept in output_failure().
+    void
+    open_csv_files();
+
     /// The constructor's part of a resume: save()'s state, the history
     /// length in history_length; the PVD entries are restored by the
     /// writers.
@@ -249,6 +260,7 @@ namespace fgimpact
     const double whole;
     /// The contact of the current step with the whole plate's force.
     ContactState       whole_contact;
+    bool               lcp_fallback_reported = false;
     ConditionalOStream pcout;
     ImpactResults     &impact_results;
 

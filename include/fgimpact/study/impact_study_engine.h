@@ -6,6 +6,7 @@
 #include <deal.II/lac/full_matrix.h>
 
 #include <fgimpact/app/parameters.h>
+#include <fgimpact/app/scene.h>
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/output/results.h>
 #include <fgimpact/plate/plate_model.h>
@@ -99,6 +100,21 @@ namespace fgimpact
     preparation_timing() const;
 
   private:
+    /// The contact-free displacement (m) at the contact DoF at `step`: the
+    /// convolution of the forces F_1 .. F_{step-1} (N) with the unit
+    /// response.
+    double
+    contact_free_displacement(const unsigned int         step,
+                              const std::vector<double> &F) const;
+
+    /// results for a new case: the plate's and the set-up's entries, the
+    /// contact model's, the model description; the history's are the
+    /// monitor's.
+    void
+    start_results(const Parameters   &p,
+                  const Scene        &scene,
+                  const ContactModel &contact);
+
     /// One step of the case: the convolved plate, the contact solve and
     /// the impactor's update; returns the plate sample at step n + 1.
     PlateSample

@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 
 #include <fgimpact/app/parameters.h>
+#include <fgimpact/app/scene.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/contact_model.h>
 #include <fgimpact/contact/impactor.h>
@@ -56,6 +57,7 @@ namespace fgimpact
   {
   public:
     ImpactDriver(const Parameters &parameters,
+                 const Scene      &scene,
                  const PlateModel &plate,
                  const Timer      &total_timer);
 
@@ -138,7 +140,8 @@ namespace fgimpact
     const PlateModel  &plate;
     const Timer       &total_timer;
     ConditionalOStream pcout;
-    const Impactor     impactor;
+    const Scene       &scene;
+    const Impactor    &impactor; // the scene's
     HertzContactLaw    contact_law;
     ImpactResults      results;
 

@@ -212,6 +212,15 @@ namespace fgimpact
   std::string
   time_step_label(const unsigned int step, const double t);
 
+  /// An implicit step's contact solve failed (ContactState::
+  /// newton_iterations invalid): throws ExcMessage naming the step and the
+  /// parameters to change.  No-op if it converged.
+  void
+  check_contact_converged(const ContactState  &state,
+                          const unsigned int   step,
+                          const double         t,
+                          const NewtonControl &newton);
+
   /// The explicit scheme (source/time/central_difference_stepper.cc).
   std::unique_ptr<TimeStepper>
   create_central_difference_stepper(const TimeStepper::Parameters &parameters,

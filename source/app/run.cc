@@ -1,0 +1,370 @@
+// The executable's run after its command line (Lethe's thin main): read
+// the input, then a study or one simulation, every failure through
+// report_failure() with its exit code.  main.cc only starts MPI, guards the
+// signals and dispatches the command line.
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+
+#include <fgimpact/app/input_file.h>
+#include <fgimpact/app/run.h>
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/app/simulator.h>
+#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/output/output_files.h>
+#include <fgimpact/study/study.h>
+
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /// Rank 0 reads the input (a file or standard input, includes
+    /// expanded), every rank gets its text; throws ExcMessage on every rank.
+    std::unique_ptr<fgimpact::InputFile>
+    read_input(const std::string &prm_file, const MPI_Comm comm)
+    {
+      using namespace dealii;
+      std::unique_ptr<fgimpact::InputFile> input;
+      fgimpact::run_on_root(comm, [&]() {
+        input = std::make_unique<fgimpact::InputFile>(prm_file);
+      });
+      if (Utilities::MPI::n_mpi_processes(comm) > 1)
+        {
+          const std::string text =
+            Utilities::MPI::broadcast(comm, input ? input->expanded() : "", 0);
+          if (!input)
+            input = std::make_unique<fgimpact::InputFile>(prm_file, text);
+        }
+      return input;
+    }
+
+
+    /**
+     * Declares, reads and checks every parameter (the -s overrides applied
+     * before validate(), --study lists appended to Study/Entries) and prints
+     * the warnings; throws on bad input, before any file is written.
+     */
+    void
+    read_parameters(const fgimpact::CommandLine::Options &options,
+                    dealii::ParameterHandler             &prm,
+                    fgimpact::Parameters                 &parameters,
+                    std::unique_ptr<fgimpact::InputFile> &input,
+                    fgimpact::StudyParameters            &study,
+                    const bool                            root)
+    {
+      input = read_input(options.prm_file, MPI_COMM_WORLD);
+      read_run_parameters(*input, options.overrides, prm, parameters);
+      study.parse_parameters(prm);
+      study.append_command_line(options.study);
+      for (const auto &warning : parameters.warnings())
+        if (root)
+          std::cerr << "fgimpact: warning: " << warning << std::endl;
+    }
+
+    /**
+     * Rank 0, before the run: clean the output directory (Output/Overwrite;
+     * before log.txt is opened, so that the earlier run's log goes and this
+     * run's stays), then log.txt (provenance first), the provenance for
+     * summary.txt, parameters.prm (expanded) and input.prm (as given), both
+     * written atomically.
+     */
+    void
+    start_run_files(const fgimpact::OutputParameters &output,
+                    const int                         argc,
+                    const char *const                *argv,
+                    fgimpact::Logger                 &logger,
+                    const dealii::ParameterHandler   &prm,
+                    const fgimpact::InputFile        &input,
+                    const bool                        resume)
+    {
+      // One writer per directory, before anything is written there.
+      fgimpact::lock_output_directory(output.directory);
+      // Resuming: nothing removed, log.txt continued, input.prm kept.
+      if (!resume)
+        fgimpact::prepare_output_directory(output);
+      const std::string provenance = fgimpact::CommandLine::provenance(
+        argc, argv, dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+      logger.open(output.directory + "/log.txt", provenance, resume);
+      fgimpact::SummaryWriter::set_preamble(provenance);
+      std::ostringstream parameters;
+      prm.print_parameters(parameters, dealii::ParameterHandler::PRM);
+      fgimpact::write_file_atomically(output.directory + "/parameters.prm",
+                                      parameters.str());
+      if (!resume)
+        fgimpact::write_file_atomically(output.directory + "/input.prm",
+                                        input.original());
+    }
+
+
+
+    /// The expanded parameters for the checkpoints; with --resume, rank 0
+    /// checks the checkpoint against them (a failure is thrown on every
+    /// rank).
+    fgimpact::CheckpointSettings
+    checkpoint_settings(const fgimpact::CommandLine::Options &options,
+                        const dealii::ParameterHandler       &prm)
+    {
+      using namespace dealii;
+      fgimpact::CheckpointSettings checkpoint;
+      checkpoint.resume_directory = options.resume_directory;
+      std::ostringstream text;
+      prm.print_parameters(text,
+                           ParameterHandler::OutputStyle(
+                             ParameterHandler::PRM | ParameterHandler::Short));
+      checkpoint.parameters_text = text.str();
+      if (!options.resume_directory.empty())
+        fgimpact::run_on_root(MPI_COMM_WORLD, [&]() {
+          fgimpact::check_resume(options.resume_directory,
+                                 checkpoint.parameters_text,
+                                 Utilities::MPI::n_mpi_processes(
+                                   MPI_COMM_WORLD));
+        });
+      return checkpoint;
+    }
+
+
+    /**
+     * A failure before the time loop: bad input (exit code 1) writes
+     * nothing; a failed run of valid input (a numerical failure in set-up, a
+     * start file that cannot be written: exit code 2) writes, if may_write
+     * (not --validate), the start files (start_files, if not yet tried) and
+     * summary.txt with status = failed, as far as it can.
+     */
+    int
+    fail_before_run(const std::exception_ptr    &failure,
+                    const fgimpact::Simulator   &simulator,
+                    const bool                   may_write,
+                    const std::function<void()> &start_files,
+                    const bool                   root)
+    {
+      if (may_write && fgimpact::is_run_failure(failure))
+        try
+          {
+            if (start_files)
+              start_files();
+            simulator.write_failed_summary();
+          }
+        catch (...)
+          {}
+      return fgimpact::report_failure(failure, root, 1);
+    }
+
+
+
+    /// A stop signal (SIGINT, SIGTERM, SIGHUP, SIGXFSZ) that came during the
+    /// set-up or the start files (it only set a flag): nothing computed,
+    /// summary.txt says interrupted; RunInterrupted on every rank.
+    void
+    stop_if_signalled_in_setup(const fgimpact::Simulator &simulator)
+    {
+      const int stop = fgimpact::agreed_stop(MPI_COMM_WORLD, false);
+      if (stop <= 0)
+        return;
+      simulator.write_failed_summary("interrupted");
+      throw fgimpact::RunInterrupted(
+        stop,
+        std::string("interrupted by ") + fgimpact::signal_name(stop) +
+          " during the set-up (nothing computed); summary.txt says status = "
+          "interrupted; run it again.");
+    }
+
+
+
+    /// An output directory that cannot be used, or that another run holds,
+    /// is refused (bad input, exit code 1) before the set-up's work (and by
+    /// --validate); 0 if it is usable and free.
+    int
+    refuse_unusable_directory(const fgimpact::OutputParameters &output,
+                              const bool                        root)
+    {
+      try
+        {
+          fgimpact::run_on_root(MPI_COMM_WORLD, [&]() {
+            fgimpact::check_output_directory_usable(output.directory);
+            fgimpact::check_output_directory_free(output.directory);
+          });
+        }
+      catch (...)
+        {
+          return fgimpact::report_failure(std::current_exception(), root, 1);
+        }
+      return 0;
+    }
+
+
+
+    /// --validate: the input passed every check and the set-up; exit code 0.
+    int
+    report_valid(const fgimpact::InputFile &input_file,
+                 const fgimpact::Simulator &simulator,
+                 const bool                 root)
+    {
+      if (root)
+        std::cout << "fgimpact: " << input_file.input_name()
+                  << " is valid (checked and set up; nothing run, nothing "
+                     "written)\n"
+                  << "  " << simulator.get_resource_estimate().describe()
+                  << '\n';
+      return 0;
+    }
+
+
+
+    /// Set up, write the start files and run one simulation; the exit code.
+    int
+    simulate(const fgimpact::CommandLine::Options &options,
+             const fgimpact::Parameters           &parameters,
+             const dealii::ParameterHandler       &prm,
+             const fgimpact::InputFile            &input_file,
+             const fgimpact::CheckpointSettings   &checkpoint,
+             fgimpact::Logger                     &logger,
+             int                                   argc,
+             char                                **argv)
+    {
+      using namespace dealii;
+      using namespace fgimpact;
+      const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+      if (const int code = refuse_unusable_directory(parameters.output, root))
+        return code;
+      try
+        {
+          Simulator simulator(parameters, MPI_COMM_WORLD);
+          simulator.set_checkpointing(checkpoint);
+          const bool validate = options.action == CommandLine::Action::validate;
+          // Rank 0 prepares the directory and writes the start files; every
+          // rank learns the outcome, so that all stop together.
+          const auto start_files = [&]() {
+            run_on_root(MPI_COMM_WORLD, [&]() {
+              start_run_files(parameters.output,
+                              argc,
+                              argv,
+                              logger,
+                              prm,
+                              input_file,
+                              !options.resume_directory.empty());
+            });
+          };
+          // Everything that can fail on bad input is checked before any file
+          // is written: setup() writes nothing.  A numerical failure of the
+          // valid input there (a factorization, a solver) is a failed run: the
+          // start files and summary.txt (status = failed), as in the time loop
+          // (--validate writes nothing).
+          try
+            {
+              simulator.setup();
+            }
+          catch (...)
+            {
+              return fail_before_run(std::current_exception(),
+                                     simulator,
+                                     !validate,
+                                     start_files,
+                                     root);
+            }
+          if (validate)
+            return report_valid(input_file, simulator, root);
+          // An unusable directory is bad input (exit code 1, nothing written);
+          // a start file that cannot be written an I/O failure (exit code 2,
+          // summary.txt failed if it can still be written).
+          try
+            {
+              start_files();
+            }
+          catch (...)
+            {
+              return fail_before_run(
+                std::current_exception(), simulator, true, nullptr, root);
+            }
+          stop_if_signalled_in_setup(simulator);
+          simulator.run();
+          if (root)
+            std::cout << "fgimpact: results in " << parameters.output.directory
+                      << '\n';
+        }
+      catch (...)
+        {
+          return report_failure(std::current_exception(), root, 2);
+        }
+      return 0;
+    }
+  } // namespace
+
+
+
+  void
+  read_run_parameters(const InputFile                &input,
+                      const std::vector<std::string> &overrides,
+                      ParameterHandler               &prm,
+                      Parameters                     &parameters)
+  {
+    Parameters::declare_parameters(prm);
+    input.parse_into(prm, overrides);
+    FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
+      prm, input.input_name());
+    parameters.parse_parameters(prm);
+    parameters.validate();
+  }
+
+
+
+  int
+  run_from_command_line(const CommandLine::Options &options,
+                        const int                   argc,
+                        char                      **argv,
+                        Logger                     &logger)
+  {
+    using namespace dealii;
+    const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+    ParameterHandler           prm;
+    Parameters                 parameters;
+    std::unique_ptr<InputFile> input;
+    StudyParameters            study;
+    // Input errors: checked before any file is written, reported in one line
+    // with their exit code by report_failure() (run_control.cc).
+    try
+      {
+        read_parameters(options, prm, parameters, input, study, root);
+      }
+    catch (...)
+      {
+        const std::string &file = options.prm_file;
+        return report_failure(std::current_exception(),
+                              root,
+                              1,
+                              "error in " +
+                                (file == "-" ? "standard input" : file));
+      }
+
+    // A study (Study/Entries or --study): its own cases and outputs.
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+    if (!study.entries.empty() && options.action == CommandLine::Action::run)
+      return run_study(study,
+                       *input,
+                       options.overrides,
+                       options.study_case,
+                       CommandLine::provenance(argc, argv, n_ranks),
+                       logger);
+
+    // Checkpoints store the parameters; a resume refuses changed ones.
+    CheckpointSettings checkpoint;
+    try
+      {
+        checkpoint = checkpoint_settings(options, prm);
+      }
+    catch (...)
+      {
+        return report_failure(std::current_exception(), root, 1);
+      }
+
+    return simulate(
+      options, parameters, prm, *input, checkpoint, logger, argc, argv);
+  }
+} // namespace fgimpact

@@ -1,0 +1,41 @@
+// The impact scene (scene.h): built once from the parameters and the
+// material, read by everything that needs the impactor or where it strikes.
+
+#include <fgimpact/app/scene.h>
+#include <fgimpact/contact/contact_law.h>
+
+#include <cmath>
+
+namespace fgimpact
+{
+  double
+  expected_contact_radius(const Parameters                 &parameters,
+                          const FunctionallyGradedMaterial &material,
+                          const double                      thickness)
+  {
+    const Impactor impactor(parameters.impactor);
+    const double   R = impactor.radius();
+    if (parameters.problem_type == ProblemType::static_load &&
+        parameters.static_analysis.load == StaticAnalysis::Load::sphere)
+      return std::sqrt(R * parameters.static_analysis.indentation);
+    return hertz_impact_contact_radius(top_face_modulus(material, thickness),
+                                       R,
+                                       impactor.mass(),
+                                       impactor.initial_velocity());
+  }
+
+
+
+  Scene::Scene(const Parameters                 &parameters,
+               const FunctionallyGradedMaterial &material)
+    : ball(parameters.impactor)
+  {
+    const auto  &g = parameters.geometry;
+    const double h = g.thickness;
+    const auto   p = ball.impact_point(g.length, g.width);
+    point          = Point<3>(p[0], p[1], h);
+    contact_radius = fgimpact::expected_contact_radius(parameters, material, h);
+    modulus        = fgimpact::top_face_modulus(material, h);
+    part_share     = (g.cut[0] ? 0.5 : 1.) * (g.cut[1] ? 0.5 : 1.);
+  }
+} // namespace fgimpact
