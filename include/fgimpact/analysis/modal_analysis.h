@@ -85,10 +85,13 @@ namespace fgimpact
     report_iteration_cost(const double seconds, const unsigned int block) const;
 
     /// Before the first iteration: its estimated cost from the first of
-    /// its `block` solves (seconds), when that is long.
+    /// its `block` solves (seconds) and the time of a dot product of x and
+    /// y (timed here), when that is long.  Collective.
     void
-    report_estimated_cost(const double       solve_seconds,
-                          const unsigned int block) const;
+    report_estimated_cost(const double                         solve_seconds,
+                          const TrilinosWrappers::MPI::Vector &x,
+                          const TrilinosWrappers::MPI::Vector &y,
+                          const unsigned int                   block) const;
 
     const Parameters                           parameters;
     bool                                       print_costs = false;
