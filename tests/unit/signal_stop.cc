@@ -73,6 +73,38 @@ namespace
 
 
 
+  /// Start the executable on prm_file as a child process (on 2 MPI ranks
+  /// through mpiexec if mpi), its output into name.stdout and
+  /// name.stderr; its process id.
+  pid_t
+  start(const std::string &prm_file, const std::string &name, const bool mpi)
+  {
+    std::fflush(stdout); // not twice: the child inherits the buffer
+    const pid_t pid = fork();
+    if (pid == 0)
+      {
+        std::freopen((name + ".stdout").c_str(), "w", stdout);
+        std::freopen((name + ".stderr").c_str(), "w", stderr);
+        if (mpi)
+          execlp("mpiexec",
+                 "mpiexec",
+                 "-n",
+                 "2",
+                 FGIMPACT_EXECUTABLE,
+                 prm_file.c_str(),
+                 static_cast<char *>(nullptr));
+        else
+          execl(FGIMPACT_EXECUTABLE,
+                FGIMPACT_EXECUTABLE,
+                prm_file.c_str(),
+                static_cast<char *>(nullptr));
+        _exit(127);
+      }
+    return pid;
+  }
+
+
+
   bool
   run_and_stop(const int signal, const char *signal_name, const bool mpi)
   {
@@ -91,27 +123,7 @@ namespace
           << "\n set VTU interval = 50\n set Log interval = 0\n"
              " set Print timing = false\nend\n";
     }
-    std::fflush(stdout); // not twice: the child inherits the buffer
-    const pid_t pid = fork();
-    if (pid == 0)
-      {
-        std::freopen("signal.stdout", "w", stdout);
-        std::freopen("signal.stderr", "w", stderr);
-        if (mpi)
-          execlp("mpiexec",
-                 "mpiexec",
-                 "-n",
-                 "2",
-                 FGIMPACT_EXECUTABLE,
-                 "signal.prm",
-                 static_cast<char *>(nullptr));
-        else
-          execl(FGIMPACT_EXECUTABLE,
-                FGIMPACT_EXECUTABLE,
-                "signal.prm",
-                static_cast<char *>(nullptr));
-        _exit(127);
-      }
+    const pid_t pid = start("signal.prm", "signal", mpi);
     // The time loop runs once history.csv exists; let it run a little.
     for (unsigned int i = 0; i < 600 && !fs::exists(dir + "/history.csv"); ++i)
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
@@ -224,18 +236,7 @@ namespace
     }
     // No earlier run's log may be read as this one's start.
     fs::remove("early.stdout");
-    std::fflush(stdout);
-    const pid_t pid = fork();
-    if (pid == 0)
-      {
-        std::freopen("early.stdout", "w", stdout);
-        std::freopen("early.stderr", "w", stderr);
-        execl(FGIMPACT_EXECUTABLE,
-              FGIMPACT_EXECUTABLE,
-              "early.prm",
-              static_cast<char *>(nullptr));
-        _exit(127);
-      }
+    const pid_t pid = start("early.prm", "early", false);
     for (unsigned int i = 0;
          i < 6000 &&
          read("early.stdout").find("fgimpact: FGM plate") == std::string::npos;
@@ -289,18 +290,7 @@ namespace
           << "\n set VTU interval = 0\n set Log interval = 0\n"
              " set Print timing = false\nend\n";
     }
-    std::fflush(stdout);
-    const pid_t pid = fork();
-    if (pid == 0)
-      {
-        std::freopen("study.stdout", "w", stdout);
-        std::freopen("study.stderr", "w", stderr);
-        execl(FGIMPACT_EXECUTABLE,
-              FGIMPACT_EXECUTABLE,
-              "study.prm",
-              static_cast<char *>(nullptr));
-        _exit(127);
-      }
+    const pid_t       pid     = start("study.prm", "study", false);
     const std::string history = dir + "/case_000/history.csv";
     for (unsigned int i = 0; i < 600 && !fs::exists(history); ++i)
       std::this_thread::sleep_for(std::chrono::milliseconds(100));
