@@ -118,6 +118,15 @@ namespace fgimpact
                           const double         t,
                           const NewtonControl &newton)
   {
+    // The resolved contact's LCP: its iteration counts are not
+    // Newton/Max iterations.
+    AssertThrow(state.newton_iterations != numbers::invalid_unsigned_int ||
+                  !state.used_lcp_fallback,
+                ExcMessage("the contact's complementarity problem (active "
+                           "set, then projected Gauss-Seidel) was not solved "
+                           "at " +
+                           time_step_label(step, t) +
+                           "; reduce Time integration/Time step."));
     AssertThrow(state.newton_iterations != numbers::invalid_unsigned_int,
                 ExcMessage("Newton for the contact did not converge at " +
                            time_step_label(step, t) + " within " +

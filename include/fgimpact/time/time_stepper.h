@@ -214,7 +214,8 @@ namespace fgimpact
 
   /// An implicit step's contact solve failed (ContactState::
   /// newton_iterations invalid): throws ExcMessage naming the step and the
-  /// parameters to change.  No-op if it converged.
+  /// parameters to change (for the resolved contact's LCP, whose
+  /// iterations are not Newton's, the time step).  No-op if it converged.
   void
   check_contact_converged(const ContactState  &state,
                           const unsigned int   step,
