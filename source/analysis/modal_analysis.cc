@@ -261,7 +261,7 @@ namespace fgimpact
     // p x p eigenproblem left out).
     const double iteration = (solve_seconds + 2. * product_seconds) * block +
                              2. * op_seconds * block * block;
-    if (!print_costs || iteration < 2. ||
+    if (iteration < 2. ||
         Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
       return;
     char text[400];

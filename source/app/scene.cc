@@ -36,6 +36,6 @@ namespace fgimpact
     point          = Point<3>(p[0], p[1], h);
     contact_radius = fgimpact::expected_contact_radius(parameters, material, h);
     modulus        = fgimpact::top_face_modulus(material, h);
-    part_share     = (g.cut[0] ? 0.5 : 1.) * (g.cut[1] ? 0.5 : 1.);
+    part_share     = g.share();
   }
 } // namespace fgimpact

@@ -32,8 +32,9 @@ namespace fgimpact
                         Patterns::Bool(),
                         "Print the wall-clock timing table at the end and a "
                         "progress line (elapsed time, estimate of the time "
-                        "left) at every tenth of the time steps (turn off "
-                        "for reproducible logs).");
+                        "left) at every tenth of the time steps, and the "
+                        "modal iteration's estimated and measured cost (turn "
+                        "off for reproducible logs).");
       prm.declare_entry("Instrumentation",
                         "false",
                         Patterns::Bool(),

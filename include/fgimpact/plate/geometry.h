@@ -86,6 +86,13 @@ namespace fgimpact
       /// The symmetry planes actually cut (x = a/2, y = b/2), set by
       /// resolve_symmetry() (symmetry.cc) once the whole scene is known.
       std::array<bool, 2> cut = {{false, false}};
+
+      /// The modelled part's share of the plate: 1, 1/2 or 1/4.
+      double
+      share() const
+      {
+        return (cut[0] ? 0.5 : 1.) * (cut[1] ? 0.5 : 1.);
+      }
       /// resolve_symmetry()'s line for the log ("" if none).
       std::string symmetry_note;
 
@@ -151,7 +158,7 @@ namespace fgimpact
     double
     share() const
     {
-      return (parameters.cut[0] ? 0.5 : 1.) * (parameters.cut[1] ? 0.5 : 1.);
+      return parameters.share();
     }
 
     /// How many points of the whole plate the part's point p stands for:
