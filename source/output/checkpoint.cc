@@ -17,7 +17,9 @@ namespace fgimpact
   {
     const char magic[8] = {'F', 'G', 'I', 'M', 'P', 'C', 'K', 'P'};
     // 2: probes.csv's length in the monitor's part; the header hashed.
-    const unsigned int format_version = 2;
+    // 3: the contact set's size before the stepper's state (the
+    // ContactCoupler's section).
+    const unsigned int format_version = 3;
 
     /// FNV-1a, 64 bit: detects a torn or damaged file, and tells
     /// parameter texts apart.

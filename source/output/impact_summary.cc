@@ -9,6 +9,25 @@
 
 namespace fgimpact
 {
+  ImpactResults
+  setup_results(const PlateModel   &plate,
+                const Scene        &scene,
+                const ContactModel &contact,
+                const double        setup_time)
+  {
+    ImpactResults results;
+    results.n_dofs = plate.n_dofs();
+    results.n_mpi_ranks =
+      Utilities::MPI::n_mpi_processes(plate.get_mpi_communicator());
+    results.impactor_mass = scene.impactor().mass();
+    results.plate_mass    = plate.total_mass() / scene.share();
+    contact.fill_results(results);
+    results.setup_time = setup_time;
+    return results;
+  }
+
+
+
   ModelDescription
   describe_model(const Parameters &parameters,
                  const Scene      &scene,

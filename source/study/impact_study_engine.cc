@@ -9,6 +9,7 @@
 #include <fgimpact/plate/plate_fields.h>
 #include <fgimpact/plate/probes.h>
 #include <fgimpact/study/impact_study_engine.h>
+#include <fgimpact/time/contact_coupler.h>
 #include <fgimpact/time/newmark.h>
 #include <fgimpact/time/time_stepper.h>
 
@@ -34,6 +35,138 @@ namespace fgimpact
                                   scene.expected_contact_radius(),
                                   scene.top_face_modulus());
     }
+
+
+    /**
+     * The plate as the convolution of its unit response (a PlateResponse
+     * for the ContactCoupler): the contact DoF's contact-free displacement
+     * at step n + 1 is sum_{k <= n} F_k r_{n+2-k} (what the stepper would
+     * solve for), the probes and the kinetic energy likewise; the strain
+     * energy is the contact force's work (trapezoidal, exact for average
+     * acceleration) minus the kinetic energy.
+     */
+    class ConvolutionResponse : public PlateResponse
+    {
+    public:
+      /// Unit responses, index j - 1 for step j: the contact DoF's
+      /// displacement (m, positive up), the probes; gram: G_ij = v_i^T M v_j.
+      ConvolutionResponse(const double                    dt,
+                          const double                    compliance,
+                          const std::vector<double>      &contact_response,
+                          const std::vector<PlateSample> &probe_response,
+                          const FullMatrix<double>       &gram)
+        : dt(dt)
+        , C(1, 1)
+        , contact_response(contact_response)
+        , probe_response(probe_response)
+        , gram(gram)
+        , F(contact_response.size() + 1, 0.)
+      {
+        C(0, 0) = compliance;
+      }
+
+      double
+      time_step() const override
+      {
+        return dt;
+      }
+
+      Vector<double>
+      predict(const unsigned int step,
+              const double,
+              const ContactState &) override
+      {
+        // The response to the forces of the steps before.
+        Vector<double> u_free(1);
+        for (unsigned int k = 1; k < step; ++k)
+          u_free[0] += F[k] * contact_response[step - k];
+        return u_free;
+      }
+
+      const FullMatrix<double> &
+      compliance() const override
+      {
+        return C;
+      }
+
+      bool
+      correct(const unsigned int step,
+              const double,
+              const ContactState &contact) override
+      {
+        F[step] = contact.force;
+        sample  = convolved_plate(step);
+        // The plate's energy grows by the contact force's work on the
+        // contact DoF (average acceleration: exactly, per step).
+        plate_energy +=
+          0.5 * (F[step - 1] + F[step]) * (last_uc - contact.node_displacement);
+        last_uc         = contact.node_displacement;
+        sample.E_strain = plate_energy - sample.E_kinetic;
+        return true;
+      }
+
+      double
+      kinetic_energy() const override
+      {
+        return sample.E_kinetic;
+      }
+
+      double
+      strain_energy() const override
+      {
+        return sample.E_strain;
+      }
+
+      /// The history's probes and energies after the last step.
+      const PlateSample &
+      plate_sample() const
+      {
+        return sample;
+      }
+
+    private:
+      /// Step n (F[1..n] known): sum_k F_k r_{n-k} over the forces so far.
+      PlateSample
+      convolved_plate(const unsigned int n) const
+      {
+        PlateSample s;
+        double      sigma[6] = {0, 0, 0, 0, 0, 0};
+        for (unsigned int k = 1; k <= n; ++k)
+          if (F[k] != 0.)
+            {
+              const PlateSample &r = probe_response[n - k];
+              s.W_mid += F[k] * r.W_mid;
+              s.W_top += F[k] * r.W_top;
+              for (unsigned int c = 0; c < 6; ++c)
+                sigma[c] += F[k] * r.sigma_mid.access_raw_entry(c);
+            }
+        for (unsigned int c = 0; c < 6; ++c)
+          s.sigma_mid.access_raw_entry(c) = sigma[c];
+        // Kinetic energy 1/2 v^T M v with v = sum_k F_k v_{n-k}: the
+        // quadratic form of G over the steps with a force (symmetric: half
+        // of it).
+        double kinetic = 0;
+        for (unsigned int k = 1; k <= n; ++k)
+          if (F[k] != 0.)
+            {
+              double row = 0.5 * gram(n - k, n - k) * F[k];
+              for (unsigned int l = 1; l < k; ++l)
+                row += gram(n - k, n - l) * F[l];
+              kinetic += F[k] * row;
+            }
+        s.E_kinetic = kinetic;
+        return s;
+      }
+
+      const double                    dt;
+      FullMatrix<double>              C; // m/N
+      const std::vector<double>      &contact_response;
+      const std::vector<PlateSample> &probe_response;
+      const FullMatrix<double>       &gram;
+      std::vector<double>             F; // N, index: step
+      PlateSample                     sample;
+      double                          plate_energy = 0, last_uc = 0;
+    };
   } // namespace
 
 
@@ -89,7 +222,7 @@ namespace fgimpact
                                              p.linear_solver,
                                              plate,
                                              *contact,
-                                             g.share() * impactor.mass(),
+                                             scene.share() * impactor.mass(),
                                              impactor.initial_velocity());
     stepper->initialize(false);
     factorization_time = timer.wall_time();
@@ -159,71 +292,14 @@ namespace fgimpact
 
 
 
-  PlateSample
-  ImpactStudyEngine::convolved_plate(const unsigned int         n,
-                                     const std::vector<double> &F) const
-  {
-    // Step n (F[1..n] known): sum_k F_k r_{n-k} over the forces so far.
-    PlateSample s;
-    double      sigma[6] = {0, 0, 0, 0, 0, 0};
-    for (unsigned int k = 1; k <= n; ++k)
-      if (F[k] != 0.)
-        {
-          const PlateSample &r = probe_response[n - k];
-          s.W_mid += F[k] * r.W_mid;
-          s.W_top += F[k] * r.W_top;
-          for (unsigned int c = 0; c < 6; ++c)
-            sigma[c] += F[k] * r.sigma_mid.access_raw_entry(c);
-        }
-    for (unsigned int c = 0; c < 6; ++c)
-      s.sigma_mid.access_raw_entry(c) = sigma[c];
-    // Kinetic energy 1/2 v^T M v with v = sum_k F_k v_{n-k}: the quadratic
-    // form of G over the steps with a force (symmetric: half of it).
-    double kinetic = 0;
-    for (unsigned int k = 1; k <= n; ++k)
-      if (F[k] != 0.)
-        {
-          double row = 0.5 * gram(n - k, n - k) * F[k];
-          for (unsigned int l = 1; l < k; ++l)
-            row += gram(n - k, n - l) * F[l];
-          kinetic += F[k] * row;
-        }
-    s.E_kinetic = kinetic;
-    return s;
-  }
-
-
-
-  double
-  ImpactStudyEngine::contact_free_displacement(
-    const unsigned int         step,
-    const std::vector<double> &F) const
-  {
-    // The response to the forces of the steps before (what the stepper
-    // solves for).
-    double uc = 0;
-    for (unsigned int k = 1; k < step; ++k)
-      uc += F[k] * contact_response[step - k];
-    return uc;
-  }
-
-
-
   void
   ImpactStudyEngine::start_results(const Parameters   &p,
                                    const Scene        &scene,
                                    const ContactModel &contact)
   {
-    results        = ImpactResults();
-    results.n_dofs = plate.n_dofs();
-    results.n_mpi_ranks =
-      Utilities::MPI::n_mpi_processes(plate.get_mpi_communicator());
-    results.impactor_mass = scene.impactor().mass();
-    results.plate_mass    = plate.total_mass() / plate.get_geometry().share();
-    results.setup_time    = setup_time;
+    results = setup_results(plate, scene, contact, setup_time);
     results.factorization_time = factorization_time;
-    contact.fill_results(results);
-    results.model = describe_model(p, scene, plate, dt);
+    results.model              = describe_model(p, scene, plate, dt);
   }
 
 
@@ -246,8 +322,7 @@ namespace fgimpact
     // A symmetric part (Geometry/Symmetry): the part's share of the ball's
     // mass meets the part's share of the contact force, as in ImpactDriver;
     // the monitor reports the whole plate.
-    const double share  = plate.get_geometry().share();
-    const double m_part = share * m;
+    const double m_part = scene.share() * m;
 
     start_results(p, scene, *contact);
 
@@ -262,40 +337,20 @@ namespace fgimpact
     ContactState state;
     monitor.record(0, 0., PlateSample(), ball, state);
 
-    const NewmarkIntegrator newmark(p.time_integration.newmark, dt);
-    const double            a0 = newmark.mass_factor();
-    FullMatrix<double>      C(1, 1);
-    C(0, 0) = compliance;
-    std::vector<double> F(n_steps + 1, 0.);
-    Vector<double>      u_free(1);
-    double              plate_energy = 0, last_uc = 0;
-    Timer               loop_timer;
+    ConvolutionResponse response(
+      dt, compliance, contact_response, probe_response, gram);
+    ContactCoupler coupler(response,
+                           *contact,
+                           p.time_integration.newmark,
+                           m_part,
+                           p.time_integration.newton,
+                           plate.get_mpi_communicator());
+    Timer          loop_timer;
     for (unsigned int n = 0; n < n_steps; ++n)
       {
-        const double t       = (n + 1) * dt;
-        u_free[0]            = contact_free_displacement(n + 1, F);
-        const double w_tilde = newmark.predictor(ball.w, ball.v, ball.a) / a0;
-        contact->solve_implicit(u_free,
-                                C,
-                                w_tilde,
-                                1. / (m_part * a0),
-                                p.time_integration.newton,
-                                state);
-        check_contact_converged(state, n + 1, t, p.time_integration.newton);
-        F[n + 1] = state.force;
-        newmark.update(w_tilde - F[n + 1] / (m_part * a0),
-                       ball.w,
-                       ball.v,
-                       ball.a);
-
-        PlateSample sample = convolved_plate(n + 1, F);
-        // The plate's energy grows by the contact force's work on the
-        // contact DoF (average acceleration: exactly, per step).
-        plate_energy +=
-          0.5 * (F[n] + F[n + 1]) * (last_uc - state.node_displacement);
-        last_uc         = state.node_displacement;
-        sample.E_strain = plate_energy - sample.E_kinetic;
-        monitor.record(n + 1, t, sample, ball, state);
+        const double t = (n + 1) * dt;
+        coupler.advance(n + 1, t, ball, state);
+        monitor.record(n + 1, t, response.plate_sample(), ball, state);
       }
     monitor.close_output();
     AssertThrow(monitor.output_failure().empty(),

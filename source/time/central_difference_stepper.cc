@@ -2,6 +2,7 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <fgimpact/time/contact_coupler.h>
 #include <fgimpact/time/time_stepper.h>
 
 #include <cmath>
@@ -16,23 +17,23 @@ namespace fgimpact
      * Central difference (velocity Verlet form) with a row-sum lumped mass
      * M_L.  Per step: u_{n+1} = u_n + dt v_n + dt^2/2 a_n, then
      * a_{n+1} = M_L^{-1} (-sum_j lambda_j g_j - K u_{n+1}) and
-     * v_{n+1} = v_n + dt/2 (a_n + a_{n+1}); the same for the impactor with
-     * a = -F/m.  The contact forces are explicit: no Newton.
+     * v_{n+1} = v_n + dt/2 (a_n + a_{n+1}) (the ContactCoupler moves the
+     * impactor alike, with a = -F/m).  The contact forces are explicit: no
+     * Newton; predict() is the position update, correct() the rest.
      */
     class CentralDifferenceStepper : public TimeStepper
     {
     public:
-      CentralDifferenceStepper(const Parameters   &parameters,
-                               const PlateModel   &plate,
-                               const ContactModel &contact,
-                               const double        impactor_mass,
-                               const double        impact_velocity)
+      CentralDifferenceStepper(
+        const Parameters                           &parameters,
+        const PlateModel                           &plate,
+        const std::vector<types::global_dof_index> &contact_dofs,
+        const double                                contact_stiffness)
         : parameters(parameters)
         , plate(plate)
-        , contact_model(contact)
-        , dofs(contact.contact_dofs())
-        , m_i(impactor_mass)
-        , V0(impact_velocity)
+        , dofs(contact_dofs)
+        , k_c(contact_stiffness)
+        , no_compliance(dofs.size(), dofs.size())
       {}
 
       void
@@ -47,7 +48,6 @@ namespace fgimpact
         // Stability limit 2/omega_max, omega_max^2 the largest eigenvalue
         // of M_L^{-1} (K + k_c sum_j g_j g_j^T), where k_c bounds the
         // contact's stiffening of the contact DoFs.
-        const double k_c    = contact_model.stiffness_bound(m_i, V0);
         const double lambda = largest_eigenvalue(k_c);
         stable_dt           = 2. / std::sqrt(lambda);
 
@@ -86,24 +86,35 @@ namespace fgimpact
         return dt;
       }
 
-      void
-      advance(const unsigned int step,
-              const double       t,
-              ImpactorState     &impactor,
-              ContactState      &contact) override
+      bool
+      explicit_contact() const override
       {
-        // Positions.
+        return true;
+      }
+
+      /// The positions at t_{n+1} and the first velocity half step; the
+      /// contact DoFs' z displacement there (m).
+      Vector<double>
+      predict(const unsigned int, const double, const ContactState &) override
+      {
         u.add(dt, v, 0.5 * dt * dt, a);
         v.add(0.5 * dt, a); // half step
-        impactor.w += dt * impactor.v + 0.5 * dt * dt * impactor.a;
-        impactor.v += 0.5 * dt * impactor.a;
+        return plate.dof_values(u, dofs);
+      }
 
-        // Contact forces at the new positions.
-        contact_model.evaluate_explicit(plate.dof_values(u, dofs),
-                                        impactor.w,
-                                        contact);
+      /// The forces at t_{n+1} do not move the plate within the step.
+      const FullMatrix<double> &
+      compliance() const override
+      {
+        return no_compliance;
+      }
 
-        // Accelerations and the second velocity half step.
+      /// Accelerations and the second velocity half step.
+      bool
+      correct(const unsigned int  step,
+              const double        t,
+              const ContactState &contact) override
+      {
         plate.stiffness_matrix().vmult(Ku, u);
         strain = 0.5 * (u * Ku);
         a.equ(-1., Ku);
@@ -112,8 +123,6 @@ namespace fgimpact
             a(dofs[j]) -= contact.forces[j];
         a.scale(inverse_mass);
         v.add(0.5 * dt, a);
-        impactor.a = -contact.force / m_i;
-        impactor.v += 0.5 * dt * impactor.a;
 
         // 1/2 v^T M_L v with the diagonal M_L: two vector operations.
         y = v;
@@ -127,6 +136,7 @@ namespace fgimpact
                                time_step_label(step, t) +
                                "; reduce Time integration/Stable step "
                                "safety factor."));
+        return true;
       }
 
       bool
@@ -250,9 +260,9 @@ namespace fgimpact
 
       const Parameters                           parameters;
       const PlateModel                          &plate;
-      const ContactModel                        &contact_model;
       const std::vector<types::global_dof_index> dofs;
-      const double                               m_i, V0;
+      const double                               k_c; // N/m
+      const FullMatrix<double>                   no_compliance;
       double                                     dt = 0, stable_dt = 0;
       TrilinosWrappers::MPI::Vector Ku, inverse_mass, lumped_mass, x, y;
     };
@@ -261,13 +271,15 @@ namespace fgimpact
 
 
   std::unique_ptr<TimeStepper>
-  create_central_difference_stepper(const TimeStepper::Parameters &parameters,
-                                    const PlateModel              &plate,
-                                    ContactModel                  &contact,
-                                    const double impactor_mass,
-                                    const double impact_velocity)
+  create_central_difference_stepper(
+    const TimeStepper::Parameters              &parameters,
+    const PlateModel                           &plate,
+    const std::vector<types::global_dof_index> &contact_dofs,
+    const double                                contact_stiffness)
   {
-    return std::make_unique<CentralDifferenceStepper>(
-      parameters, plate, contact, impactor_mass, impact_velocity);
+    return std::make_unique<CentralDifferenceStepper>(parameters,
+                                                      plate,
+                                                      contact_dofs,
+                                                      contact_stiffness);
   }
 } // namespace fgimpact

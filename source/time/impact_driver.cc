@@ -110,20 +110,13 @@ namespace fgimpact
     if (!contact->warning().empty())
       pcout << "  " << contact->warning() << '\n';
 
-    results.n_dofs = plate.n_dofs();
-    results.n_mpi_ranks =
-      Utilities::MPI::n_mpi_processes(plate.get_mpi_communicator());
-    results.impactor_mass = impactor.mass();
-    // A symmetric part: its mass is share() of the plate's.
-    const double share = scene.share();
-    results.plate_mass = plate.total_mass() / share;
-    contact->fill_results(results);
-    results.setup_time = total_timer.wall_time();
+    results = setup_results(plate, scene, *contact, total_timer.wall_time());
 
     // The time stepper (implicit Newmark or explicit central difference)
     // builds its matrices and fixes the time step.  On a symmetric part
     // the ball's share of the mass meets the part's share of the force.
-    Timer factorization_timer;
+    const double share = scene.share();
+    Timer        factorization_timer;
     stepper = create_time_stepper(parameters.time_integration,
                                   parameters.linear_solver,
                                   plate,
@@ -157,6 +150,14 @@ namespace fgimpact
     results.spmv_time          = stepper->costs().spmv;
     results.solve_time         = stepper->costs().solve;
 
+    // The ball and the contact, coupled to the plate.
+    coupler =
+      std::make_unique<ContactCoupler>(*stepper,
+                                       *contact,
+                                       parameters.time_integration.newmark,
+                                       share * impactor.mass(),
+                                       parameters.time_integration.newton,
+                                       plate.get_mpi_communicator());
     dt      = stepper->time_step();
     n_steps = parameters.time_integration.n_steps(dt);
     pcout << "  " << stepper->description() << "; dt = " << dt * 1e6 << " us, "
@@ -430,7 +431,7 @@ namespace fgimpact
   ImpactDriver::do_timestep()
   {
     const double t = timestep * dt;
-    stepper->advance(timestep, t, ball, contact_state);
+    coupler->advance(timestep, t, ball, contact_state);
     monitor->record(timestep, t, *stepper, ball, contact_state);
   }
 
@@ -462,10 +463,11 @@ namespace fgimpact
                            std::to_string(in->step) +
                            ", after Time integration/End time (" +
                            std::to_string(n_steps) + " steps)"));
-    // The order of write_checkpoint(); the stepper regrows the contact
-    // set before the contact model reads its active set.
+    // The order of write_checkpoint(); the coupler regrows the contact
+    // set before the stepper and the contact model read their state.
     in->get(ball);
     contact_state_fields([&in](auto &value) { in->get(value); }, contact_state);
+    coupler->load(*in);
     stepper->load(*in);
     contact->load(*in);
     pcout << "  resumed from the checkpoint after "
@@ -483,6 +485,7 @@ namespace fgimpact
     out.put(ball);
     contact_state_fields([&out](const auto &value) { out.put(value); },
                          contact_state);
+    coupler->save(out);
     stepper->save(out);
     contact->save(out);
     monitor->save(out, step); // flushes history.csv

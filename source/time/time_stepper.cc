@@ -5,6 +5,7 @@
 #include <deal.II/lac/solver_control.h>
 
 #include <fgimpact/contact/compliance.h>
+#include <fgimpact/time/contact_coupler.h>
 #include <fgimpact/time/time_stepper.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -102,41 +103,6 @@ namespace fgimpact
 
 
 
-  std::string
-  time_step_label(const unsigned int step, const double t)
-  {
-    std::ostringstream s;
-    s << "time step " << step << " (t = " << t * 1e6 << " us)";
-    return s.str();
-  }
-
-
-
-  void
-  check_contact_converged(const ContactState  &state,
-                          const unsigned int   step,
-                          const double         t,
-                          const NewtonControl &newton)
-  {
-    // The resolved contact's LCP: its iteration counts are not
-    // Newton/Max iterations.
-    AssertThrow(state.newton_iterations != numbers::invalid_unsigned_int ||
-                  !state.used_lcp_fallback,
-                ExcMessage("the contact's complementarity problem (active "
-                           "set, then projected Gauss-Seidel) was not solved "
-                           "at " +
-                           time_step_label(step, t) +
-                           "; reduce Time integration/Time step."));
-    AssertThrow(state.newton_iterations != numbers::invalid_unsigned_int,
-                ExcMessage("Newton for the contact did not converge at " +
-                           time_step_label(step, t) + " within " +
-                           std::to_string(newton.max_iterations) +
-                           " iterations; reduce Time integration/Time step or "
-                           "raise Newton/Max iterations."));
-  }
-
-
-
   unsigned int
   TimeStepper::Parameters::n_steps(const double dt) const
   {
@@ -189,18 +155,17 @@ namespace fgimpact
     class ImplicitNewmarkStepper : public TimeStepper
     {
     public:
-      ImplicitNewmarkStepper(const Parameters &parameters,
-                             const EffectiveMatrixSolver::Parameters &solver,
-                             const PlateModel                        &plate,
-                             ContactModel                            &contact,
-                             const double impactor_mass)
-        : parameters(parameters)
-        , newmark(parameters.newmark, parameters.time_step)
+      ImplicitNewmarkStepper(
+        const Parameters                           &parameters,
+        const EffectiveMatrixSolver::Parameters    &solver,
+        const PlateModel                           &plate,
+        const std::vector<types::global_dof_index> &contact_dofs,
+        const std::vector<types::global_dof_index> &massless_dofs)
+        : newmark(parameters.newmark, parameters.time_step)
         , solver(solver)
         , plate(plate)
-        , contact_model(contact)
-        , dofs(contact.contact_dofs())
-        , m_i(impactor_mass)
+        , dofs(contact_dofs)
+        , massless(massless_dofs)
       {}
 
       void
@@ -225,40 +190,28 @@ namespace fgimpact
         return newmark.time_step();
       }
 
-      void
-      advance(const unsigned int step,
-              const double       t,
-              ImpactorState     &impactor,
-              ContactState      &contact) override
+      Vector<double>
+      predict(const unsigned int  step,
+              const double        t,
+              const ContactState &previous) override
       {
-        const double a0 = newmark.mass_factor();
-        solve_contact_free(step, t, contact);
+        solve_contact_free(step, t, previous);
+        u_free = plate.dof_values(u_new, dofs);
+        return u_free;
+      }
 
-        // Impactor: m a0 w = m r_p - F  =>  w = w~ - F/(m a0).
-        const double w_tilde =
-          newmark.predictor(impactor.w, impactor.v, impactor.a) / a0;
-        // The only communication of the contact problem: u* at the contact
-        // DoFs (one all-reduce of m values).
-        const Vector<double> u_free = plate.dof_values(u_new, dofs);
-        contact_model.solve_implicit(u_free,
-                                     compliance,
-                                     w_tilde,
-                                     1. / (m_i * a0),
-                                     parameters.newton,
-                                     contact);
-        if (contact.candidates_exhausted)
-          {
-            // Nothing of the state has changed yet: grow, rebuild and
-            // repeat the step.
-            grow_contact(step, t);
-            contact = ContactState();
-            advance(step, t, impactor, contact);
-            return;
-          }
-        check_contact_converged(contact, step, t, parameters.newton);
-        const double F = contact.force;
+      const FullMatrix<double> &
+      compliance() const override
+      {
+        return contact_compliance;
+      }
 
-        // Back-substitute: plate and impactor at t_{n+1}.
+      bool
+      correct(const unsigned int  step,
+              const double        t,
+              const ContactState &contact) override
+      {
+        // Back-substitute: the plate at t_{n+1}.
         double work = 0; // sum_j lambda_j u_j(t_{n+1}) = u^T (sum lambda g)
         for (unsigned int j = 0; j < dofs.size(); ++j)
           {
@@ -266,19 +219,16 @@ namespace fgimpact
               u_new.add(-contact.forces[j], c[j]);
             double u_j = u_free[j];
             for (unsigned int k = 0; k < dofs.size(); ++k)
-              u_j -= compliance(j, k) * contact.forces[k];
+              u_j -= contact_compliance(j, k) * contact.forces[k];
             work += contact.forces[j] * u_j;
           }
         mass->vmult(Mu_new, u_new);
         // u^T K u from K_eff u = M r_n - sum lambda_j g_j - a0 M u.
-        strain = 0.5 * (u_new * rhs - work - a0 * (u_new * Mu_new));
+        strain =
+          0.5 * (u_new * rhs - work - newmark.mass_factor() * (u_new * Mu_new));
 
         newmark.update(u_new, u, v, a);
         newmark.update(Mu_new, Mu, Mv, Ma);
-        newmark.update(w_tilde - F / (m_i * a0),
-                       impactor.w,
-                       impactor.v,
-                       impactor.a);
         // Refresh the carried products now and then against round-off.
         if (step % 64 == 0)
           {
@@ -291,6 +241,30 @@ namespace fgimpact
                       std::isfinite(kinetic),
                     ExcMessage("the solution is not finite (NaN or Inf) at " +
                                time_step_label(step, t) + "."));
+        return true;
+      }
+
+      /// The contact set grew: its massless DoFs (a new K_eff, factorized
+      /// again, and the carried products M u, M v, M a) and its
+      /// compliance.
+      void
+      set_contact_dofs(
+        const std::vector<types::global_dof_index> &contact_dofs,
+        const std::vector<types::global_dof_index> &massless_dofs) override
+      {
+        dofs     = contact_dofs;
+        massless = massless_dofs;
+        if (mass != &plate.mass_matrix())
+          {
+            setup_mass_matrix();
+            effective.copy_from(plate.stiffness_matrix());
+            effective.add(newmark.mass_factor(), *mass);
+            solver.initialize(effective, &plate.get_dof_handler());
+            mass->vmult(Mu, u);
+            mass->vmult(Mv, v);
+            mass->vmult(Ma, a);
+          }
+        compute_compliance();
       }
 
       bool
@@ -302,7 +276,7 @@ namespace fgimpact
         const ContactState no_force;
         for (unsigned int step = 1; step <= n_steps; ++step)
           {
-            // As advance() with F_1 = 1 N and F_j = 0 after.
+            // As a coupled step with F_1 = 1 N and F_j = 0 after.
             solve_contact_free(step, step * newmark.time_step(), no_force);
             if (step == 1)
               u_new.add(-1., c[0]);
@@ -339,7 +313,6 @@ namespace fgimpact
       save(CheckpointWriter &out) const override
       {
         TimeStepper::save(out);
-        out.put<std::uint64_t>(dofs.size());
         for (const auto *vector : {&a, &Mu, &Mv, &Ma})
           out.put(*vector);
       }
@@ -348,21 +321,6 @@ namespace fgimpact
       load(CheckpointReader &in) override
       {
         TimeStepper::load(in);
-        std::uint64_t n_contact_dofs = 0;
-        in.get(n_contact_dofs);
-        if (n_contact_dofs != dofs.size())
-          {
-            // The candidate set had grown: grow it alike (M u, M v, M a
-            // come from the checkpoint below).
-            while (contact_model.contact_dofs().size() < n_contact_dofs)
-              AssertThrow(contact_model.grow_candidates(),
-                          ExcMessage("the checkpoint's contact candidate "
-                                     "set cannot be rebuilt"));
-            rebuild_for_contact_dofs();
-          }
-        AssertThrow(dofs.size() == n_contact_dofs,
-                    ExcMessage("the checkpoint's contact candidate set "
-                               "does not match this set-up"));
         for (auto *vector : {&a, &Mu, &Mv, &Ma})
           in.get(*vector);
       }
@@ -384,8 +342,7 @@ namespace fgimpact
       void
       setup_mass_matrix()
       {
-        const auto &massless = contact_model.massless_dofs();
-        mass                 = &plate.mass_matrix();
+        mass = &plate.mass_matrix();
         if (massless.empty())
           return;
         modified_mass.copy_from(plate.mass_matrix());
@@ -417,54 +374,12 @@ namespace fgimpact
         mass = &modified_mass;
       }
 
-      /// The contact reached the candidate set's edge: a larger set, its
-      /// massless DoFs (a new K_eff, factorized again, and the carried
-      /// products M u, M v, M a) and its compliance.
-      void
-      grow_contact(const unsigned int step, const double t)
-      {
-        AssertThrow(contact_model.grow_candidates(),
-                    ExcMessage("the contact reached the edge of the "
-                               "candidate set at " +
-                               time_step_label(step, t) +
-                               ", which cannot grow beyond the sphere's "
-                               "radius: the elements under the ball are too "
-                               "coarse for the resolved contact; raise "
-                               "Geometry/Contact refinement levels (auto "
-                               "chooses them from the scene)."));
-        rebuild_for_contact_dofs();
-        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
-          std::cout << "  " << time_step_label(step, t)
-                    << ": the contact reached the edge of the candidate "
-                       "set; grown to "
-                    << dofs.size() << " candidates" << std::endl;
-      }
-
-      /// After the contact set grew: its massless DoFs (a new K_eff,
-      /// factorized again, and the carried products M u, M v, M a) and
-      /// its compliance.
-      void
-      rebuild_for_contact_dofs()
-      {
-        dofs = contact_model.contact_dofs();
-        if (mass != &plate.mass_matrix())
-          {
-            setup_mass_matrix();
-            effective.copy_from(plate.stiffness_matrix());
-            effective.add(newmark.mass_factor(), *mass);
-            solver.initialize(effective, &plate.get_dof_handler());
-            mass->vmult(Mu, u);
-            mass->vmult(Mv, v);
-            mass->vmult(Ma, a);
-          }
-        compute_compliance();
-      }
-
       /// c_j = K_eff^{-1} g_j and the dense compliance C (m/N).
       void
       compute_compliance()
       {
-        fgimpact::compute_compliance(solver, plate, dofs, compliance, &c);
+        fgimpact::compute_compliance(
+          solver, plate, dofs, contact_compliance, &c);
       }
 
       /// The contact-free response u_new = u* (K_eff u* = M r_n) and M r_n
@@ -525,7 +440,6 @@ namespace fgimpact
         measured_costs.solve = timer.wall_time() / n_solves;
       }
 
-      const Parameters                      parameters;
       const NewmarkIntegrator               newmark;
       TrilinosWrappers::SparseMatrix        modified_mass;
       const TrilinosWrappers::SparseMatrix *mass         = nullptr;
@@ -535,12 +449,11 @@ namespace fgimpact
       TrilinosWrappers::SparseMatrix             effective;
       EffectiveMatrixSolver                      solver;
       const PlateModel                          &plate;
-      ContactModel                              &contact_model;
-      std::vector<types::global_dof_index>       dofs;
-      const double                               m_i;
+      std::vector<types::global_dof_index>       dofs, massless;
       TrilinosWrappers::MPI::Vector              Mu, Mv, Ma, u_new, Mu_new, rhs;
       std::vector<TrilinosWrappers::MPI::Vector> c;
-      FullMatrix<double>                         compliance;
+      FullMatrix<double>                         contact_compliance;
+      Vector<double>                             u_free; // m, contact DoFs
       bool                                       iterative = false;
     };
   } // namespace
@@ -551,7 +464,7 @@ namespace fgimpact
   create_time_stepper(const TimeStepper::Parameters           &parameters,
                       const EffectiveMatrixSolver::Parameters &solver,
                       const PlateModel                        &plate,
-                      ContactModel                            &contact,
+                      const ContactModel                      &contact,
                       const double                             impactor_mass,
                       const double                             impact_velocity)
   {
@@ -559,11 +472,17 @@ namespace fgimpact
       {
         case TimeStepper::Scheme::central_difference:
           return create_central_difference_stepper(
-            parameters, plate, contact, impactor_mass, impact_velocity);
+            parameters,
+            plate,
+            contact.contact_dofs(),
+            contact.stiffness_bound(impactor_mass, impact_velocity));
         case TimeStepper::Scheme::implicit_newmark:
           break;
       }
-    return std::make_unique<ImplicitNewmarkStepper>(
-      parameters, solver, plate, contact, impactor_mass);
+    return std::make_unique<ImplicitNewmarkStepper>(parameters,
+                                                    solver,
+                                                    plate,
+                                                    contact.contact_dofs(),
+                                                    contact.massless_dofs());
   }
 } // namespace fgimpact

@@ -12,6 +12,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <fgimpact/time/contact_coupler.h>
 #include <fgimpact/time/time_stepper.h>
 
 #include <cmath>
@@ -56,6 +57,8 @@ main(int argc, char **argv)
   auto stepper =
     create_time_stepper(tp, sp, plate, contact_model, m, ip.initial_velocity);
   stepper->initialize(false);
+  ContactCoupler coupler(
+    *stepper, contact_model, tp.newmark, m, tp.newton, MPI_COMM_WORLD);
   ImpactorState ball;
   ball.v = ip.initial_velocity;
   ContactState contact;
@@ -136,7 +139,7 @@ main(int argc, char **argv)
       const double F_mono = law.force(w + u(contact_dof));
 
       // The eliminated stepper.
-      stepper->advance(step, step * tp.time_step, ball, contact);
+      coupler.advance(step, step * tp.time_step, ball, contact);
       const auto &u_elim = stepper->displacement();
       double      diff = 0, scale = 0;
       for (unsigned int i = 0; i < n; ++i)

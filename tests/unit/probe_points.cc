@@ -27,6 +27,7 @@
 #include <fgimpact/plate/probe_set.h>
 #include <fgimpact/plate/probes.h>
 #include <fgimpact/plate/stress_recovery.h>
+#include <fgimpact/time/contact_coupler.h>
 #include <fgimpact/time/time_stepper.h>
 
 #include <cmath>
@@ -294,15 +295,21 @@ namespace
     auto stepper = create_time_stepper(
       tp, sp, plate, contact_model, impactor.mass(), ip.initial_velocity);
     stepper->initialize(false);
-    ProbeSet      probes(plate, {probe("mid", 100, 50, 10)});
-    ImpactorState ball;
+    ContactCoupler coupler(*stepper,
+                           contact_model,
+                           tp.newmark,
+                           impactor.mass(),
+                           tp.newton,
+                           MPI_COMM_WORLD);
+    ProbeSet       probes(plate, {probe("mid", 100, 50, 10)});
+    ImpactorState  ball;
     ball.v = ip.initial_velocity;
     ContactState contact;
 
     double max_error = 0, peak_force = 0, max_reaction = 0, max_inertia = 0;
     for (unsigned int step = 1; step <= 60; ++step)
       {
-        stepper->advance(step, step * 1e-6, ball, contact);
+        coupler.advance(step, step * 1e-6, ball, contact);
         const double R = probes
                            .evaluate(stepper->displacement(),
                                      stepper->velocity(),

@@ -62,9 +62,9 @@ namespace fgimpact
   };
 
   /**
-   * The contact between the impactor and the plate's top face, as the time
-   * steppers see it: a set of contact DoFs (z components of top-face nodes,
-   * the same global indices on every MPI rank) where non-negative forces
+   * The contact between the impactor and the plate's top face, as the
+   * ContactCoupler sees it: a set of contact DoFs (z components of top-face
+   * nodes, the same global indices on every MPI rank) where non-negative forces
    * lambda_j push the plate down (-z) and the ball up.
    *
    * An implicit step gives the model the contact-free response of plate and
@@ -73,8 +73,9 @@ namespace fgimpact
    * with C_ij = g_i^T K_eff^{-1} g_j (the Delassus matrix, m/N, constant
    * because K_eff is) and c_b = 1/(m a0) the ball's compliance; the model
    * returns the forces.  An explicit step gives it the positions.  Nothing
-   * else of the time loop depends on the model, so a resolved contact over
-   * many nodes implements this interface without touching the steppers.
+   * else of the time loop depends on the model: the coupler grows a
+   * resolved contact's candidate set and hands the new contact DoFs (and
+   * massless_dofs()) to the plate response.
    */
   class ContactModel
   {

@@ -3,6 +3,7 @@
 
 #include <fgimpact/app/parameters.h>
 #include <fgimpact/app/scene.h>
+#include <fgimpact/contact/contact_model.h>
 #include <fgimpact/output/results.h>
 #include <fgimpact/plate/plate_model.h>
 
@@ -10,16 +11,6 @@
 
 namespace fgimpact
 {
-  /**
-   * summary.txt of an impact run: every key of the README's table from r
-   * (scaled to the units in the names), with `status` (completed,
-   * interrupted or failed) and time_reached_us = t_end.  The monitor
-   * writes it at the end of the time loop; the driver writes it with
-   * status = failed when set-up fails before the monitor exists, so that
-   * a failed run always has the same keys.  contact_area: the resolved
-   * sphere's keys; instrumentation: spmv_ms and solve_ms.  Throws
-   * ExcOutputFailure if filename cannot be written.
-   */
   /**
    * What the run models: the parameters' choices as resolved (the
    * symmetric part, the contact refinement levels of the mesh) and the
@@ -31,6 +22,18 @@ namespace fgimpact
                  const Scene      &scene,
                  const PlateModel &plate,
                  const double      time_step);
+
+  /**
+   * An impact run's results before the time loop, shared by a run and a
+   * study case: DoFs, MPI ranks, the impactor's and the whole plate's
+   * masses (kg; the part's mass over its share), the contact model's
+   * constants, and setup_time (s).  Collective.
+   */
+  ImpactResults
+  setup_results(const PlateModel   &plate,
+                const Scene        &scene,
+                const ContactModel &contact,
+                const double        setup_time);
 
   /// The validity limits of the small-strain model: the largest
   /// indentation against the ball's radius R (Hertz: a/R = sqrt(alpha/R),
@@ -48,6 +51,16 @@ namespace fgimpact
   std::vector<std::string>
   resolution_warnings(const ImpactResults &r, const bool contact_area);
 
+  /**
+   * summary.txt of an impact run: every key of the README's table from r
+   * (scaled to the units in the names), with `status` (completed,
+   * interrupted or failed) and time_reached_us = t_end.  The monitor
+   * writes it at the end of the time loop; the driver writes it with
+   * status = failed when set-up fails before the monitor exists, so that
+   * a failed run always has the same keys.  contact_area: the resolved
+   * sphere's keys; instrumentation: spmv_ms and solve_ms.  Throws
+   * ExcOutputFailure if filename cannot be written.
+   */
   void
   write_impact_summary(const std::string   &filename,
                        const ImpactResults &r,

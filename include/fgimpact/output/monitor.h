@@ -17,6 +17,7 @@
 #include <fgimpact/plate/plate_model.h>
 #include <fgimpact/plate/probe_set.h>
 #include <fgimpact/plate/probes.h>
+#include <fgimpact/time/contact_coupler.h>
 #include <fgimpact/time/time_stepper.h>
 
 #include <array>

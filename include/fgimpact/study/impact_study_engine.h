@@ -32,10 +32,10 @@ namespace fgimpact
    * displacement g_j, every history.csv probe value and the Gram matrix
    * G_ij = v_i^T M v_j of the velocity responses.  A case is then the
    * scalar convolution u_c(n+1) = sum_k g_{n+2-k} F_k (the contact-free
-   * displacement the stepper would have solved for) coupled with the
-   * impactor's Newmark update and the contact model's own Newton solve
-   * (same call, same tolerances), so its history equals a separate run's
-   * up to round-off; the probes are convolved the same way; the plate's
+   * displacement the stepper would have solved for), a PlateResponse that
+   * the ContactCoupler of a normal run couples to the ball and the contact
+   * model (same calls, same tolerances), so its history equals a separate
+   * run's up to round-off; the probes are convolved the same way; the plate's
    * kinetic energy is 1/2 F^T G F, its strain energy the work of the
    * contact force (trapezoidal, exact for average acceleration) minus the
    * kinetic energy.  The case's history.csv and summary.txt are written by
@@ -100,13 +100,6 @@ namespace fgimpact
     preparation_timing() const;
 
   private:
-    /// The contact-free displacement (m) at the contact DoF at `step`: the
-    /// convolution of the forces F_1 .. F_{step-1} (N) with the unit
-    /// response.
-    double
-    contact_free_displacement(const unsigned int         step,
-                              const std::vector<double> &F) const;
-
     /// results for a new case: the plate's and the set-up's entries, the
     /// contact model's, the model description; the history's are the
     /// monitor's.
@@ -114,11 +107,6 @@ namespace fgimpact
     start_results(const Parameters   &p,
                   const Scene        &scene,
                   const ContactModel &contact);
-
-    /// One step of the case: the convolved plate, the contact solve and
-    /// the impactor's update; returns the plate sample at step n + 1.
-    PlateSample
-    convolved_plate(const unsigned int n, const std::vector<double> &F) const;
 
     const PlateModel &plate;
     const Timer      &total_timer;

@@ -12,6 +12,7 @@
 #include <fgimpact/output/checkpoint.h>
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/plate/plate_model.h>
+#include <fgimpact/time/contact_coupler.h>
 #include <fgimpact/time/time_stepper.h>
 
 #include <memory>
@@ -50,8 +51,9 @@ namespace fgimpact
    * The low-velocity impact (Problem type = impact), in the shape of
    * step-18: setup() builds the contact model and the time stepper, run()
    * records the initial state and calls do_timestep() until the end time.
-   * The plate and the ball are coupled only through the ContactModel; the
-   * ImpactMonitor watches the state and writes every output.
+   * The ContactCoupler advances plate (the TimeStepper's response), ball
+   * and contact by a step; the ImpactMonitor watches the state and writes
+   * every output.
    */
   class ImpactDriver : public ProblemDriver
   {
@@ -147,6 +149,7 @@ namespace fgimpact
 
     std::unique_ptr<ContactModel>           contact;
     std::unique_ptr<TimeStepper>            stepper;
+    std::unique_ptr<ContactCoupler>         coupler;
     std::unique_ptr<ImpactMonitor>          monitor;
     std::vector<ImpactMonitor::RowObserver> observers;
 

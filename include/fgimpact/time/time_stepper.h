@@ -10,6 +10,7 @@
 #include <fgimpact/plate/linear_solver.h>
 #include <fgimpact/plate/plate_model.h>
 #include <fgimpact/time/newmark.h>
+#include <fgimpact/time/plate_response.h>
 
 #include <functional>
 #include <memory>
@@ -19,17 +20,10 @@ namespace fgimpact
 {
   using namespace dealii;
 
-  /// The impactor's scalar unknown: displacement w (m), velocity v (m/s),
-  /// acceleration a (m/s^2), positive in the impact direction (-z).
-  struct ImpactorState
-  {
-    double w = 0, v = 0, a = 0;
-  };
-
   /**
-   * Advances the plate and the impactor by one time step, coupled through
-   * a ContactModel.  Two schemes (a selection plus the factory
-   * create_time_stepper()):
+   * The finite element plate's response in time (a PlateResponse, which
+   * the ContactCoupler couples to the ball), with its fields u, v, a.  Two
+   * schemes (a selection plus the factory create_time_stepper()):
    *
    * - implicit: Newmark (beta, gamma); the contact is block-eliminated
    *   with the plate's compliance at the contact DoFs, so a step costs one
@@ -38,7 +32,7 @@ namespace fgimpact
    *   row-sum lumped mass, one matrix-vector product per step, at a time
    *   step below the stability limit 2/omega_max.
    */
-  class TimeStepper
+  class TimeStepper : public PlateResponse
   {
   public:
     enum class Scheme
@@ -85,17 +79,6 @@ namespace fgimpact
     virtual void
     initialize(const bool measure_reference_costs) = 0;
 
-    /// The time step in use (s).
-    virtual double
-    time_step() const = 0;
-
-    /// Advance from t_n to t_{n+1} = t (s); `step` and t only label errors.
-    virtual void
-    advance(const unsigned int step,
-            const double       t,
-            ImpactorState     &impactor,
-            ContactState      &contact) = 0;
-
     /// Receives step j, u_j (m), v_j (m/s) and M v_j of a unit response.
     using ResponseObserver =
       std::function<void(const unsigned int,
@@ -107,11 +90,11 @@ namespace fgimpact
      * The plate's discrete response, from rest, to a unit contact force
      * (1 N down on the single contact DoF) at step 1 and none after:
      * observe() gets steps 1..n_steps, computed by the same recursion,
-     * matrices and factorization as advance() (one solve per step).  The
+     * matrices and factorization as a coupled step (one solve per step).  The
      * plate is linear and time-invariant, so any force history's response
      * is the convolution of these (the study engine).  Leaves the stepper
      * at rest.  Returns false, observing nothing, where this does not
-     * reproduce advance() (explicit scheme, iterative solver, several
+     * reproduce the coupled step (explicit scheme, iterative solver, several
      * contact DoFs).
      */
     virtual bool
@@ -150,15 +133,15 @@ namespace fgimpact
     }
 
     /// Kinetic energy 1/2 v^T M v and strain energy 1/2 u^T K u of the
-    /// plate (J), kept up to date by advance() without extra matrix-vector
+    /// plate (J), kept up to date by correct() without extra matrix-vector
     /// products.
     double
-    kinetic_energy() const
+    kinetic_energy() const override
     {
       return kinetic;
     }
     double
-    strain_energy() const
+    strain_energy() const override
     {
       return strain;
     }
@@ -181,13 +164,13 @@ namespace fgimpact
     description() const = 0;
 
     /// The state after a time step, for a checkpoint: u, v, the energies
-    /// and what the scheme carries (a; M u, M v, M a; the contact set's
-    /// size after growth).  The factorization is not stored.
+    /// and what the scheme carries (a; M u, M v, M a).  The factorization
+    /// is not stored.
     virtual void
     save(CheckpointWriter &out) const;
 
-    /// Restore save()'s state after initialize() (grows the contact set
-    /// and factorizes again if it had grown).  Collective.
+    /// Restore save()'s state after initialize() and after a grown contact
+    /// set was handed over (ContactCoupler::load()).  Collective.
     virtual void
     load(CheckpointReader &in);
 
@@ -199,7 +182,7 @@ namespace fgimpact
     }
 
   protected:
-    /// The state every scheme keeps and advance() updates.
+    /// The state every scheme keeps and correct() updates.
     TrilinosWrappers::MPI::Vector u, v, a;
     double                        kinetic = 0, strain = 0;
     unsigned int                  last_linear_iterations = 0;
@@ -208,34 +191,28 @@ namespace fgimpact
 
 
 
-  /// "time step N (t = T us)", for messages.
-  std::string
-  time_step_label(const unsigned int step, const double t);
-
-  /// An implicit step's contact solve failed (ContactState::
-  /// newton_iterations invalid): throws ExcMessage naming the step and the
-  /// parameters to change (for the resolved contact's LCP, whose
-  /// iterations are not Newton's, the time step).  No-op if it converged.
-  void
-  check_contact_converged(const ContactState  &state,
-                          const unsigned int   step,
-                          const double         t,
-                          const NewtonControl &newton);
-
-  /// The explicit scheme (source/time/central_difference_stepper.cc).
+  /// The explicit scheme (source/time/central_difference_stepper.cc);
+  /// contact_stiffness (N/m) bounds the contact's stiffening of the
+  /// contact DoFs (ContactModel::stiffness_bound()).
   std::unique_ptr<TimeStepper>
-  create_central_difference_stepper(const TimeStepper::Parameters &parameters,
-                                    const PlateModel              &plate,
-                                    ContactModel                  &contact,
-                                    const double impactor_mass,
-                                    const double impact_velocity);
+  create_central_difference_stepper(
+    const TimeStepper::Parameters              &parameters,
+    const PlateModel                           &plate,
+    const std::vector<types::global_dof_index> &contact_dofs,
+    const double                                contact_stiffness);
 
-  /// The factory: the scheme named in the parameters.
+  /**
+   * The factory: the scheme named in the parameters, for the contact's
+   * DoFs (and massless DoFs, and for the explicit stability limit its
+   * stiffness during an impact of a ball of mass impactor_mass, kg, the
+   * part's share, at impact_velocity, m/s).  The stepper keeps no
+   * reference to the contact model.
+   */
   std::unique_ptr<TimeStepper>
   create_time_stepper(const TimeStepper::Parameters           &parameters,
                       const EffectiveMatrixSolver::Parameters &solver,
                       const PlateModel                        &plate,
-                      ContactModel                            &contact,
+                      const ContactModel                      &contact,
                       const double                             impactor_mass,
                       const double                             impact_velocity);
 } // namespace fgimpact
