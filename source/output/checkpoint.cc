@@ -17,9 +17,9 @@ namespace fgimpact
   {
     const char magic[8] = {'F', 'G', 'I', 'M', 'P', 'C', 'K', 'P'};
     // 2: probes.csv's length in the monitor's part; the header hashed.
-    // 3: the contact set's size before the stepper's state (the
-    // ContactCoupler's section).
-    const unsigned int format_version = 3;
+    // 3: the contact set's size before the stepper's state.
+    // 4: named, versioned sections (CheckpointWriter::section()).
+    const unsigned int format_version = 4;
 
     /// FNV-1a, 64 bit: detects a torn or damaged file, and tells
     /// parameter texts apart.
@@ -202,6 +202,41 @@ namespace fgimpact
     const char *p = buffer.data() + position;
     position += n;
     return p;
+  }
+
+
+
+  CheckpointReader
+  CheckpointReader::section(const std::string  &name,
+                            const std::uint32_t version) const
+  {
+    CheckpointReader all(buffer);
+    while (all.position < all.buffer.size())
+      {
+        std::string   found;
+        std::uint32_t found_version = 0;
+        std::uint64_t length        = 0;
+        all.get(found);
+        all.get(found_version);
+        all.get(length);
+        const char *data = all.take(length);
+        if (found != name)
+          continue;
+        AssertThrow(found_version == version,
+                    ExcMessage("the checkpoint's section '" + name +
+                               "' has version " +
+                               std::to_string(found_version) +
+                               ", this program reads version " +
+                               std::to_string(version)));
+        CheckpointReader part(std::string(data, length));
+        part.step = step;
+        return part;
+      }
+    AssertThrow(false,
+                ExcMessage("the checkpoint has no section '" + name +
+                           "' (written by a different version of the "
+                           "program)"));
+    return CheckpointReader("");
   }
 
 

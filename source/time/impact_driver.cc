@@ -30,6 +30,10 @@ namespace fgimpact
       archive(state.candidates_exhausted);
     }
 
+    /// The layout of the driver's own checkpoint section (the ball and
+    /// the contact state).
+    constexpr std::uint32_t state_version = 1;
+
     /// The message of a failed output write in f ("" if none).
     template <typename F>
     std::string
@@ -349,6 +353,10 @@ namespace fgimpact
   ImpactDriver::open_monitor(CheckpointReader *resume)
   {
     // The monitor opens the output files: only now, after setup() passed.
+    std::unique_ptr<CheckpointReader> monitor_state;
+    if (resume)
+      monitor_state = std::make_unique<CheckpointReader>(
+        resume->section("monitor", ImpactMonitor::checkpoint_version));
     monitor = std::make_unique<ImpactMonitor>(parameters.output,
                                               plate,
                                               *contact,
@@ -357,7 +365,7 @@ namespace fgimpact
                                               dt,
                                               n_steps,
                                               results,
-                                              resume);
+                                              monitor_state.get());
     for (const auto &observer : observers)
       monitor->add_row_observer(observer);
     monitor->add_contact_output(scene.impact_point(), impactor.radius());
@@ -463,13 +471,22 @@ namespace fgimpact
                            std::to_string(in->step) +
                            ", after Time integration/End time (" +
                            std::to_string(n_steps) + " steps)"));
-    // The order of write_checkpoint(); the coupler regrows the contact
-    // set before the stepper and the contact model read their state.
-    in->get(ball);
-    contact_state_fields([&in](auto &value) { in->get(value); }, contact_state);
-    coupler->load(*in);
-    stepper->load(*in);
-    contact->load(*in);
+    // Each component's section (write_checkpoint()); the coupler regrows
+    // the contact set before the stepper and the contact model read their
+    // state.
+    CheckpointReader state = in->section("impact state", state_version);
+    state.get(ball);
+    contact_state_fields([&state](auto &value) { state.get(value); },
+                         contact_state);
+    CheckpointReader coupling =
+      in->section("coupler", ContactCoupler::checkpoint_version);
+    coupler->load(coupling);
+    CheckpointReader plate_state =
+      in->section("plate", TimeStepper::checkpoint_version);
+    stepper->load(plate_state);
+    CheckpointReader contact_model_state =
+      in->section("contact model", ContactModel::checkpoint_version);
+    contact->load(contact_model_state);
     pcout << "  resumed from the checkpoint after "
           << time_step_label(in->step, in->step * dt) << '\n';
     return in;
@@ -482,13 +499,25 @@ namespace fgimpact
   {
     Timer            timer;
     CheckpointWriter out;
-    out.put(ball);
-    contact_state_fields([&out](const auto &value) { out.put(value); },
-                         contact_state);
-    coupler->save(out);
-    stepper->save(out);
-    contact->save(out);
-    monitor->save(out, step); // flushes history.csv
+    out.section("impact state", state_version, [&](CheckpointWriter &s) {
+      s.put(ball);
+      contact_state_fields([&s](const auto &value) { s.put(value); },
+                           contact_state);
+    });
+    out.section("coupler",
+                ContactCoupler::checkpoint_version,
+                [&](CheckpointWriter &s) { coupler->save(s); });
+    out.section("plate",
+                TimeStepper::checkpoint_version,
+                [&](CheckpointWriter &s) { stepper->save(s); });
+    out.section("contact model",
+                ContactModel::checkpoint_version,
+                [&](CheckpointWriter &s) { contact->save(s); });
+    out.section("monitor",
+                ImpactMonitor::checkpoint_version,
+                [&](CheckpointWriter &s) {
+                  monitor->save(s, step); // flushes history.csv
+                });
     const MPI_Comm comm = plate.get_mpi_communicator();
     if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
       return -1;

@@ -172,6 +172,9 @@ namespace fgimpact
       return {};
     }
 
+    /// The layout of save()'s checkpoint section.
+    static constexpr std::uint32_t checkpoint_version = 1;
+
     /// A model's own state between steps (the resolved contact's active
     /// set), for a checkpoint; restored after the stepper's load(), which
     /// regrows the candidate set.

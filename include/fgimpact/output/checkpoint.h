@@ -23,9 +23,10 @@ namespace fgimpact
    * each MPI rank writes one binary file, OUTPUT/checkpoint/rank_NNNN.bin,
    * with a header (magic, format version, rank count, step, a hash and the
    * text of the expanded parameters) and a payload the driver fills
-   * (CheckpointWriter: the scalar state, identical on every rank, and this
-   * rank's part of the distributed vectors; the partition is the same for
-   * the same mesh and rank count).  Values are stored as their bytes, so a
+   * (CheckpointWriter: one named, versioned section per component, each
+   * with its scalar state, identical on every rank, and this rank's part
+   * of its distributed vectors; the partition is the same for the same
+   * mesh and rank count).  Values are stored as their bytes, so a
    * resumed run continues bit for bit.  The files go to checkpoint.new/;
    * only once every rank has written its file does rank 0 put that
    * directory in the place of the last good one (checkpoint.old/ in
@@ -54,6 +55,26 @@ namespace fgimpact
     /// This rank's locally owned entries of a distributed vector.
     void
     put(const TrilinosWrappers::MPI::Vector &vector);
+
+    /**
+     * A named, versioned section: what save(CheckpointWriter &) puts into
+     * a writer of its own, stored with its name, version and length.
+     * CheckpointReader::section() finds it by name, so each component
+     * saves and loads its own section and the order of the calls does not
+     * matter; a component that changes its layout raises its version.
+     */
+    template <typename Save>
+    void
+    section(const std::string  &name,
+            const std::uint32_t version,
+            const Save         &save)
+    {
+      CheckpointWriter part;
+      save(part);
+      put(name);
+      put(version);
+      put(part.buffer);
+    }
 
     const std::string &
     data() const
@@ -89,6 +110,14 @@ namespace fgimpact
     get(std::vector<bool> &values);
     void
     get(TrilinosWrappers::MPI::Vector &vector);
+
+    /**
+     * The section `name` written by CheckpointWriter::section(), wherever
+     * it lies in the payload (the reader's position does not move).
+     * Throws ExcMessage if it is missing or has another version.
+     */
+    CheckpointReader
+    section(const std::string &name, const std::uint32_t version) const;
 
     /// The step the checkpoint was written after.
     unsigned int step = 0;

@@ -177,6 +177,9 @@ namespace fgimpact
            const ImpactorState &ball,
            const ContactState  &contact,
            const PlateFields   *fields = nullptr);
+    /// The layout of save()'s checkpoint section.
+    static constexpr std::uint32_t checkpoint_version = 1;
+
     /**
      * For a checkpoint: the monitor's state (the time history's results,
      * peak detection, episodes, the contact work, the watchdog), the

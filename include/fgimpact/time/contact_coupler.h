@@ -57,6 +57,9 @@ namespace fgimpact
             ImpactorState     &ball,
             ContactState      &contact);
 
+    /// The layout of save()'s checkpoint section.
+    static constexpr std::uint32_t checkpoint_version = 1;
+
     /// The contact set's size, for a checkpoint.
     void
     save(CheckpointWriter &out) const;

@@ -163,6 +163,9 @@ namespace fgimpact
     virtual std::string
     description() const = 0;
 
+    /// The layout of save()'s checkpoint section.
+    static constexpr std::uint32_t checkpoint_version = 1;
+
     /// The state after a time step, for a checkpoint: u, v, the energies
     /// and what the scheme carries (a; M u, M v, M a).  The factorization
     /// is not stored.
