@@ -325,6 +325,14 @@ namespace fgimpact
     const bool with_acceleration = fields.acceleration && a != nullptr;
     if (with_acceleration)
       a_ghosted = *a;
+    // The recovered fields here, not in the background: the recovery
+    // distributes constraints on Trilinos vectors, whose creation calls
+    // MPI (an all-reduce, even on one rank), and MPI calls from two
+    // threads at once crashed the run (about 1 in 40 runs of the resolved
+    // default scene: the main thread's next PlateFields::update() met the
+    // writer's StressRecovery::recover() in MPI_Allreduce).
+    if (recovery)
+      recovery->recover(u_ghosted);
 
     const MPI_Comm     comm    = plate.get_mpi_communicator();
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
@@ -390,9 +398,9 @@ namespace fgimpact
   void
   VtuWriter::add_recovered_fields(DataOut<3> &data_out)
   {
+    // recover() was called by write(), in the calling thread.
     if (!recovery)
       return;
-    recovery->recover(u_ghosted);
     using F = StressRecovery::Field;
     std::vector<F> selected;
     if (fields.stress)
