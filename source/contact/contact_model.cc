@@ -267,6 +267,18 @@ namespace fgimpact
 
 
 
+  const SelectionTable<ContactModelParameters::Model> &
+  ContactModelParameters::model_names()
+  {
+    static const SelectionTable<Model> names = {
+      {"hertz node", Model::hertz_node},
+      {"hertz midplane", Model::hertz_midplane},
+      {"resolved sphere", Model::resolved_sphere}};
+    return names;
+  }
+
+
+
   void
   ContactModelParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -275,7 +287,7 @@ namespace fgimpact
       prm.declare_entry(
         "Model",
         "hertz node",
-        Patterns::Selection("hertz node|hertz midplane|resolved sphere"),
+        model_names().pattern(),
         "hertz node: the paper's Eq. 3.14, the modified Hertz law as a point "
         "force at the top node nearest to the impact point (its force "
         "depends on the element size there: it does not converge under "
@@ -322,10 +334,7 @@ namespace fgimpact
   ContactModelParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    const std::string name = prm.get("Model");
-    model            = (name == "resolved sphere" ? Model::resolved_sphere :
-                        name == "hertz midplane"  ? Model::hertz_midplane :
-                                                    Model::hertz_node);
+    model            = model_names().value(prm.get("Model"));
     paraboloid_gap   = (prm.get("Gap shape") == "paraboloid");
     modified_mass    = (prm.get("Stabilization") == "modified mass");
     candidate_radius = prm.get_double("Candidate radius");

@@ -12,6 +12,29 @@ namespace fgimpact
 {
   using dealii::ExcMessage;
 
+  const SelectionTable<Gradation> &
+  gradation_names()
+  {
+    static const SelectionTable<Gradation> names = {
+      {"power law", Gradation::power_law},
+      {"exponential", Gradation::exponential},
+      {"sigmoid", Gradation::sigmoid},
+      {"tabulated", Gradation::tabulated}};
+    return names;
+  }
+
+
+
+  const SelectionTable<Homogenization> &
+  homogenization_names()
+  {
+    static const SelectionTable<Homogenization> names = {
+      {"rule of mixtures", Homogenization::rule_of_mixtures},
+      {"Mori-Tanaka", Homogenization::mori_tanaka}};
+    return names;
+  }
+
+
   IsotropicProperties
   homogenize(const Constituents  &constituents,
              const double         metal_fraction,

@@ -6,6 +6,29 @@
 
 namespace fgimpact
 {
+  const SelectionTable<PropertyMode> &
+  property_mode_names()
+  {
+    static const SelectionTable<PropertyMode> names = {
+      {"graded", PropertyMode::graded},
+      {"homogeneous", PropertyMode::homogeneous},
+      {"pointwise", PropertyMode::pointwise}};
+    return names;
+  }
+
+
+
+  const SelectionTable<GradedNodalValues> &
+  graded_nodal_values_names()
+  {
+    static const SelectionTable<GradedNodalValues> names = {
+      {"sampled", GradedNodalValues::sampled},
+      {"layer average", GradedNodalValues::layer_average}};
+    return names;
+  }
+
+
+
   namespace
   {
     void
@@ -21,7 +44,7 @@ namespace fgimpact
       prm.declare_entry(
         "Gradation",
         "power law",
-        Patterns::Selection("power law|exponential|sigmoid|tabulated"),
+        gradation_names().pattern(),
         "How the properties vary with zeta = z/h (z from the bottom face; "
         "metal on top). power law: metal volume fraction V_m = zeta^n "
         "(Eq. 2.1). exponential: P = P_c exp(ln(P_m/P_c) zeta) for E and "
@@ -32,7 +55,7 @@ namespace fgimpact
       prm.declare_entry(
         "Homogenization",
         "rule of mixtures",
-        Patterns::Selection("rule of mixtures|Mori-Tanaka"),
+        homogenization_names().pattern(),
         "How E and nu of the mixture follow from the metal volume fraction "
         "(power law and sigmoid only). rule of mixtures: P = P_c + (P_m - "
         "P_c) V_m for E, nu and rho. Mori-Tanaka: metal matrix with ceramic "
@@ -50,7 +73,7 @@ namespace fgimpact
       prm.declare_entry(
         "Graded nodal values",
         "sampled",
-        Patterns::Selection("sampled|layer average"),
+        graded_nodal_values_names().pattern(),
         "Property mode = graded: the nodal values the elements interpolate. "
         "sampled: the profile at the nodes (Eq. 3.3). layer average: the "
         "element-wise L2 projection of the profile onto polynomials in z "
@@ -88,22 +111,16 @@ namespace fgimpact
                                  "[-0.99, 0.49]."));
           p.ceramic_poissons_ratio = value;
         }
-      const std::string g = prm.get("Gradation");
-      p.gradation         = (g == "exponential" ? Gradation::exponential :
-                             g == "sigmoid"     ? Gradation::sigmoid :
-                             g == "tabulated"   ? Gradation::tabulated :
-                                                  Gradation::power_law);
-      p.homogenization    = prm.get("Homogenization") == "Mori-Tanaka" ?
-                              Homogenization::mori_tanaka :
-                              Homogenization::rule_of_mixtures;
-      p.profile_file      = prm.get("Profile file");
+      p.gradation = gradation_names().value(prm.get("Gradation"));
+      p.homogenization =
+        homogenization_names().value(prm.get("Homogenization"));
+      p.profile_file = prm.get("Profile file");
       AssertThrow(p.gradation != Gradation::tabulated ||
                     !p.profile_file.empty(),
                   ExcMessage("Material/Gradation = tabulated needs "
                              "Material/Profile file."));
-      p.graded_nodal_values = prm.get("Graded nodal values") == "sampled" ?
-                                GradedNodalValues::sampled :
-                                GradedNodalValues::layer_average;
+      p.graded_nodal_values =
+        graded_nodal_values_names().value(prm.get("Graded nodal values"));
     }
   } // namespace
 
@@ -153,7 +170,7 @@ namespace fgimpact
       prm.declare_entry(
         "Property mode",
         "graded",
-        Patterns::Selection("graded|homogeneous|pointwise"),
+        property_mode_names().pattern(),
         "graded: E and rho are interpolated from their nodal values with the "
         "element shape functions at every quadrature point (graded finite "
         "elements, Eq. 3.3). homogeneous: one value per element, evaluated "
@@ -180,10 +197,7 @@ namespace fgimpact
       ceramic_density        = prm.get_double("Ceramic density");
       poissons_ratio         = prm.get_double("Poisson's ratio");
       power_law_index        = prm.get_double("Power-law index");
-      const std::string mode = prm.get("Property mode");
-      property_mode          = (mode == "graded"      ? PropertyMode::graded :
-                                mode == "homogeneous" ? PropertyMode::homogeneous :
-                                                        PropertyMode::pointwise);
+      property_mode = property_mode_names().value(prm.get("Property mode"));
       parse_gradation_parameters(prm, *this);
     }
     prm.leave_subsection();

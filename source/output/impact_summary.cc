@@ -38,34 +38,22 @@ namespace fgimpact
     const auto      &g = plate.get_geometry();
     const auto      &m = parameters.material;
     ModelDescription d;
-    const Model      model      = parameters.contact_model.model;
-    d.contact_model             = model == Model::hertz_node ? "hertz node" :
-                                  model == Model::hertz_midplane ? "hertz midplane" :
-                                                                   "resolved sphere";
+    const Model      model = parameters.contact_model.model;
+    d.contact_model        = ContactModelParameters::model_names().name(model);
     d.contact_refinement_levels = plate.contact_refinement().levels;
     d.element_size_under_ball   = plate.cell_size_at(scene.impact_point());
     d.time_step                 = time_step;
-    d.scheme                    = parameters.time_integration.scheme ==
-                   TimeStepper::Scheme::central_difference ?
-                                    "explicit" :
-                                    "implicit";
-    d.element_degree            = plate.get_fe().degree;
-    const double share          = g.share();
+    d.scheme =
+      TimeStepper::scheme_names().name(parameters.time_integration.scheme);
+    d.element_degree   = plate.get_fe().degree;
+    const double share = g.share();
     d.symmetry      = share > 0.75 ? "none" : share > 0.3 ? "half" : "quarter";
-    d.property_mode = m.property_mode == PropertyMode::graded ? "graded" :
-                      m.property_mode == PropertyMode::homogeneous ?
-                                                                "homogeneous" :
-                                                                "pointwise";
-    d.gradation     = m.gradation == Gradation::power_law   ? "power law" :
-                      m.gradation == Gradation::exponential ? "exponential" :
-                      m.gradation == Gradation::sigmoid     ? "sigmoid" :
-                                                              "tabulated";
+    d.property_mode = property_mode_names().name(m.property_mode);
+    d.gradation     = gradation_names().name(m.gradation);
     d.power_law_index = m.power_law_index;
     d.impactor_radius = parameters.impactor.radius;
     d.thickness       = g.thickness();
-    d.homogenization  = m.homogenization == Homogenization::mori_tanaka ?
-                          "Mori-Tanaka" :
-                          "rule of mixtures";
+    d.homogenization  = homogenization_names().name(m.homogenization);
     return d;
   }
 

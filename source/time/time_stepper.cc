@@ -15,6 +15,17 @@
 
 namespace fgimpact
 {
+  const SelectionTable<TimeStepper::Scheme> &
+  TimeStepper::scheme_names()
+  {
+    static const SelectionTable<Scheme> names = {
+      {"implicit", Scheme::implicit_newmark},
+      {"explicit", Scheme::central_difference}};
+    return names;
+  }
+
+
+
   void
   TimeStepper::Parameters::declare_parameters(ParameterHandler &prm)
   {
@@ -23,7 +34,7 @@ namespace fgimpact
       prm.declare_entry(
         "Scheme",
         "implicit",
-        Patterns::Selection("implicit|explicit"),
+        scheme_names().pattern(),
         "implicit: Newmark with 'Newmark beta/gamma' and a Newton iteration "
         "on the contact (block-eliminated: one linear solve per step). "
         "explicit: central difference (beta = 0, gamma = 1/2) with a "
@@ -86,8 +97,7 @@ namespace fgimpact
   TimeStepper::Parameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Time integration");
-    scheme = (prm.get("Scheme") == "explicit" ? Scheme::central_difference :
-                                                Scheme::implicit_newmark);
+    scheme        = scheme_names().value(prm.get("Scheme"));
     safety_factor = prm.get_double("Stable step safety factor");
     newmark.beta  = prm.get_double("Newmark beta");
     newmark.gamma = prm.get_double("Newmark gamma");

@@ -7,6 +7,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <fgimpact/base/selection.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/impactor.h>
 #include <fgimpact/output/checkpoint.h>
@@ -214,6 +215,9 @@ namespace fgimpact
       resolved_sphere
     };
     Model model = Model::hertz_node;
+    /// The names of Contact/Model.
+    static const SelectionTable<Model> &
+    model_names();
     /// resolved sphere: the sphere's exact profile or the paraboloid.
     bool paraboloid_gap = false;
     /// resolved sphere: the candidates' z DoFs massless (modified mass).

@@ -1,6 +1,8 @@
 #ifndef fgimpact_gradation_h
 #define fgimpact_gradation_h
 
+#include <fgimpact/base/selection.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -40,6 +42,12 @@ namespace fgimpact
     /// inclusions; rho by the rule of mixtures.
     mori_tanaka
   };
+
+  /// The names of Material/Gradation and Material/Homogenization.
+  const SelectionTable<Gradation> &
+  gradation_names();
+  const SelectionTable<Homogenization> &
+  homogenization_names();
 
   /// The two constituents: metal (top face, z = h) and ceramic (bottom).
   struct Constituents

@@ -29,6 +29,10 @@ namespace fgimpact
     pointwise
   };
 
+  /// The names of Material/Property mode.
+  const SelectionTable<PropertyMode> &
+  property_mode_names();
+
   /**
    * The nodal values that graded elements interpolate
    * (Material/Graded nodal values).
@@ -44,6 +48,10 @@ namespace fgimpact
     /// misread (doc/theory.md, "Layer-averaged nodal values").
     layer_average
   };
+
+  /// The names of Material/Graded nodal values.
+  const SelectionTable<GradedNodalValues> &
+  graded_nodal_values_names();
 
   /**
    * Functionally graded material.  The default is the power law of Eq. 2.1

@@ -5,6 +5,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/base/selection.h>
 #include <fgimpact/contact/contact_model.h>
 #include <fgimpact/output/checkpoint.h>
 #include <fgimpact/plate/linear_solver.h>
@@ -40,6 +41,10 @@ namespace fgimpact
       implicit_newmark,
       central_difference
     };
+
+    /// The names of Time integration/Scheme.
+    static const SelectionTable<Scheme> &
+    scheme_names();
 
     /// Subsections "Time integration" (scheme, time control, Newmark's
     /// beta and gamma) and "Newton" (the contact iteration).
