@@ -257,12 +257,14 @@ namespace fgimpact
     static_analysis.parse_parameters(prm);
     modal.parse_parameters(prm);
     output.parse_parameters(prm);
-    geometry.symmetry_note = resolve_symmetry(*this);
   }
 
   void
   Parameters::validate() const
   {
+    // A half or quarter that the scene does not allow throws here, first
+    // (the part itself is decided again where the plate is built).
+    resolve_symmetry(*this);
     const double   a = geometry.length, b = geometry.width;
     const Impactor impactor_object(impactor);
     const Point<2> p = impactor_object.impact_point(a, b);

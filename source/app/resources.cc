@@ -2,6 +2,7 @@
 
 #include <fgimpact/app/parameters.h>
 #include <fgimpact/app/resources.h>
+#include <fgimpact/plate/symmetry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -161,14 +162,15 @@ namespace fgimpact
     // A symmetric part (Geometry/Symmetry, resolved with the parameters):
     // half the subdivisions across each cut, and the cut share of the
     // refined half-ball.
-    const double share = (g.cut[0] ? 0.5 : 1.) * (g.cut[1] ? 0.5 : 1.);
-    const double sx    = g.subdivisions_x * (g.cut[0] ? 0.5 : 1.),
-                 sy    = g.subdivisions_y * (g.cut[1] ? 0.5 : 1.),
-                 sz    = g.subdivisions_z;
-    const double hx    = g.length / g.subdivisions_x,
-                 hy    = g.width / g.subdivisions_y,
-                 hz    = g.thickness / g.subdivisions_z;
-    e.n_cells          = sx * sy * sz;
+    const SymmetricPart part  = resolve_symmetry(parameters);
+    const double        share = part.share();
+    const double        sx    = g.subdivisions_x * (part.cut[0] ? 0.5 : 1.),
+                 sy           = g.subdivisions_y * (part.cut[1] ? 0.5 : 1.),
+                 sz           = g.subdivisions_z;
+    const double hx           = g.length / g.subdivisions_x,
+                 hy           = g.width / g.subdivisions_y,
+                 hz           = g.thickness / g.subdivisions_z;
+    e.n_cells                 = sx * sy * sz;
     for (unsigned int k = 0; k < refinement.levels; ++k)
       {
         const double h_k    = hx / std::pow(2., k);

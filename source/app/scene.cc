@@ -27,7 +27,8 @@ namespace fgimpact
 
 
   Scene::Scene(const Parameters                 &parameters,
-               const FunctionallyGradedMaterial &material)
+               const FunctionallyGradedMaterial &material,
+               const double                      share)
     : ball(parameters.impactor)
   {
     const auto  &g = parameters.geometry;
@@ -36,6 +37,6 @@ namespace fgimpact
     point          = Point<3>(p[0], p[1], h);
     contact_radius = fgimpact::expected_contact_radius(parameters, material, h);
     modulus        = fgimpact::top_face_modulus(material, h);
-    part_share     = g.share();
+    part_share     = share;
   }
 } // namespace fgimpact

@@ -7,6 +7,7 @@
 #include <fgimpact/material/constitutive_law.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
+#include <fgimpact/plate/symmetry.h>
 
 #include <cmath>
 #include <cstdio>
@@ -243,11 +244,12 @@ namespace fgimpact
   Simulator::setup_plate()
   {
     total_timer.restart();
-    geometry = std::make_unique<PlateGeometry>(parameters.geometry);
+    const SymmetricPart part = resolve_symmetry(parameters);
+    geometry = std::make_unique<PlateGeometry>(parameters.geometry, part.cut);
     material =
       std::make_unique<FunctionallyGradedMaterial>(parameters.material,
                                                    geometry->thickness());
-    scene = std::make_unique<Scene>(parameters, *material);
+    scene = std::make_unique<Scene>(parameters, *material, geometry->share());
     // Refuse a run that cannot fit before the long set-up (the mesh).
     const LocalRefinement refinement = contact_refinement();
     resource_estimate = estimate_resources(parameters, refinement);
@@ -263,9 +265,7 @@ namespace fgimpact
           << geometry->width() << " x " << geometry->thickness() << " m, "
           << plate->n_active_cells() << " cells, " << plate->n_dofs()
           << " DoFs (Q" << plate->get_fe().degree << ", "
-          << (mode == PropertyMode::graded      ? "graded" :
-              mode == PropertyMode::homogeneous ? "homogeneous" :
-                                                  "pointwise")
+          << property_mode_names().name(mode)
           << " elements), n = " << parameters.material.power_law_index << '\n';
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);
@@ -282,8 +282,8 @@ namespace fgimpact
       pcout << "  " << resource_estimate.describe() << '\n';
     if (!parameters.accuracy.log_message.empty())
       pcout << "  " << parameters.accuracy.log_message << '\n';
-    if (!parameters.geometry.symmetry_note.empty())
-      pcout << "  " << parameters.geometry.symmetry_note << '\n';
+    if (!part.note.empty())
+      pcout << "  " << part.note << '\n';
     warn_sampled_boundary_layer();
     if (refinement.levels > 0)
       pcout << "  contact refinement: " << refinement.levels << " levels"

@@ -163,8 +163,10 @@ namespace fgimpact
 
 
 
-  PlateGeometry::PlateGeometry(const Parameters &parameters)
+  PlateGeometry::PlateGeometry(const Parameters          &parameters,
+                               const std::array<bool, 2> &cut)
     : parameters(parameters)
+    , cut(cut)
   {}
 
 
@@ -175,7 +177,7 @@ namespace fgimpact
     unsigned int k = 0;
     // The part modelled: the cut directions have half the extent and half
     // the (even) subdivisions, the same cells as the whole plate's there.
-    const bool cut_x = parameters.cut[0], cut_y = parameters.cut[1];
+    const bool                cut_x = cut[0], cut_y = cut[1];
     std::vector<unsigned int> coarse{parameters.subdivisions_x /
                                        (cut_x ? 2 : 1),
                                      parameters.subdivisions_y /
@@ -246,8 +248,7 @@ namespace fgimpact
     const double centre[2] = {0.5 * parameters.length, 0.5 * parameters.width};
     unsigned int n         = 1;
     for (unsigned int d = 0; d < 2; ++d)
-      if (parameters.cut[d] &&
-          std::abs(p[d] - centre[d]) > 1e-9 * parameters.length)
+      if (cut[d] && std::abs(p[d] - centre[d]) > 1e-9 * parameters.length)
         n *= 2;
     return n;
   }

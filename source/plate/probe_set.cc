@@ -87,7 +87,7 @@ namespace fgimpact
   {
     prm.declare_entry(
       "Probe points",
-      "mid: 0.5a, 0.5b, 0.5h; top: 0.5a, 0.5b, 1h; bottom: 0.5a, 0.5b, 0h",
+      default_points,
       Patterns::Anything(),
       "Points whose displacement, velocity, acceleration and recovered "
       "stress an impact run writes to probes.csv at every time step (with "

@@ -56,13 +56,13 @@ namespace fgimpact
 
 
 
-  std::string
-  resolve_symmetry(Parameters &parameters)
+  SymmetricPart
+  resolve_symmetry(const Parameters &parameters)
   {
-    auto &g = parameters.geometry;
-    g.cut   = {{false, false}};
+    const auto   &g = parameters.geometry;
+    SymmetricPart part;
     if (g.symmetry == Symmetry::none)
-      return "";
+      return part;
     const std::string breaker[2] = {symmetry_breaker(parameters, 0),
                                     symmetry_breaker(parameters, 1)};
     const bool        ok[2]      = {breaker[0].empty(), breaker[1].empty()};
@@ -73,7 +73,7 @@ namespace fgimpact
             AssertThrow(ok[d],
                         ExcMessage(
                           "Geometry/Symmetry = quarter: " + breaker[d] + "."));
-          g.cut = {{true, true}};
+          part.cut = {{true, true}};
           break;
         case Symmetry::half:
           AssertThrow(
@@ -81,31 +81,36 @@ namespace fgimpact
             ExcMessage("Geometry/Symmetry = half: " + breaker[0] +
                        (breaker[1] == breaker[0] ? "" : ", and " + breaker[1]) +
                        "."));
-          g.cut = {{ok[0], !ok[0]}};
+          part.cut = {{ok[0], !ok[0]}};
           break;
         case Symmetry::automatic:
-          g.cut = {{ok[0], ok[1]}};
+          part.cut = {{ok[0], ok[1]}};
           if (!ok[0] && !ok[1])
-            return "symmetry: none (Geometry/Symmetry = auto: " + breaker[0] +
-                   (breaker[1] == breaker[0] ? "" : "; " + breaker[1]) + ")";
+            {
+              part.note =
+                "symmetry: none (Geometry/Symmetry = auto: " + breaker[0] +
+                (breaker[1] == breaker[0] ? "" : "; " + breaker[1]) + ")";
+              return part;
+            }
           break;
         case Symmetry::none:
           break;
       }
-    const double share = (g.cut[0] ? 0.5 : 1.) * (g.cut[1] ? 0.5 : 1.);
+    const double share = part.share();
     std::string  line  = std::string("symmetry: ") +
                        (share < 0.3 ? "quarter" : "half") +
                        " of the plate modelled (";
-    if (g.cut[0])
+    if (part.cut[0])
       line += "x <= a/2, u_x = 0 on x = a/2";
-    if (g.cut[0] && g.cut[1])
+    if (part.cut[0] && part.cut[1])
       line += "; ";
-    if (g.cut[1])
+    if (part.cut[1])
       line += "y <= b/2, u_y = 0 on y = b/2";
     line += "); forces, masses and energies reported for the whole plate";
     if (g.symmetry == Symmetry::automatic && !(ok[0] && ok[1]))
       line += "; not " + std::string(ok[0] ? "y = b/2" : "x = a/2") + ": " +
               breaker[ok[0] ? 1 : 0];
-    return line;
+    part.note = line;
+    return part;
   }
 } // namespace fgimpact

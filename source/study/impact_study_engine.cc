@@ -211,8 +211,8 @@ namespace fgimpact
   ImpactStudyEngine::prepare(const Parameters &p)
   {
     setup_time = total_timer.wall_time();
-    Timer                 timer;
-    const Scene           scene(p, plate.get_material());
+    Timer       timer;
+    const Scene scene(p, plate.get_material(), plate.get_geometry().share());
     const Impactor       &impactor = scene.impactor();
     const HertzContactLaw law(p.contact, plate.get_material(), impactor);
     const PlateGeometry  &g       = plate.get_geometry();
@@ -307,7 +307,7 @@ namespace fgimpact
   const ImpactResults &
   ImpactStudyEngine::run_case(const Parameters &p)
   {
-    const Scene           scene(p, plate.get_material());
+    const Scene scene(p, plate.get_material(), plate.get_geometry().share());
     const Impactor       &impactor = scene.impactor();
     const HertzContactLaw law(p.contact, plate.get_material(), impactor);
     const auto            contact = contact_model_of(p, law, scene, plate);

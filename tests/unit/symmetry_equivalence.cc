@@ -157,10 +157,13 @@ namespace
     ParameterHandler prm;
     Parameters::declare_parameters(prm);
     prm.parse_input_from_string(mesh + settings);
-    Parameters p;
+    Parameters    p;
+    SymmetricPart part;
     try
       {
         p.parse_parameters(prm);
+        p.validate();
+        part = resolve_symmetry(p);
       }
     catch (const ExceptionBase &e)
       {
@@ -170,8 +173,8 @@ namespace
         text.erase(0, text.find_first_not_of(" \n"));
         return text.substr(0, text.find('\n'));
       }
-    return "not refused: cuts x " + std::to_string(p.geometry.cut[0]) + ", y " +
-           std::to_string(p.geometry.cut[1]);
+    return "not refused: cuts x " + std::to_string(part.cut[0]) + ", y " +
+           std::to_string(part.cut[1]);
   }
 
   /// Entries of a summary.txt ("name = value" lines).

@@ -78,13 +78,14 @@ namespace
     gp.subdivisions_x = 12;
     gp.subdivisions_y = 6;
     gp.subdivisions_z = 2;
-    gp.cut            = {{quarter, quarter}};
     FunctionallyGradedMaterial::Parameters mp;
     mp.power_law_index = 2;
     PlateModel::Parameters fp;
     fp.degree = 1;
     Model m;
-    m.geometry = std::make_unique<PlateGeometry>(gp);
+    m.geometry =
+      std::make_unique<PlateGeometry>(gp,
+                                      std::array<bool, 2>{{quarter, quarter}});
     m.material = std::make_unique<FunctionallyGradedMaterial>(mp, h);
     m.plate    = std::make_unique<PlateModel>(fp,
                                            *m.geometry,

@@ -35,7 +35,8 @@ namespace fgimpact
   {
   public:
     Scene(const Parameters                 &parameters,
-          const FunctionallyGradedMaterial &material);
+          const FunctionallyGradedMaterial &material,
+          const double                      share);
 
     const Impactor &
     impactor() const

@@ -81,20 +81,9 @@ namespace fgimpact
       bool         contact_refinement_auto   = true;
       unsigned int contact_refinement_levels = 0;
       double       contact_refinement_radius = 0;
-      /// Geometry/Symmetry as requested.
+      /// Geometry/Symmetry as requested (resolve_symmetry(), symmetry.cc,
+      /// decides the planes to cut once the whole scene is known).
       Symmetry symmetry = Symmetry::automatic;
-      /// The symmetry planes actually cut (x = a/2, y = b/2), set by
-      /// resolve_symmetry() (symmetry.cc) once the whole scene is known.
-      std::array<bool, 2> cut = {{false, false}};
-
-      /// The modelled part's share of the plate: 1, 1/2 or 1/4.
-      double
-      share() const
-      {
-        return (cut[0] ? 0.5 : 1.) * (cut[1] ? 0.5 : 1.);
-      }
-      /// resolve_symmetry()'s line for the log ("" if none).
-      std::string symmetry_note;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -102,7 +91,10 @@ namespace fgimpact
       parse_parameters(ParameterHandler &prm);
     };
 
-    explicit PlateGeometry(const Parameters &parameters);
+    /// The plate, or with cut[d] the part x <= a/2 (d = 0), y <= b/2
+    /// (d = 1) of it (resolve_symmetry() decides).
+    explicit PlateGeometry(const Parameters          &parameters,
+                           const std::array<bool, 2> &cut = {{false, false}});
 
     /**
      * Fill an empty triangulation with the subdivided brick.  The same
@@ -149,7 +141,7 @@ namespace fgimpact
     bool
     is_cut(const unsigned int d) const
     {
-      return parameters.cut[d];
+      return cut[d];
     }
 
     /// The modelled part's share of the whole plate: 1, 1/2 or 1/4.  Sums
@@ -158,7 +150,7 @@ namespace fgimpact
     double
     share() const
     {
-      return parameters.share();
+      return (cut[0] ? 0.5 : 1.) * (cut[1] ? 0.5 : 1.);
     }
 
     /// How many points of the whole plate the part's point p stands for:
@@ -184,7 +176,8 @@ namespace fgimpact
     static const std::array<std::string, 4> side_names;
 
   private:
-    const Parameters parameters;
+    const Parameters          parameters;
+    const std::array<bool, 2> cut;
   };
 } // namespace fgimpact
 

@@ -43,7 +43,12 @@ namespace fgimpact
    */
   struct ProbePoints
   {
-    std::vector<ProbePoint> points;
+    /// The entry's default: the centre of the mid-plane, the top and the
+    /// bottom face.
+    static constexpr const char *default_points =
+      "mid: 0.5a, 0.5b, 0.5h; top: 0.5a, 0.5b, 1h; bottom: 0.5a, 0.5b, 0h";
+
+    std::vector<ProbePoint> points = parse(default_points);
 
     /// Declares the entry in the current subsection (Output).
     static void

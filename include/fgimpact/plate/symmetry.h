@@ -3,14 +3,32 @@
 
 #include <fgimpact/app/parameters.h>
 
+#include <array>
 #include <string>
 
 namespace fgimpact
 {
+  /// The part of the plate a run models (resolve_symmetry()).
+  struct SymmetricPart
+  {
+    /// The symmetry planes cut: x = a/2 (0), y = b/2 (1).
+    std::array<bool, 2> cut = {{false, false}};
+    /// A line for the log ("" if nothing to say).
+    std::string note;
+
+    /// The part's share of the plate: 1, 1/2 or 1/4.
+    double
+    share() const
+    {
+      return (cut[0] ? 0.5 : 1.) * (cut[1] ? 0.5 : 1.);
+    }
+  };
+
   /**
-   * Decide Geometry/Symmetry for the whole scene: set
-   * parameters.geometry.cut (the planes x = a/2, y = b/2 the model is cut
-   * at) and return a line for the log ("" if nothing to say).  A plane is
+   * Decide Geometry/Symmetry for the whole scene: the planes x = a/2,
+   * y = b/2 the model is cut at, and a line for the log.  Parameters keep
+   * only what the user wrote; this is derived from them when the plate is
+   * built (and checked by Parameters::validate()).  A plane is
    * a symmetry plane of the scene if the impact (or static load) point
    * lies on it, the supports of the two faces parallel to it are equal and
    * the subdivisions across it are even (so the cut runs along element
@@ -22,8 +40,8 @@ namespace fgimpact
    * every symmetry plane, half the first of x and y that is one, quarter both;
    * half and quarter throw ExcMessage naming what breaks the symmetry.
    */
-  std::string
-  resolve_symmetry(Parameters &parameters);
+  SymmetricPart
+  resolve_symmetry(const Parameters &parameters);
 } // namespace fgimpact
 
 #endif
