@@ -155,8 +155,7 @@ namespace fgimpact
       load_point,
       indenter.candidate_radius > 0. ? indenter.candidate_radius :
                                        1.5 * std::sqrt(R * delta),
-      indenter.paraboloid_gap ? ResolvedSphereContact::GapShape::paraboloid :
-                                ResolvedSphereContact::GapShape::sphere,
+      create_sphere_profile(R, indenter.paraboloid_gap),
       top_face_modulus(plate.get_material(), plate.get_geometry().thickness()));
     // The sphere is displacement-driven: w = delta, no ball compliance.
     // A contact that reaches the candidate set's edge grows the set.

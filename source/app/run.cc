@@ -302,10 +302,13 @@ namespace fgimpact
   read_run_parameters(const InputFile                &input,
                       const std::vector<std::string> &overrides,
                       ParameterHandler               &prm,
-                      Parameters                     &parameters)
+                      Parameters                     &parameters,
+                      const std::function<void(ParameterHandler &prm)> &adjust)
   {
     Parameters::declare_parameters(prm);
     input.parse_into(prm, overrides);
+    if (adjust)
+      adjust(prm);
     FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
       prm, input.input_name());
     parameters.parse_parameters(prm);

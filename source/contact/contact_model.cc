@@ -362,9 +362,7 @@ namespace fgimpact
             parameters.candidate_radius > 0. ?
               parameters.candidate_radius :
               1.5 * expected_radius + 2. * plate.smallest_cell_size(),
-            parameters.paraboloid_gap ?
-              ResolvedSphereContact::GapShape::paraboloid :
-              ResolvedSphereContact::GapShape::sphere,
+            create_sphere_profile(sphere_radius, parameters.paraboloid_gap),
             reference_modulus,
             parameters.modified_mass);
         case ContactModelParameters::Model::hertz_midplane:

@@ -20,20 +20,21 @@
 
 namespace fgimpact
 {
-  ResolvedSphereContact::ResolvedSphereContact(const PlateModel &plate,
-                                               const double      sphere_radius,
-                                               const Point<2>   &impact_point,
-                                               const double   candidate_radius,
-                                               const GapShape gap_shape,
-                                               const double   reference_modulus,
-                                               const bool massless_candidates)
+  ResolvedSphereContact::ResolvedSphereContact(
+    const PlateModel                             &plate,
+    const double                                  sphere_radius,
+    const Point<2>                               &impact_point,
+    const double                                  candidate_radius,
+    const std::shared_ptr<const ImpactorProfile> &surface,
+    const double                                  reference_modulus,
+    const bool                                    massless_candidates)
     : plate(plate)
     , impact_point(impact_point)
     , R(sphere_radius)
-    , gap_shape(gap_shape)
+    , surface(surface)
     , reference_modulus(reference_modulus)
     , massless_candidates(massless_candidates)
-    , candidate_radius(std::min(candidate_radius, sphere_radius))
+    , candidate_radius(std::min(candidate_radius, surface->extent()))
     , share(plate.get_geometry().share())
   {
     build_candidates();
@@ -44,9 +45,9 @@ namespace fgimpact
   bool
   ResolvedSphereContact::grow_candidates()
   {
-    if (candidate_radius >= R)
-      return false; // the whole cap is a candidate already
-    candidate_radius = std::min(1.5 * candidate_radius, R);
+    if (candidate_radius >= surface->extent())
+      return false; // the whole surface is a candidate already
+    candidate_radius = std::min(1.5 * candidate_radius, surface->extent());
     build_candidates();
     return true;
   }
@@ -88,9 +89,7 @@ namespace fgimpact
     compute_areas(plate);
     profile.resize(radii.size());
     for (unsigned int j = 0; j < radii.size(); ++j)
-      profile[j] = (gap_shape == GapShape::sphere ?
-                      R - std::sqrt(R * R - radii[j] * radii[j]) :
-                      radii[j] * radii[j] / (2. * R));
+      profile[j] = surface->height(radii[j]);
     active.assign(dofs.size(), false);
     multiplicity.resize(points.size());
     for (unsigned int j = 0; j < points.size(); ++j)
@@ -296,8 +295,7 @@ namespace fgimpact
   ResolvedSphereContact::description() const
   {
     std::ostringstream s;
-    s << "resolved rigid sphere, R = " << R * 1e3 << " mm, "
-      << (gap_shape == GapShape::sphere ? "spherical" : "paraboloid")
+    s << "resolved rigid sphere, R = " << R * 1e3 << " mm, " << surface->name()
       << " gap, " << dofs.size() << " candidate nodes within " << reach() * 1e3
       << " mm (nearest neighbour " << smallest_spacing * 1e3 << " mm)";
     return s.str();

@@ -325,12 +325,8 @@ namespace fgimpact
     const bool with_acceleration = fields.acceleration && a != nullptr;
     if (with_acceleration)
       a_ghosted = *a;
-    // The recovered fields here, not in the background: the recovery
-    // distributes constraints on Trilinos vectors, whose creation calls
-    // MPI (an all-reduce, even on one rank), and MPI calls from two
-    // threads at once crashed the run (about 1 in 40 runs of the resolved
-    // default scene: the main thread's next PlateFields::update() met the
-    // writer's StressRecovery::recover() in MPI_Allreduce).
+    // Recovered here, not in the background: creating Trilinos vectors
+    // calls MPI_Allreduce, and MPI from two threads crashed 1 run in ~40.
     if (recovery)
       recovery->recover(u_ghosted);
 

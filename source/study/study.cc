@@ -235,22 +235,21 @@ namespace fgimpact
       for (unsigned int i = 0; i < cases.size(); ++i)
         {
           ParameterHandler prm;
-          Parameters::declare_parameters(prm);
-          input.parse_into(prm, overrides);
-          for (unsigned int e = 0; e < cases[i].paths.size(); ++e)
-            apply_override(prm, cases[i].assignment(e), cases[i].origins[e]);
-          apply_override(prm,
-                         "Output/Directory=" +
-                           case_directory(base_directory, i));
-          apply_override(prm, "Study/Entries=");
-          if (!study.write_vtu)
-            apply_override(prm, "Output/VTU interval=0");
-          FunctionallyGradedMaterial::Parameters::resolve_relative_paths(
-            prm, input.input_name());
-          ParsedCase c;
+          ParsedCase       c;
           c.study_case = cases[i];
-          c.parameters.parse_parameters(prm);
-          c.parameters.validate();
+          read_run_parameters(
+            input, overrides, prm, c.parameters, [&](ParameterHandler &prm) {
+              for (unsigned int e = 0; e < cases[i].paths.size(); ++e)
+                apply_override(prm,
+                               cases[i].assignment(e),
+                               cases[i].origins[e]);
+              apply_override(prm,
+                             "Output/Directory=" +
+                               case_directory(base_directory, i));
+              apply_override(prm, "Study/Entries=");
+              if (!study.write_vtu)
+                apply_override(prm, "Output/VTU interval=0");
+            });
           std::ostringstream text;
           prm.print_parameters(text, ParameterHandler::PRM);
           c.prm_text = text.str();

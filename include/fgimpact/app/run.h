@@ -8,6 +8,7 @@
 #include <fgimpact/app/logger.h>
 #include <fgimpact/app/parameters.h>
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -17,15 +18,19 @@ namespace fgimpact
    * Every parameter of a run from its input, as the executable reads it:
    * declared in prm, the input parsed, the overrides ("Section/Entry=
    * value") on top, a relative Material/Profile file made relative to the
-   * input's directory, parsed into `parameters` and checked.  Throws
-   * ExcMessage (one line) on bad input.  The executable, a study's base
-   * input and the tests' run helper read parameters through it.
+   * input's directory, parsed into `parameters` and checked.  adjust, if
+   * given, changes prm after the overrides (a study case's entries and
+   * directory).  Throws ExcMessage (one line) on bad input.  The
+   * executable, a study's base input and its cases, and the tests' run
+   * helper read parameters through it.
    */
   void
-  read_run_parameters(const InputFile                &input,
-                      const std::vector<std::string> &overrides,
-                      ParameterHandler               &prm,
-                      Parameters                     &parameters);
+  read_run_parameters(
+    const InputFile                                  &input,
+    const std::vector<std::string>                   &overrides,
+    ParameterHandler                                 &prm,
+    Parameters                                       &parameters,
+    const std::function<void(ParameterHandler &prm)> &adjust = {});
 
   /**
    * The run of the executable after its command line (action run or

@@ -7,6 +7,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <fgimpact/contact/contact_model.h>
+#include <fgimpact/contact/impactor_profile.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <string>
@@ -47,21 +48,17 @@ namespace fgimpact
   class ResolvedSphereContact : public ContactModel
   {
   public:
-    enum class GapShape
-    {
-      sphere,
-      paraboloid
-    };
-
-    /// Collective.  Throws if no candidate is found, naming Contact/
-    /// Candidate radius.
+    /// Collective.  surface: the gap function (the sphere's exact
+    /// profile or the paraboloid, create_sphere_profile()); the candidate
+    /// set grows up to its extent().  Throws if no candidate is found,
+    /// naming Contact/Candidate radius.
     ResolvedSphereContact(const PlateModel &plate,
                           const double      sphere_radius,
                           const Point<2>   &impact_point,
                           const double      candidate_radius,
-                          const GapShape    gap_shape,
-                          const double      reference_modulus,
-                          const bool        massless_candidates = false);
+                          const std::shared_ptr<const ImpactorProfile> &surface,
+                          const double reference_modulus,
+                          const bool   massless_candidates = false);
 
     const std::vector<types::global_dof_index> &
     contact_dofs() const override
@@ -173,16 +170,16 @@ namespace fgimpact
     void
     compute_areas(const PlateModel &plate);
 
-    const PlateModel                    &plate;
-    const Point<2>                       impact_point;
-    const double                         R;
-    const GapShape                       gap_shape;
-    const double                         reference_modulus; // Pa
-    const bool                           massless_candidates;
-    double                               candidate_radius; // m
-    std::vector<types::global_dof_index> dofs;
-    std::vector<double>                  radii, areas, profile;
-    std::vector<Point<3>>                points; // undeformed, m
+    const PlateModel                            &plate;
+    const Point<2>                               impact_point;
+    const double                                 R;
+    const std::shared_ptr<const ImpactorProfile> surface;
+    const double                                 reference_modulus; // Pa
+    const bool                                   massless_candidates;
+    double                                       candidate_radius; // m
+    std::vector<types::global_dof_index>         dofs;
+    std::vector<double>                          radii, areas, profile;
+    std::vector<Point<3>>                        points; // undeformed, m
     /// Symmetric part (Geometry/Symmetry): the part's share of the plate
     /// and how many nodes of the whole plate each candidate stands for.
     double                    share = 1;
