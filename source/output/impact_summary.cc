@@ -116,6 +116,234 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    using R = ImpactResults;
+    using C = SummaryContext;
+
+    /// A key with `decimals` fixed decimals of value(r) (in the key's
+    /// unit), shown when `when` holds.
+    SummaryKey
+    number(const char *name,
+           const int   decimals,
+           double (*value)(const R &),
+           const SummaryKey::When when = SummaryKey::When::always)
+    {
+      SummaryKey key;
+      key.name     = name;
+      key.decimals = decimals;
+      key.number   = value;
+      key.when     = when;
+      return key;
+    }
+
+    SummaryKey
+    scientific(const char *name, double (*value)(const R &))
+    {
+      SummaryKey key = number(name, 0, value);
+      key.scientific = true;
+      return key;
+    }
+
+    SummaryKey
+    text(const char *name, std::string (*value)(const R &, const C &))
+    {
+      SummaryKey key;
+      key.name = name;
+      key.text = value;
+      return key;
+    }
+  } // namespace
+
+
+
+  namespace
+  {
+    /// The run's status and what it modelled.  status: completed,
+    /// interrupted (SIGINT/SIGTERM) or failed.
+    std::vector<SummaryKey>
+    model_keys()
+    {
+      using W = SummaryKey::When;
+      return {
+        text("status", [](const R &, const C &c) { return c.status; }),
+        {"time_reached_us", 4, nullptr, nullptr, false, W::always, true},
+        text("contact_model",
+             [](const R &r, const C &) { return r.model.contact_model; }),
+        number("contact_refinement_levels",
+               0,
+               [](const R &r) {
+                 return double(r.model.contact_refinement_levels);
+               }),
+        number("element_size_under_ball_mm",
+               6,
+               [](const R &r) {
+                 return r.model.element_size_under_ball * 1e3;
+               }),
+        number("time_step_us",
+               6,
+               [](const R &r) { return r.model.time_step * 1e6; }),
+        text("scheme", [](const R &r, const C &) { return r.model.scheme; }),
+        number("element_degree",
+               0,
+               [](const R &r) { return double(r.model.element_degree); }),
+        text("symmetry",
+             [](const R &r, const C &) { return r.model.symmetry; }),
+        text("property_mode",
+             [](const R &r, const C &) { return r.model.property_mode; }),
+        text("gradation",
+             [](const R &r, const C &) { return r.model.gradation; }),
+        number("power_law_index",
+               6,
+               [](const R &r) { return r.model.power_law_index; }),
+        text("homogenization",
+             [](const R &r, const C &) { return r.model.homogenization; }),
+        text("warnings", [](const R &r, const C &) {
+          std::string warnings;
+          for (const auto &w : r.warnings)
+            warnings += (warnings.empty() ? "" : "; ") + w;
+          return warnings.empty() ? std::string("none") : warnings;
+        })};
+    }
+
+
+
+    /// The time history's results; contact_duration_us and
+    /// departure_velocity_m_s are `none` (NaN) while the ball has not left.
+    std::vector<SummaryKey>
+    result_keys()
+    {
+      using W = SummaryKey::When;
+      return {
+        number("peak_contact_force_N",
+               4,
+               [](const R &r) { return r.peak_contact_force; }),
+        number("max_sampled_contact_force_N",
+               4,
+               [](const R &r) { return r.max_sampled_force; }),
+        number("time_of_peak_force_us",
+               4,
+               [](const R &r) { return r.time_of_peak_force * 1e6; }),
+        number("contact_duration_us",
+               4,
+               [](const R &r) { return r.contact_duration * 1e6; }),
+        number("departure_velocity_m_s",
+               7,
+               [](const R &r) { return r.departure_velocity; }),
+        number("max_indentation_um",
+               5,
+               [](const R &r) { return r.max_indentation * 1e6; }),
+        number("max_midplane_deflection_um",
+               5,
+               [](const R &r) { return r.max_midplane_deflection * 1e6; }),
+        number("max_top_deflection_um",
+               5,
+               [](const R &r) { return r.max_top_deflection * 1e6; }),
+        scientific("contact_stiffness_Kh_N_m1.5",
+                   [](const R &r) { return r.contact_stiffness; }),
+        scientific("contact_modulus_Q_Pa",
+                   [](const R &r) { return r.contact_modulus; }),
+        number("impactor_mass_kg",
+               8,
+               [](const R &r) { return r.impactor_mass; }),
+        number("plate_mass_kg", 8, [](const R &r) { return r.plate_mass; }),
+        number("impulse_N_s", 9, [](const R &r) { return r.impulse; }),
+        number("contact_node_offset_mm",
+               6,
+               [](const R &r) { return r.contact_node_offset * 1e3; }),
+        number(
+          "max_contact_radius_mm",
+          5,
+          [](const R &r) { return r.max_contact_radius * 1e3; },
+          W::contact_area),
+        number(
+          "max_contact_pressure_MPa",
+          4,
+          [](const R &r) { return r.max_contact_pressure * 1e-6; },
+          W::contact_area),
+        number(
+          "max_contact_nodes",
+          0,
+          [](const R &r) { return double(r.max_contact_nodes); },
+          W::contact_area),
+        number(
+          "n_contact_candidates",
+          0,
+          [](const R &r) { return double(r.n_contact_candidates); },
+          W::contact_area)};
+    }
+
+
+
+    /// The problem's size, the solvers' effort, checks and timings.
+    std::vector<SummaryKey>
+    run_keys()
+    {
+      using W = SummaryKey::When;
+      return {
+        number("n_impacts", 0, [](const R &r) { return double(r.n_impacts); }),
+        number("n_dofs", 0, [](const R &r) { return double(r.n_dofs); }),
+        number("n_mpi_ranks",
+               0,
+               [](const R &r) { return double(r.n_mpi_ranks); }),
+        number("n_time_steps",
+               0,
+               [](const R &r) { return double(r.n_time_steps); }),
+        number("max_newton_iterations",
+               0,
+               [](const R &r) { return double(r.max_newton_iterations); }),
+        number("linear_solver_iterations",
+               0,
+               [](const R &r) { return double(r.linear_iterations); }),
+        number("max_linear_solver_iterations",
+               0,
+               [](const R &r) { return double(r.max_linear_iterations); }),
+        scientific("max_relative_energy_drift",
+                   [](const R &r) { return r.max_energy_drift; }),
+        scientific("impulse_identity_error",
+                   [](const R &r) { return r.impulse_identity_error; }),
+        number("setup_s", 3, [](const R &r) { return r.setup_time; }),
+        number("factorization_s",
+               3,
+               [](const R &r) { return r.factorization_time; }),
+        number("time_loop_s", 3, [](const R &r) { return r.time_loop_time; }),
+        number("time_per_step_ms",
+               4,
+               [](const R &r) {
+                 return 1e3 * r.time_loop_time / std::max(r.n_time_steps, 1u);
+               }),
+        number("output_s", 3, [](const R &r) { return r.output_time; }),
+        number(
+          "spmv_ms",
+          4,
+          [](const R &r) { return 1e3 * r.spmv_time; },
+          W::instrumentation),
+        number(
+          "solve_ms",
+          4,
+          [](const R &r) { return 1e3 * r.solve_time; },
+          W::instrumentation),
+        number("wall_time_s", 3, [](const R &r) { return r.wall_time; })};
+    }
+  } // namespace
+
+
+
+  const std::vector<SummaryKey> &
+  impact_summary_keys()
+  {
+    // In the file's order.
+    static const std::vector<SummaryKey> keys = [] {
+      std::vector<SummaryKey> all = model_keys();
+      for (const auto &group : {result_keys(), run_keys()})
+        all.insert(all.end(), group.begin(), group.end());
+      return all;
+    }();
+    return keys;
+  }
+
+
+
   void
   write_impact_summary(const std::string   &filename,
                        const ImpactResults &r,
@@ -124,72 +352,22 @@ namespace fgimpact
                        const std::string   &status,
                        const double         t_end)
   {
-    SummaryWriter out;
-    // completed, interrupted (SIGINT/SIGTERM) or failed, and the time
-    // the results cover.  contact_duration_us and departure_velocity_m_s
-    // are `none` while the ball has not left the plate.
-    out.add_text("status", status);
-    out.add("time_reached_us", t_end * 1e6, 4);
-    // What was modelled.
-    const ModelDescription &d = r.model;
-    out.add_text("contact_model", d.contact_model);
-    out.add("contact_refinement_levels", d.contact_refinement_levels, 0);
-    out.add("element_size_under_ball_mm", d.element_size_under_ball * 1e3, 6);
-    out.add("time_step_us", d.time_step * 1e6, 6);
-    out.add_text("scheme", d.scheme);
-    out.add("element_degree", d.element_degree, 0);
-    out.add_text("symmetry", d.symmetry);
-    out.add_text("property_mode", d.property_mode);
-    out.add_text("gradation", d.gradation);
-    out.add("power_law_index", d.power_law_index, 6);
-    out.add_text("homogenization", d.homogenization);
-    std::string warnings;
-    for (const auto &w : r.warnings)
-      warnings += (warnings.empty() ? "" : "; ") + w;
-    out.add_text("warnings", warnings.empty() ? "none" : warnings);
-    out.add("peak_contact_force_N", r.peak_contact_force, 4);
-    out.add("max_sampled_contact_force_N", r.max_sampled_force, 4);
-    out.add("time_of_peak_force_us", r.time_of_peak_force * 1e6, 4);
-    out.add("contact_duration_us", r.contact_duration * 1e6, 4);
-    out.add("departure_velocity_m_s", r.departure_velocity, 7);
-    out.add("max_indentation_um", r.max_indentation * 1e6, 5);
-    out.add("max_midplane_deflection_um", r.max_midplane_deflection * 1e6, 5);
-    out.add("max_top_deflection_um", r.max_top_deflection * 1e6, 5);
-    out.add_scientific("contact_stiffness_Kh_N_m1.5", r.contact_stiffness);
-    out.add_scientific("contact_modulus_Q_Pa", r.contact_modulus);
-    out.add("impactor_mass_kg", r.impactor_mass, 8);
-    out.add("plate_mass_kg", r.plate_mass, 8);
-    out.add("impulse_N_s", r.impulse, 9);
-    out.add("contact_node_offset_mm", r.contact_node_offset * 1e3, 6);
-    if (contact_area)
+    const SummaryContext context{status, t_end};
+    SummaryWriter        out;
+    for (const SummaryKey &key : impact_summary_keys())
       {
-        out.add("max_contact_radius_mm", r.max_contact_radius * 1e3, 5);
-        out.add("max_contact_pressure_MPa", r.max_contact_pressure * 1e-6, 4);
-        out.add("max_contact_nodes", r.max_contact_nodes, 0);
-        out.add("n_contact_candidates", r.n_contact_candidates, 0);
+        if ((key.when == SummaryKey::When::contact_area && !contact_area) ||
+            (key.when == SummaryKey::When::instrumentation && !instrumentation))
+          continue;
+        if (key.text)
+          out.add_text(key.name, key.text(r, context));
+        else if (key.time_reached)
+          out.add(key.name, t_end * 1e6, key.decimals);
+        else if (key.scientific)
+          out.add_scientific(key.name, key.number(r));
+        else
+          out.add(key.name, key.number(r), key.decimals);
       }
-    out.add("n_impacts", r.n_impacts, 0);
-    out.add("n_dofs", r.n_dofs, 0);
-    out.add("n_mpi_ranks", r.n_mpi_ranks, 0);
-    out.add("n_time_steps", r.n_time_steps, 0);
-    out.add("max_newton_iterations", r.max_newton_iterations, 0);
-    out.add("linear_solver_iterations", r.linear_iterations, 0);
-    out.add("max_linear_solver_iterations", r.max_linear_iterations, 0);
-    out.add_scientific("max_relative_energy_drift", r.max_energy_drift);
-    out.add_scientific("impulse_identity_error", r.impulse_identity_error);
-    out.add("setup_s", r.setup_time, 3);
-    out.add("factorization_s", r.factorization_time, 3);
-    out.add("time_loop_s", r.time_loop_time, 3);
-    out.add("time_per_step_ms",
-            1e3 * r.time_loop_time / std::max(r.n_time_steps, 1u),
-            4);
-    out.add("output_s", r.output_time, 3);
-    if (instrumentation)
-      {
-        out.add("spmv_ms", 1e3 * r.spmv_time, 4);
-        out.add("solve_ms", 1e3 * r.solve_time, 4);
-      }
-    out.add("wall_time_s", r.wall_time, 3);
     out.write(filename);
   }
 } // namespace fgimpact

@@ -1,13 +1,17 @@
 // README.md's table of the history.csv columns lists exactly the columns
 // the program writes (history_columns(), then the resolved contact's
-// contact_area_columns()), in the order of the file: the table is read
-// from the README a user reads, not kept in sync by hand.
+// contact_area_columns()), in the order of the file; its table of the
+// impact summary.txt keys lists exactly impact_summary_keys() (as a set:
+// the table groups related keys).  The tables are read from the README a
+// user reads, not kept in sync by hand.
 
+#include <fgimpact/output/impact_summary.h>
 #include <fgimpact/output/monitor.h>
 
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -25,7 +29,7 @@ namespace
     bool                     in_table = false;
     while (std::getline(in, line))
       {
-        if (line.rfind("| column |", 0) == 0)
+        if (line.rfind("| column |", 0) == 0 || line.rfind("| key |", 0) == 0)
           {
             in_table = true;
             continue;
@@ -76,6 +80,27 @@ main()
     }
   std::printf("README.md documents every history.csv column, in order: %s\n",
               same ? "yes" : "NO");
-  std::printf("%s\n", same ? "all checks passed" : "SOME CHECKS FAILED");
-  return same ? 0 : 1;
+
+  const auto table =
+    table_names(text.str(), "### summary.txt keys (impact runs)");
+  const std::set<std::string> keys_documented(table.begin(), table.end());
+  std::set<std::string>       keys_written;
+  for (const auto &key : fgimpact::impact_summary_keys())
+    keys_written.insert(key.name);
+  std::printf("summary.txt (impact): %zu keys written, %zu in README.md's "
+              "table\n",
+              keys_written.size(),
+              keys_documented.size());
+  for (const auto &key : keys_written)
+    if (keys_documented.count(key) == 0)
+      std::printf("  written, not documented: %s\n", key.c_str());
+  for (const auto &key : keys_documented)
+    if (keys_written.count(key) == 0)
+      std::printf("  documented, not written: %s\n", key.c_str());
+  const bool same_keys = keys_documented == keys_written;
+  std::printf("README.md documents every summary.txt key: %s\n",
+              same_keys ? "yes" : "NO");
+  const bool ok = same && same_keys;
+  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+  return ok ? 0 : 1;
 }

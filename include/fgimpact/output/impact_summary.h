@@ -8,6 +8,7 @@
 #include <fgimpact/plate/plate_model.h>
 
 #include <string>
+#include <vector>
 
 namespace fgimpact
 {
@@ -50,6 +51,44 @@ namespace fgimpact
    */
   std::vector<std::string>
   resolution_warnings(const ImpactResults &r, const bool contact_area);
+
+  /// What a summary key may need besides the results.
+  struct SummaryContext
+  {
+    std::string status; // completed | interrupted | failed
+    double      t_end;  // s, the time the results cover
+  };
+
+  /**
+   * One key of an impact run's summary.txt: its name (with the unit), and
+   * either a number in the key's unit with `decimals` fixed decimals (or
+   * in scientific notation) or a word; shown always, for a resolved
+   * contact, or with Output/Instrumentation.
+   */
+  struct SummaryKey
+  {
+    enum class When
+    {
+      always,
+      contact_area,
+      instrumentation
+    };
+    const char *name                            = "";
+    int         decimals                        = 0;
+    double (*number)(const ImpactResults &)     = nullptr;
+    std::string (*text)(const ImpactResults &,
+                        const SummaryContext &) = nullptr;
+    bool scientific                             = false;
+    When when                                   = When::always;
+    /// time_reached_us: the context's t_end.
+    bool time_reached = false;
+  };
+
+  /// The keys of an impact run's summary.txt in the file's order,
+  /// declared once: write_impact_summary() writes them, and the README's
+  /// table is checked against them (test readme_columns).
+  const std::vector<SummaryKey> &
+  impact_summary_keys();
 
   /**
    * summary.txt of an impact run: every key of the README's table from r
