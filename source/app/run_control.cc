@@ -341,6 +341,17 @@ namespace fgimpact
   }
 
 
+  void
+  throw_if_stop_signal(const MPI_Comm comm, const std::string &what)
+  {
+    const int stop = agreed_stop(comm, false);
+    if (stop > 0)
+      throw RunInterrupted(stop,
+                           std::string("interrupted by ") + signal_name(stop) +
+                             " " + what);
+  }
+
+
 
   void
   write_file_atomically(const std::string &filename, const std::string &text)

@@ -20,6 +20,14 @@ namespace fgimpact
 {
   namespace
   {
+    /// A stop signal (SIGINT, SIGTERM, SIGHUP, SIGXFSZ: it only set a
+    /// flag) since the last look: its number, agreed over the ranks.
+    int
+    stop_requested(const PlateModel &plate)
+    {
+      return agreed_stop(plate.get_mpi_communicator(), false);
+    }
+
     /// A case's contact model, built as ImpactDriver::setup() builds it.
     std::unique_ptr<ContactModel>
     contact_model_of(const Parameters      &p,
@@ -240,23 +248,28 @@ namespace fgimpact
     const std::size_t n_local = plate.locally_owned_dofs().n_elements();
     // Column j - 1: the step's local velocity values (contiguous).
     LAPACKFullMatrix<double> V(n_local, n_steps), MV(n_local, n_steps);
-    const bool               supported =
-      stepper->unit_response(n_steps,
-                             [&](const unsigned int                   j,
-                                 const TrilinosWrappers::MPI::Vector &u,
-                                 const TrilinosWrappers::MPI::Vector &v,
-                                 const TrilinosWrappers::MPI::Vector &Mv) {
-                               contact_response[j - 1] =
-                                 plate.dof_values(u, dofs)[0];
-                               fields.update_displacement(u);
-                               probe_response[j - 1] =
-                                 probe_plate(mid, top, fields.displacement());
-                               for (std::size_t i = 0; i < n_local; ++i)
-                                 {
-                                   V(i, j - 1)  = v.begin()[i];
-                                   MV(i, j - 1) = Mv.begin()[i];
-                                 }
-                             });
+    const bool               supported = stepper->unit_response(
+      n_steps,
+      [&](const unsigned int                   j,
+          const TrilinosWrappers::MPI::Vector &u,
+          const TrilinosWrappers::MPI::Vector &v,
+          const TrilinosWrappers::MPI::Vector &Mv) {
+        throw_if_stop_signal(plate.get_mpi_communicator(),
+                             "while the convolution study was being "
+                                           "prepared (unit response step " +
+                               std::to_string(j) + " of " +
+                               std::to_string(n_steps) +
+                               "): no case computed; run the study "
+                                             "again.");
+        contact_response[j - 1] = plate.dof_values(u, dofs)[0];
+        fields.update_displacement(u);
+        probe_response[j - 1] = probe_plate(mid, top, fields.displacement());
+        for (std::size_t i = 0; i < n_local; ++i)
+          {
+            V(i, j - 1)  = v.begin()[i];
+            MV(i, j - 1) = Mv.begin()[i];
+          }
+      });
     if (!supported)
       {
         reason = "the time stepper has no unit response here (an iterative "
@@ -276,6 +289,29 @@ namespace fgimpact
     prepare_time = timer.wall_time();
     gram_time    = prepare_time - response_time - factorization_time;
     return true;
+  }
+
+
+
+  void
+  ImpactStudyEngine::stop_case(ImpactMonitor       &monitor,
+                               const ImpactorState &ball,
+                               const unsigned int   steps_done,
+                               const int            stop,
+                               const double         loop_time) const
+  {
+    // The case's files end at the last step done, as an interrupted run's.
+    monitor.close_output();
+    monitor.finish(
+      ball, steps_done, "interrupted", loop_time, total_timer.wall_time());
+    throw RunInterrupted(
+      stop,
+      std::string("interrupted by ") + signal_name(stop) + " after time step " +
+        std::to_string(steps_done) + " of " + std::to_string(n_steps) +
+        " of a convolution study case; its history.csv and summary.txt "
+        "(status = interrupted) are complete up to there and the cases "
+        "before it are whole; convolution cases keep no checkpoint (they "
+        "are cheap): run the study again.");
   }
 
 
@@ -348,6 +384,8 @@ namespace fgimpact
     Timer          loop_timer;
     for (unsigned int n = 0; n < n_steps; ++n)
       {
+        if (const int stop = stop_requested(plate); stop > 0)
+          stop_case(monitor, ball, n, stop, loop_timer.wall_time());
         const double t = (n + 1) * dt;
         coupler.advance(n + 1, t, ball, state);
         monitor.record(n + 1, t, response.plate_sample(), ball, state);

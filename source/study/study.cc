@@ -385,6 +385,11 @@ namespace fgimpact
               << " case(s) through the time loop: " << reason << '\n';
       for (const auto *c : cases)
         {
+          throw_if_stop_signal(MPI_COMM_WORLD,
+                               "before study case " +
+                                 c->parameters.output.directory +
+                                 ": the cases before it are whole; run the "
+                                 "study again.");
           pcout << "study case " << c->parameters.output.directory << ":";
           for (unsigned int e = 0; e < c->study_case.paths.size(); ++e)
             pcout << ' ' << c->study_case.assignment(e) << ';';

@@ -155,6 +155,11 @@ namespace fgimpact
    */
   int
   agreed_stop(const MPI_Comm comm, const bool local_failure);
+
+  /// A stop signal received on any rank of comm (agreed_stop()): throws
+  /// RunInterrupted with "interrupted by SIGNAL " + what, on every rank.
+  void
+  throw_if_stop_signal(const MPI_Comm comm, const std::string &what);
   /** @} */
 
 

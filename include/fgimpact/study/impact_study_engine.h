@@ -81,7 +81,9 @@ namespace fgimpact
      * Run one case (whose parameters differ from prepare()'s only in the
      * entries listed above) and write its history.csv and summary.txt into
      * its Output/Directory, which must exist.  Throws ExcMessage if its
-     * contact DoF is not the group's.  Collective.
+     * contact DoF is not the group's; a stop signal (SIGINT, SIGTERM, ...)
+     * ends the case's files (status = interrupted) and throws
+     * RunInterrupted, as does one during prepare().  Collective.
      */
     const ImpactResults &
     run_case(const Parameters &parameters);
@@ -100,6 +102,15 @@ namespace fgimpact
     preparation_timing() const;
 
   private:
+    /// A stop signal after steps_done steps of a case: its files finished
+    /// (status = interrupted), then RunInterrupted on every rank.
+    [[noreturn]] void
+    stop_case(ImpactMonitor       &monitor,
+              const ImpactorState &ball,
+              const unsigned int   steps_done,
+              const int            stop,
+              const double         loop_time) const;
+
     /// results for a new case: the plate's and the set-up's entries, the
     /// contact model's, the model description; the history's are the
     /// monitor's.
