@@ -210,17 +210,29 @@ namespace fgimpact
   CheckpointReader::section(const std::string  &name,
                             const std::uint32_t version) const
   {
-    CheckpointReader all(buffer);
-    while (all.position < all.buffer.size())
+    // Scan the section headers in place (the payload holds the vectors:
+    // no copy of it), then copy the one section asked for.
+    std::size_t at   = 0;
+    const auto  skip = [&](void *to, const std::size_t n) {
+      AssertThrow(at + n <= buffer.size(),
+                  ExcMessage("the checkpoint ends early (damaged, or written "
+                              "by a different version of the program)"));
+      if (to != nullptr)
+        std::memcpy(to, buffer.data() + at, n);
+      at += n;
+    };
+    while (at < buffer.size())
       {
-        std::string   found;
+        std::uint64_t name_length = 0, length = 0;
         std::uint32_t found_version = 0;
-        std::uint64_t length        = 0;
-        all.get(found);
-        all.get(found_version);
-        all.get(length);
-        const char *data = all.take(length);
-        if (found != name)
+        skip(&name_length, sizeof(name_length));
+        const std::size_t name_at = at;
+        skip(nullptr, name_length);
+        skip(&found_version, sizeof(found_version));
+        skip(&length, sizeof(length));
+        const std::size_t data_at = at;
+        skip(nullptr, length);
+        if (buffer.compare(name_at, name_length, name) != 0)
           continue;
         AssertThrow(found_version == version,
                     ExcMessage("the checkpoint's section '" + name +
@@ -228,7 +240,7 @@ namespace fgimpact
                                std::to_string(found_version) +
                                ", this program reads version " +
                                std::to_string(version)));
-        CheckpointReader part(std::string(data, length));
+        CheckpointReader part(buffer.substr(data_at, length));
         part.step = step;
         return part;
       }

@@ -254,13 +254,16 @@ namespace fgimpact
           const TrilinosWrappers::MPI::Vector &u,
           const TrilinosWrappers::MPI::Vector &v,
           const TrilinosWrappers::MPI::Vector &Mv) {
-        throw_if_stop_signal(plate.get_mpi_communicator(),
-                             "while the convolution study was being "
-                                           "prepared (unit response step " +
-                               std::to_string(j) + " of " +
-                               std::to_string(n_steps) +
-                               "): no case computed; run the study "
-                                             "again.");
+        // The message is built only if a signal came.
+        if (const int stop = stop_requested(plate); stop > 0)
+          throw RunInterrupted(stop,
+                               std::string("interrupted by ") +
+                                 signal_name(stop) +
+                                 " while the convolution study was being "
+                                               "prepared (unit response step " +
+                                 std::to_string(j) + " of " +
+                                 std::to_string(n_steps) +
+                                 "): no case computed; run the study again.");
         contact_response[j - 1] = plate.dof_values(u, dofs)[0];
         fields.update_displacement(u);
         probe_response[j - 1] = probe_plate(mid, top, fields.displacement());

@@ -471,9 +471,9 @@ namespace fgimpact
                            std::to_string(in->step) +
                            ", after Time integration/End time (" +
                            std::to_string(n_steps) + " steps)"));
-    // Each component's section (write_checkpoint()); the coupler regrows
-    // the contact set before the stepper and the contact model read their
-    // state.
+    // Each component's section, found by name (write_checkpoint()).  The
+    // coupler must come first: it regrows the contact set, whose compliance
+    // and mass the stepper's and the contact model's state refer to.
     CheckpointReader state = in->section("impact state", state_version);
     state.get(ball);
     contact_state_fields([&state](auto &value) { state.get(value); },
