@@ -371,6 +371,7 @@ namespace fgimpact
     ImpactMonitor monitor(output, plate, *contact, m, V0, dt, n_steps, results);
     for (const auto &observer : observers)
       monitor.add_row_observer(observer);
+    monitor.start();
     ImpactorState ball;
     ball.v = V0;
     ContactState state;

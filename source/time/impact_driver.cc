@@ -353,10 +353,6 @@ namespace fgimpact
   ImpactDriver::open_monitor(CheckpointReader *resume)
   {
     // The monitor opens the output files: only now, after setup() passed.
-    std::unique_ptr<CheckpointReader> monitor_state;
-    if (resume)
-      monitor_state = std::make_unique<CheckpointReader>(
-        resume->section("monitor", ImpactMonitor::checkpoint_version));
     monitor = std::make_unique<ImpactMonitor>(parameters.output,
                                               plate,
                                               *contact,
@@ -364,11 +360,11 @@ namespace fgimpact
                                               impactor.initial_velocity(),
                                               dt,
                                               n_steps,
-                                              results,
-                                              monitor_state.get());
+                                              results);
     for (const auto &observer : observers)
       monitor->add_row_observer(observer);
-    monitor->add_contact_output(scene.impact_point(), impactor.radius());
+    monitor->add_field_output(scene.impact_point(), impactor.radius());
+    monitor->start(resume);
     // Rank 0 alone has opened history.csv (and probes.csv): every rank
     // learns whether that worked before the first collective output.
     stop_on_output_failure(resume ? resume->step : 0, 0.);
@@ -513,11 +509,7 @@ namespace fgimpact
     out.section("contact model",
                 ContactModel::checkpoint_version,
                 [&](CheckpointWriter &s) { contact->save(s); });
-    out.section("monitor",
-                ImpactMonitor::checkpoint_version,
-                [&](CheckpointWriter &s) {
-                  monitor->save(s, step); // flushes history.csv
-                });
+    monitor->save(out, step); // flushes history.csv
     const MPI_Comm comm = plate.get_mpi_communicator();
     if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
       return -1;

@@ -1,0 +1,293 @@
+#ifndef fgimpact_postprocessors_h
+#define fgimpact_postprocessors_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <fgimpact/app/logger.h>
+#include <fgimpact/output/contact_output.h>
+#include <fgimpact/output/output_files.h>
+#include <fgimpact/output/postprocessing.h>
+#include <fgimpact/output/postprocessor.h>
+#include <fgimpact/output/results.h>
+#include <fgimpact/plate/probe_set.h>
+
+#include <functional>
+#include <memory>
+
+namespace fgimpact
+{
+  struct OutputParameters;
+
+  /**
+   * The results of the time history (summary.txt's): the peak force by a
+   * parabola through the largest sample and its neighbours, the contact
+   * episodes (duration, number of impacts), the impulse, the maxima, and
+   * at the end the departure velocity and the warnings.
+   */
+  class ResultsAccumulator : public Postprocessor
+  {
+  public:
+    /// m (kg) and V0 (m/s): the whole ball's; dt (s).
+    ResultsAccumulator(ImpactResults            &results,
+                       const ContactModel       &contact,
+                       const double              m,
+                       const double              V0,
+                       const double              dt,
+                       const bool                symmetric_part,
+                       const ConditionalOStream &pcout);
+
+    std::string
+    name() const override
+    {
+      return "results";
+    }
+    void
+    execute(const StepRecord &record) override;
+    void
+    save(CheckpointWriter &out, const unsigned int step) override;
+    void
+    load(CheckpointReader &in) override;
+    void
+    finish(const ImpactorState &ball) override;
+
+  private:
+    void
+    update_episodes(const double t, const ContactState &contact);
+    void
+    update_extremes(const double t, const HistorySample &sample);
+
+    ImpactResults            &results;
+    const ContactModel       &contact_model;
+    const double              m, V0, dt;
+    const bool                symmetric_part;
+    const ConditionalOStream &pcout;
+    // Contact episodes: alpha(0) = 0 with alpha' > 0 counts as contact.
+    bool   in_contact     = true;
+    bool   separated_once = false;
+    double last_force = 0, last_alpha = 0;
+    // Peak detection: the sample left of the largest one.
+    double peak_left    = 0;
+    bool   peak_pending = false;
+  };
+
+
+
+  /**
+   * The energy balance: one warning past a relative drift of 1e-2, and
+   * ExcNumericalFailure (naming the time step and what to change) past
+   * 0.5, a run that is blowing up.
+   */
+  class EnergyWatchdog : public Postprocessor
+  {
+  public:
+    /// E0: the impact's energy (J).
+    EnergyWatchdog(const double E0, const ConditionalOStream &pcout);
+
+    std::string
+    name() const override
+    {
+      return "energy watchdog";
+    }
+    void
+    execute(const StepRecord &record) override;
+    void
+    save(CheckpointWriter &out, const unsigned int step) override;
+    void
+    load(CheckpointReader &in) override;
+
+  private:
+    const double              E0;
+    const ConditionalOStream &pcout;
+    bool                      warned = false;
+  };
+
+
+
+  /**
+   * history.csv, streamed (nothing kept in memory; observers may
+   * subscribe to the rows, before rounding, on every rank).  Rank 0
+   * writes.
+   */
+  class HistoryWriter : public Postprocessor
+  {
+  public:
+    using RowObserver = std::function<void(const std::vector<double> &)>;
+
+    HistoryWriter(const std::string                &directory,
+                  const std::vector<HistoryColumn> &columns,
+                  const bool                        root);
+
+    void
+    add_observer(const RowObserver &observer);
+
+    std::string
+    name() const override
+    {
+      return "history.csv";
+    }
+    void
+    start() override;
+    void
+    execute(const StepRecord &record) override;
+    /// The file's length (flushed) for a resumed run to continue from.
+    void
+    save(CheckpointWriter &out, const unsigned int step) override;
+    void
+    load(CheckpointReader &in) override;
+    void
+    close_output() override;
+
+  private:
+    const std::string                directory;
+    const std::vector<HistoryColumn> columns;
+    const bool                       root;
+    std::unique_ptr<CsvWriter>       csv;
+    std::vector<RowObserver>         observers;
+    std::uintmax_t                   resume_length = 0;
+  };
+
+
+
+  /**
+   * probes.csv: Output/Probe points (ProbeSet) and the support reaction,
+   * at every step that has fields.  Every rank evaluates (collective);
+   * rank 0 writes.
+   */
+  class ProbeWriter : public Postprocessor
+  {
+  public:
+    /// whole: 1 / the part's share (the supports' reaction is scaled up).
+    ProbeWriter(const PlateModel              &plate,
+                const std::vector<ProbePoint> &points,
+                const std::string             &directory,
+                const double                   whole,
+                const bool                     root);
+
+    std::string
+    name() const override
+    {
+      return "probes.csv";
+    }
+    bool
+    needs_rates(const unsigned int) const override
+    {
+      return true;
+    }
+    void
+    start() override;
+    void
+    execute(const StepRecord &record) override;
+    void
+    save(CheckpointWriter &out, const unsigned int step) override;
+    void
+    load(CheckpointReader &in) override;
+    void
+    close_output() override;
+
+  private:
+    const ProbeSet             probes;
+    const std::string          directory;
+    const double               whole;
+    const bool                 root;
+    std::unique_ptr<CsvWriter> csv;
+    std::uintmax_t             resume_length = 0;
+  };
+
+
+
+  /**
+   * The VTU/PVD series every Output/VTU interval steps: the plate
+   * (VtuWriter, written in the background), and with a ball the sphere
+   * and the contact nodes (ContactVtuWriter, rank 0); at the end the peak
+   * fields.
+   */
+  class FieldWriter : public Postprocessor
+  {
+  public:
+    /// impact_point: where the ball first touches the top face; radius:
+    /// the ball's (m).
+    FieldWriter(const PlateModel       &plate,
+                const OutputParameters &parameters,
+                const ContactModel     &contact,
+                const Point<3>         &impact_point,
+                const double            radius);
+
+    std::string
+    name() const override
+    {
+      return "vtu";
+    }
+    bool
+    needs_rates(const unsigned int step) const override
+    {
+      return step % interval == 0;
+    }
+    void
+    start() override;
+    void
+    execute(const StepRecord &record) override;
+    bool
+    needs_rewrite() const override;
+    void
+    rewrite(const unsigned int step,
+            const double       t,
+            const PlateFields &fields) override;
+    /// The PVD entries so far, and whether the snapshot of `step` was
+    /// still being written.
+    void
+    save(CheckpointWriter &out, const unsigned int step) override;
+    void
+    load(CheckpointReader &in) override;
+    void
+    close_output() override;
+    double
+    output_time() const override
+    {
+      return timer.wall_time();
+    }
+
+  private:
+    using Records = std::vector<std::pair<double, std::string>>;
+
+    const unsigned int                interval;
+    const MPI_Comm                    communicator;
+    std::unique_ptr<VtuWriter>        vtu;
+    std::unique_ptr<ContactVtuWriter> contact_vtu;
+    Records vtu_records, sphere_records, contact_records;
+    bool    resumed = false, rewrite_snapshot = false;
+    Timer   timer;
+  };
+
+
+
+  /**
+   * The screen: a line every Output/Log interval steps, the progress
+   * meter, and one note at the first step whose contact solve needed the
+   * LCP fallback.
+   */
+  class RunLog : public Postprocessor
+  {
+  public:
+    RunLog(const unsigned int        log_interval,
+           const unsigned int        n_steps,
+           const double              E0,
+           const bool                progress,
+           const ConditionalOStream &pcout);
+
+    void
+    execute(const StepRecord &record) override;
+
+  private:
+    void
+    report_lcp_fallback(const StepRecord &record);
+
+    const unsigned int        log_interval, n_steps;
+    const double              E0;
+    const ConditionalOStream &pcout;
+    ProgressMeter             progress;
+    bool                      lcp_fallback_reported = false;
+  };
+} // namespace fgimpact
+
+#endif

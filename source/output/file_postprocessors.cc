@@ -1,0 +1,414 @@
+// The postprocessors that write files: history.csv, probes.csv and the
+// VTU/PVD series.  Each keeps a failed write in output_failure() and drops
+// only its own writer.
+
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/output/monitor.h>
+#include <fgimpact/output/postprocessors.h>
+
+namespace fgimpact
+{
+  namespace
+  {
+    using Records = std::vector<std::pair<double, std::string>>;
+
+    void
+    put_records(CheckpointWriter &out, const Records &records)
+    {
+      out.put<std::uint64_t>(records.size());
+      for (const auto &[t, name] : records)
+        {
+          out.put(t);
+          out.put(name);
+        }
+    }
+
+    void
+    get_records(CheckpointReader &in, Records &records)
+    {
+      std::uint64_t n = 0;
+      in.get(n);
+      records.resize(n);
+      for (auto &[t, name] : records)
+        {
+          in.get(t);
+          in.get(name);
+        }
+    }
+  } // namespace
+
+
+
+  void
+  Postprocessor::keep_failure(const ExceptionBase &e)
+  {
+    output_failure_message = message_of(e);
+  }
+
+
+
+  HistoryWriter::HistoryWriter(const std::string                &directory,
+                               const std::vector<HistoryColumn> &columns,
+                               const bool                        root)
+    : directory(directory)
+    , columns(columns)
+    , root(root)
+  {}
+
+
+
+  void
+  HistoryWriter::add_observer(const RowObserver &observer)
+  {
+    observers.push_back(observer);
+  }
+
+
+
+  void
+  HistoryWriter::start()
+  {
+    if (!root)
+      return;
+    try
+      {
+        std::vector<std::pair<std::string, int>> header;
+        for (const auto &column : columns)
+          header.emplace_back(column.name, column.decimals);
+        csv = std::make_unique<CsvWriter>(directory + "/history.csv",
+                                          header,
+                                          resume_length);
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+      }
+  }
+
+
+
+  void
+  HistoryWriter::execute(const StepRecord &record)
+  {
+    std::vector<double> row;
+    row.reserve(columns.size());
+    for (const auto &column : columns)
+      row.push_back(column.value(*record.sample));
+    try
+      {
+        if (csv)
+          csv->write_row(row);
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+        csv.reset();
+      }
+    for (const auto &observer : observers)
+      observer(row);
+  }
+
+
+
+  void
+  HistoryWriter::save(CheckpointWriter &out, const unsigned int)
+  {
+    std::uintmax_t length = 0;
+    try
+      {
+        if (csv)
+          length = csv->length();
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+        csv.reset();
+      }
+    out.put<std::uint64_t>(length);
+  }
+
+
+
+  void
+  HistoryWriter::load(CheckpointReader &in)
+  {
+    std::uint64_t length = 0;
+    in.get(length);
+    resume_length = length;
+  }
+
+
+
+  void
+  HistoryWriter::close_output()
+  {
+    try
+      {
+        if (csv)
+          csv->flush();
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+      }
+  }
+
+
+
+  ProbeWriter::ProbeWriter(const PlateModel              &plate,
+                           const std::vector<ProbePoint> &points,
+                           const std::string             &directory,
+                           const double                   whole,
+                           const bool                     root)
+    : probes(plate, points)
+    , directory(directory)
+    , whole(whole)
+    , root(root)
+  {}
+
+
+
+  void
+  ProbeWriter::start()
+  {
+    if (!root)
+      return;
+    try
+      {
+        csv = std::make_unique<CsvWriter>(directory + "/probes.csv",
+                                          probes.columns(),
+                                          resume_length);
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+      }
+  }
+
+
+
+  void
+  ProbeWriter::execute(const StepRecord &record)
+  {
+    // The convolution engine of a study has no fields (probes.csv comes
+    // from --study-case K).  Every rank evaluates: it is collective.
+    if (!record.fields)
+      return;
+    const PlateFields &f      = *record.fields;
+    ProbeValues        values = probes.evaluate(f.displacement(),
+                                         f.velocity(),
+                                         f.acceleration(),
+                                         f.lumped_mass());
+    values.support_reaction_z *= whole; // a part's supports: scaled up
+    try
+      {
+        if (csv)
+          csv->write_row(probes.row(record.t, values));
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+        csv.reset();
+      }
+  }
+
+
+
+  void
+  ProbeWriter::save(CheckpointWriter &out, const unsigned int)
+  {
+    // probes.csv continues from here on resume, as history.csv does.
+    std::uintmax_t length = 0;
+    try
+      {
+        if (csv)
+          length = csv->length();
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+        csv.reset();
+      }
+    out.put<std::uint64_t>(length);
+  }
+
+
+
+  void
+  ProbeWriter::load(CheckpointReader &in)
+  {
+    std::uint64_t length = 0;
+    in.get(length);
+    resume_length = length;
+  }
+
+
+
+  void
+  ProbeWriter::close_output()
+  {
+    try
+      {
+        if (csv)
+          csv->flush();
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+      }
+  }
+
+
+
+  FieldWriter::FieldWriter(const PlateModel       &plate,
+                           const OutputParameters &parameters,
+                           const ContactModel     &contact,
+                           const Point<3>         &impact_point,
+                           const double            radius)
+    : interval(parameters.vtu_interval)
+    , communicator(plate.get_mpi_communicator())
+    , vtu(std::make_unique<VtuWriter>(plate,
+                                      parameters.directory,
+                                      parameters.vtu_compression,
+                                      parameters.vtu_fields))
+  {
+    if (Utilities::MPI::this_mpi_process(communicator) == 0)
+      contact_vtu = std::make_unique<ContactVtuWriter>(parameters.directory,
+                                                       impact_point,
+                                                       radius,
+                                                       contact);
+    timer.stop();
+    timer.reset();
+  }
+
+
+
+  void
+  FieldWriter::start()
+  {
+    // A resumed run: the PVD entries of the checkpoint.
+    if (resumed)
+      vtu->restore(vtu_records);
+    if (contact_vtu && !sphere_records.empty())
+      contact_vtu->restore(sphere_records, contact_records);
+  }
+
+
+
+  void
+  FieldWriter::execute(const StepRecord &record)
+  {
+    if (!vtu || !record.fields || record.step % interval != 0)
+      return;
+    const PlateFields &f = *record.fields;
+    timer.start();
+    try
+      {
+        vtu->write(record.step,
+                   record.t,
+                   f.displacement(),
+                   f.velocity(),
+                   {},
+                   &f.acceleration());
+        if (contact_vtu)
+          contact_vtu->write(record.step,
+                             record.t,
+                             record.sample->ball->w,
+                             *record.sample->contact);
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+        vtu.reset();
+        contact_vtu.reset();
+      }
+    timer.stop();
+  }
+
+
+
+  bool
+  FieldWriter::needs_rewrite() const
+  {
+    // The flag is rank 0's on one rank, and the same on every rank under
+    // MPI (written at once).
+    return vtu &&
+           Utilities::MPI::max(rewrite_snapshot ? 1 : 0, communicator) == 1;
+  }
+
+
+
+  void
+  FieldWriter::rewrite(const unsigned int step,
+                       const double       t,
+                       const PlateFields &fields)
+  {
+    vtu->write(step,
+               t,
+               fields.displacement(),
+               fields.velocity(),
+               {},
+               &fields.acceleration());
+  }
+
+
+
+  void
+  FieldWriter::save(CheckpointWriter &out, const unsigned int step)
+  {
+    bool    in_flight = false;
+    Records vtu_now;
+    try
+      {
+        if (vtu)
+          vtu_now = vtu->records(step, in_flight);
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+        vtu.reset();
+        contact_vtu.reset();
+      }
+    put_records(out, vtu_now);
+    out.put(in_flight);
+    put_records(out, contact_vtu ? contact_vtu->sphere_records() : Records());
+    put_records(out, contact_vtu ? contact_vtu->contact_records() : Records());
+  }
+
+
+
+  void
+  FieldWriter::load(CheckpointReader &in)
+  {
+    resumed = true;
+    get_records(in, vtu_records);
+    in.get(rewrite_snapshot);
+    get_records(in, sphere_records);
+    get_records(in, contact_records);
+  }
+
+
+
+  void
+  FieldWriter::close_output()
+  {
+    // Timed by the monitor, as every postprocessor's close_output().
+    try
+      {
+        if (contact_vtu)
+          contact_vtu->finish();
+        // The peak fields are written collectively: only if no rank's
+        // VTU output failed (a failed rank has dropped its writer).
+        const bool all_writing =
+          Utilities::MPI::min(vtu ? 1u : 0u, communicator) == 1u;
+        if (vtu && all_writing)
+          vtu->write_peak_fields(); // finishes the series first
+        else if (vtu)
+          vtu->finish();
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+      }
+  }
+} // namespace fgimpact
