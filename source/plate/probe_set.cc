@@ -188,37 +188,14 @@ namespace fgimpact
   void
   ProbeSet::setup_point_weights(const PlateModel &plate)
   {
-    const auto                          &fe = plate.get_fe();
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (unsigned int p = 0; p < points.size(); ++p)
       {
-        // The displacement is continuous: the average over the cells that
-        // contain the point is each one's value.
-        const auto cells = locally_owned_cells_containing(plate, points[p]);
-        const unsigned int n_cells =
-          Utilities::MPI::sum(static_cast<unsigned int>(cells.size()),
-                              mpi_communicator);
-        AssertThrow(n_cells > 0,
-                    ExcMessage(entry + ": '" + names[p] +
-                               "' lies outside the plate."));
-        std::array<TrilinosWrappers::MPI::Vector, 3> w;
-        for (auto &vector : w)
-          vector.reinit(plate.locally_owned_dofs(),
-                        plate.locally_relevant_dofs(),
-                        mpi_communicator,
-                        /*vector_writable=*/true);
-        for (const auto &[cell, unit_point] : cells)
-          {
-            cell->get_dof_indices(dofs);
-            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-              w[fe.system_to_component_index(i).first](dofs[i]) +=
-                fe.shape_value(i, unit_point) / n_cells;
-          }
+        const auto w = displacement_weights(plate,
+                                            points[p],
+                                            entry + ": '" + names[p] +
+                                              "' lies outside the plate.");
         for (unsigned int c = 0; c < 3; ++c)
-          {
-            w[c].compress(VectorOperation::add);
-            weights[p][c] = owned_nonzeros(plate, w[c]);
-          }
+          weights[p][c] = w[c];
       }
   }
 
@@ -487,13 +464,7 @@ namespace fgimpact
                      const TrilinosWrappers::MPI::Vector &a,
                      const bool                           lumped_mass) const
   {
-    const auto dot = [](const Weights                       &w,
-                        const TrilinosWrappers::MPI::Vector &x) {
-      double sum = 0;
-      for (const auto &[dof, weight] : w)
-        sum += weight * x(dof);
-      return sum;
-    };
+    const auto &dot = local_dot;
     // Local sums, then one all-reduce: per point u, v, a (3 each) and the
     // stress (6), then the reaction.
     const unsigned int  n = points.size();

@@ -52,9 +52,62 @@ namespace fgimpact
 
 
 
+  double
+  local_dot(const DofWeights &w, const TrilinosWrappers::MPI::Vector &x)
+  {
+    double sum = 0;
+    for (const auto &[dof, weight] : w)
+      sum += weight * x(dof);
+    return sum;
+  }
+
+
+
+  std::array<DofWeights, 3>
+  displacement_weights(const PlateModel  &plate,
+                       const Point<3>    &location,
+                       const std::string &outside)
+  {
+    const MPI_Comm     comm  = plate.get_mpi_communicator();
+    const auto        &fe    = plate.get_fe();
+    const auto         cells = locally_owned_cells_containing(plate, location);
+    const unsigned int n_cells =
+      Utilities::MPI::sum(static_cast<unsigned int>(cells.size()), comm);
+    AssertThrow(n_cells > 0, ExcMessage(outside));
+    // Summed into distributed vectors so that each weight ends up on the
+    // rank that owns its DoF: evaluation then needs no ghost values.
+    std::array<TrilinosWrappers::MPI::Vector, 3> w;
+    for (auto &vector : w)
+      vector.reinit(plate.locally_owned_dofs(),
+                    plate.locally_relevant_dofs(),
+                    comm,
+                    /*vector_writable=*/true);
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &[cell, unit_point] : cells)
+      {
+        cell->get_dof_indices(dofs);
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          w[fe.system_to_component_index(i).first](dofs[i]) +=
+            fe.shape_value(i, unit_point) / n_cells;
+      }
+    std::array<DofWeights, 3> weights;
+    for (unsigned int c = 0; c < 3; ++c)
+      {
+        w[c].compress(VectorOperation::add);
+        weights[c] = owned_nonzeros(plate, w[c]);
+      }
+    return weights;
+  }
+
+
+
   PointProbe::PointProbe(const PlateModel &plate, const Point<3> &location)
     : point(location)
     , mpi_communicator(plate.get_mpi_communicator())
+    , displacement_weights(
+        fgimpact::displacement_weights(plate,
+                                       location,
+                                       "A probe point lies outside the plate."))
   {
     const auto &fe = plate.get_fe();
 
@@ -62,15 +115,13 @@ namespace fgimpact
     const unsigned int n_adjacent_cells =
       Utilities::MPI::sum(static_cast<unsigned int>(cells.size()),
                           mpi_communicator);
-    AssertThrow(n_adjacent_cells > 0,
-                ExcMessage("A probe point lies outside the plate."));
-
+    // Q_p stress is discontinuous across cells: the average over all
+    // cells that contain the point.
     const double w = 1. / n_adjacent_cells;
 
-    // The weights of the 3 displacement and 6 stress components, summed
-    // into distributed vectors so that each ends up on the rank that owns
-    // its DoF: evaluation then needs no ghost values.
-    std::array<TrilinosWrappers::MPI::Vector, 9> weights;
+    // The weights of the 6 stress components, summed into distributed
+    // vectors so that each ends up on the rank that owns its DoF.
+    std::array<TrilinosWrappers::MPI::Vector, 6> weights;
     for (auto &vector : weights)
       vector.reinit(plate.locally_owned_dofs(),
                     plate.locally_relevant_dofs(),
@@ -98,9 +149,6 @@ namespace fgimpact
           {
             const unsigned int c = fe.system_to_component_index(i).first;
             const auto         g = fe_values.shape_grad(i, 0);
-            // The displacement is continuous: each cell gives the same
-            // value, so averaging is harmless.
-            weights[c](local_dofs[i]) += w * fe_values.shape_value(i, 0);
             // The stress of this shape function, e_c (x) grad N: the
             // weights of the 6 independent components.
             SymmetricTensor<2, 3> eps;
@@ -112,16 +160,15 @@ namespace fgimpact
               {
                 const double value = sigma[voigt[s][0]][voigt[s][1]];
                 if (value != 0.)
-                  weights[3 + s](local_dofs[i]) += w * value;
+                  weights[s](local_dofs[i]) += w * value;
               }
           }
       }
 
-    for (unsigned int k = 0; k < 9; ++k)
+    for (unsigned int k = 0; k < 6; ++k)
       {
         weights[k].compress(VectorOperation::add);
-        (k < 3 ? displacement_weights[k] : stress_weights[k - 3]) =
-          owned_nonzeros(plate, weights[k]);
+        stress_weights[k] = owned_nonzeros(plate, weights[k]);
       }
   }
 
@@ -135,8 +182,7 @@ namespace fgimpact
     // Local sums over the owned DoFs, then one all-reduce for all N.
     std::array<double, N> local{}, global;
     for (std::size_t k = 0; k < N; ++k)
-      for (const auto &[dof, weight] : weights[k])
-        local[k] += weight * u(dof);
+      local[k] = local_dot(weights[k], u);
     Utilities::MPI::sum(ArrayView<const double>(local),
                         mpi_communicator,
                         ArrayView<double>(global));

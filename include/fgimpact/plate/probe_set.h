@@ -9,6 +9,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <fgimpact/plate/plate_model.h>
+#include <fgimpact/plate/probes.h>
 
 #include <array>
 #include <string>
@@ -124,7 +125,7 @@ namespace fgimpact
     }
 
   private:
-    using Weights = std::vector<std::pair<types::global_dof_index, double>>;
+    using Weights = DofWeights;
 
     void
     setup_point_weights(const PlateModel &plate);

@@ -10,6 +10,7 @@
 #include <fgimpact/plate/plate_model.h>
 
 #include <array>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -23,6 +24,27 @@ namespace fgimpact
   std::vector<std::pair<DoFHandler<3>::active_cell_iterator, Point<3>>>
   locally_owned_cells_containing(const PlateModel &plate,
                                  const Point<3>   &location);
+
+  /// A linear functional of a DoF vector: (DoF, weight) at this rank's
+  /// DoFs.
+  using DofWeights = std::vector<std::pair<types::global_dof_index, double>>;
+
+  /// sum_i w_i x_i over this rank's entries of w (sum over the ranks for
+  /// the value).
+  double
+  local_dot(const DofWeights &w, const TrilinosWrappers::MPI::Vector &x);
+
+  /**
+   * The weights of the displacement's 3 components at `location` (m): the
+   * one point evaluation of history.csv's and probes.csv's points.  The
+   * displacement is continuous, so the average over the cells that contain
+   * the point is each one's value.  Collective; throws `outside` if no
+   * cell contains the point.
+   */
+  std::array<DofWeights, 3>
+  displacement_weights(const PlateModel  &plate,
+                       const Point<3>    &location,
+                       const std::string &outside);
 
   /// The nonzero entries of a distributed vector at this rank's DoFs.
   std::vector<std::pair<types::global_dof_index, double>>
