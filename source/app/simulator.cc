@@ -20,9 +20,12 @@ namespace fgimpact
     class LinearProblemDriver : public ProblemDriver
     {
     public:
-      LinearProblemDriver(const Parameters &parameters, const PlateModel &plate)
+      LinearProblemDriver(const Parameters &parameters,
+                          const PlateModel &plate,
+                          SummaryFile      &summary)
         : parameters(parameters)
         , plate(plate)
+        , summary(summary)
         , pcout(std::cout,
                 Utilities::MPI::this_mpi_process(
                   plate.get_mpi_communicator()) == 0)
@@ -36,12 +39,10 @@ namespace fgimpact
       void
       write_failed_summary(const std::string &status) const override
       {
-        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
-          return;
         SummaryWriter out;
         out.add_text("status", status);
         out.add("n_dofs", plate.n_dofs(), 0);
-        out.write(parameters.output.directory + "/summary.txt");
+        summary.write(out);
       }
 
     protected:
@@ -96,6 +97,7 @@ namespace fgimpact
 
       const Parameters  &parameters;
       const PlateModel  &plate;
+      SummaryFile       &summary;
       ConditionalOStream pcout;
     };
 
@@ -107,8 +109,9 @@ namespace fgimpact
     public:
       StaticDriver(const Parameters &parameters,
                    const PlateModel &plate,
-                   const Scene      &scene)
-        : LinearProblemDriver(parameters, plate)
+                   const Scene      &scene,
+                   SummaryFile      &summary)
+        : LinearProblemDriver(parameters, plate, summary)
         , scene(scene)
       {}
 
@@ -206,6 +209,7 @@ namespace fgimpact
     : parameters(parameters)
     , mpi_communicator(mpi_communicator)
     , pcout(std::cout, Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+    , summary_file(parameters.output.directory, mpi_communicator)
   {}
 
 
@@ -218,10 +222,8 @@ namespace fgimpact
       {
         case ProblemType::impact:
           {
-            auto impact = std::make_unique<ImpactDriver>(parameters,
-                                                         *scene,
-                                                         *plate,
-                                                         total_timer);
+            auto impact = std::make_unique<ImpactDriver>(
+              parameters, *scene, *plate, total_timer, summary_file);
             for (const auto &observer : observers)
               impact->add_row_observer(observer);
             impact->set_checkpointing(checkpoint_settings);
@@ -229,10 +231,14 @@ namespace fgimpact
             break;
           }
         case ProblemType::static_load:
-          driver = std::make_unique<StaticDriver>(parameters, *plate, *scene);
+          driver = std::make_unique<StaticDriver>(parameters,
+                                                  *plate,
+                                                  *scene,
+                                                  summary_file);
           break;
         case ProblemType::modal:
-          driver = std::make_unique<ModalDriver>(parameters, *plate);
+          driver =
+            std::make_unique<ModalDriver>(parameters, *plate, summary_file);
           break;
       }
     driver->setup();
@@ -393,22 +399,21 @@ namespace fgimpact
   void
   Simulator::write_failed_summary(const std::string &status) const
   {
-    if (Utilities::MPI::this_mpi_process(mpi_communicator) != 0)
-      return;
     // Best effort: the failure being reported is the one that counts.
     try
       {
         if (driver)
           driver->write_failed_summary(status);
-        else
-          {
-            SummaryWriter out;
-            out.add_text("status", status);
-            out.write(parameters.output.directory + "/summary.txt");
-          }
       }
     catch (...)
       {}
+    if (!driver)
+      {
+        // Only the status: nothing else is known.
+        SummaryWriter out;
+        out.add_text("status", status);
+        summary_file.write_failed(out);
+      }
   }
 
 

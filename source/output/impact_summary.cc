@@ -344,13 +344,12 @@ namespace fgimpact
 
 
 
-  void
-  write_impact_summary(const std::string   &filename,
-                       const ImpactResults &r,
-                       const bool           contact_area,
-                       const bool           instrumentation,
-                       const std::string   &status,
-                       const double         t_end)
+  SummaryWriter
+  impact_summary(const ImpactResults &r,
+                 const bool           contact_area,
+                 const bool           instrumentation,
+                 const std::string   &status,
+                 const double         t_end)
   {
     const SummaryContext context{status, t_end};
     SummaryWriter        out;
@@ -368,6 +367,6 @@ namespace fgimpact
         else
           out.add(key.name, key.number(r), key.decimals);
       }
-    out.write(filename);
+    return out;
   }
 } // namespace fgimpact

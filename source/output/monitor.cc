@@ -16,7 +16,8 @@ namespace fgimpact
                                const double            impact_velocity,
                                const double            dt,
                                const unsigned int      n_steps,
-                               ImpactResults          &results)
+                               ImpactResults          &results,
+                               SummaryFile            &summary)
     : parameters(parameters)
     , plate(plate)
     , contact_model(contact)
@@ -29,6 +30,7 @@ namespace fgimpact
     , pcout(std::cout,
             Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
     , impact_results(results)
+    , summary(summary)
     , mid_probe(plate, history_probe_points(plate.get_geometry())[0])
     , top_probe(plate, history_probe_points(plate.get_geometry())[1])
     , fields(plate)
@@ -282,13 +284,11 @@ namespace fgimpact
     r.time_loop_time = loop_time - r.output_time;
     r.wall_time      = wall_time;
 
-    if (pcout.is_active())
-      write_impact_summary(parameters.directory + "/summary.txt",
-                           impact_results,
-                           contact_model.reports_contact_area(),
-                           parameters.instrumentation,
-                           status,
-                           steps_done * dt);
+    summary.write(impact_summary(impact_results,
+                                 contact_model.reports_contact_area(),
+                                 parameters.instrumentation,
+                                 status,
+                                 steps_done * dt));
     print_results();
   }
 

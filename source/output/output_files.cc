@@ -3,6 +3,7 @@
 // declared in output_files.h.  The VTU output is in postprocessing.cc.
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 
 #include <fgimpact/app/run_control.h>
 #include <fgimpact/output/output_files.h>
@@ -124,13 +125,10 @@ namespace fgimpact
                      const double       value,
                      const int          decimals)
   {
-    char buffer[200];
+    char buffer[200] = "none";
     if (std::isfinite(value))
-      std::snprintf(
-        buffer, sizeof(buffer), "%s = %.*f\n", name.c_str(), decimals, value);
-    else
-      std::snprintf(buffer, sizeof(buffer), "%s = none\n", name.c_str());
-    text += buffer;
+      std::snprintf(buffer, sizeof(buffer), "%.*f", decimals, value);
+    lines.emplace_back(name, buffer);
   }
 
 
@@ -141,8 +139,8 @@ namespace fgimpact
     if (!std::isfinite(value))
       return add(name, value, 0);
     char buffer[200];
-    std::snprintf(buffer, sizeof(buffer), "%s = %.6e\n", name.c_str(), value);
-    text += buffer;
+    std::snprintf(buffer, sizeof(buffer), "%.6e", value);
+    lines.emplace_back(name, buffer);
   }
 
 
@@ -150,7 +148,7 @@ namespace fgimpact
   void
   SummaryWriter::add_text(const std::string &name, const std::string &value)
   {
-    text += name + " = " + (value.empty() ? "none" : value) + '\n';
+    lines.emplace_back(name, value.empty() ? "none" : value);
   }
 
 
@@ -158,7 +156,10 @@ namespace fgimpact
   void
   SummaryWriter::write(const std::string &filename) const
   {
-    write_file_atomically(filename, preamble() + text);
+    std::string text = preamble();
+    for (const auto &[name, value] : lines)
+      text += name + " = " + value + '\n';
+    write_file_atomically(filename, text);
   }
 
 
@@ -175,5 +176,56 @@ namespace fgimpact
   SummaryWriter::set_preamble(const std::string &comment_lines)
   {
     preamble() = comment_lines;
+  }
+} // namespace fgimpact
+
+
+
+namespace fgimpact
+{
+  SummaryFile::SummaryFile(const std::string &directory,
+                           const MPI_Comm     communicator)
+    : filename(directory + "/summary.txt")
+    , root(dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+  {}
+
+
+
+  void
+  SummaryFile::write(const SummaryWriter &content)
+  {
+    last = content;
+    if (root)
+      content.write(filename);
+  }
+
+
+
+  void
+  SummaryFile::write_failed(const SummaryWriter &content)
+  {
+    std::string wanted;
+    for (const auto &[name, value] : content.entries())
+      if (name == "status")
+        wanted = value;
+    if (!wanted.empty() && status() == wanted)
+      return;
+    try
+      {
+        write(content);
+      }
+    catch (...)
+      {}
+  }
+
+
+
+  std::string
+  SummaryFile::status() const
+  {
+    for (const auto &[name, value] : last.entries())
+      if (name == "status")
+        return value;
+    return "";
   }
 } // namespace fgimpact

@@ -344,7 +344,7 @@ namespace fgimpact
 
 
   const ImpactResults &
-  ImpactStudyEngine::run_case(const Parameters &p)
+  ImpactStudyEngine::run_case(const Parameters &p, SummaryFile &summary)
   {
     const Scene scene(p, plate.get_material(), plate.get_geometry().share());
     const Impactor       &impactor = scene.impactor();
@@ -368,7 +368,8 @@ namespace fgimpact
     // No probes.csv: its probes need the fields (--study-case K writes it).
     OutputParameters output = p.output;
     output.probe_points.points.clear();
-    ImpactMonitor monitor(output, plate, *contact, m, V0, dt, n_steps, results);
+    ImpactMonitor monitor(
+      output, plate, *contact, m, V0, dt, n_steps, results, summary);
     for (const auto &observer : observers)
       monitor.add_row_observer(observer);
     monitor.start();

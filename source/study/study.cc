@@ -1,5 +1,6 @@
-// Parameter studies: the Study subsection, the cases, their grouping by
-// shared plate, and study.csv.  The convolution engine itself is in
+// Parameter studies: the cases, their grouping by shared plate, running
+// them, and study.csv.  The Study subsection and the expansion of its
+// entries are in study_parameters.cc, the convolution engine in
 // impact_study_engine.cc.
 
 #include <deal.II/base/utilities.h>
@@ -14,7 +15,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
 #include <iterator>
 #include <map>
 #include <memory>
@@ -23,154 +23,6 @@
 
 namespace fgimpact
 {
-  void
-  StudyParameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Study");
-    {
-      prm.declare_entry(
-        "Entries",
-        "",
-        Patterns::Anything(),
-        "The entries a parameter study varies, separated by ';', each "
-        "'Section/Entry = v1, v2, ...' (nested subsections joined by '/'), "
-        "e.g. 'Impactor/Initial velocity = 1, 2, 3, 4'. Empty: no study, "
-        "one run. Each case writes a normal output directory "
-        "Directory/case_NNN and Directory/study.csv gathers their "
-        "summaries. The command-line option --study appends to this list.");
-      prm.declare_entry("Combination",
-                        "product",
-                        Patterns::Selection("product|zip"),
-                        "product: every combination of the lists (the first "
-                        "entry varies slowest). zip: the i-th case takes the "
-                        "i-th value of every list (all lists equally long).");
-      prm.declare_entry(
-        "Method",
-        "auto",
-        Patterns::Selection("auto|time loop"),
-        "auto: cases that share the plate and differ only in the impactor, "
-        "the contact law's constants or Newton's control run as "
-        "convolutions of the plate's unit response (Hertz node contact, "
-        "implicit Newmark with beta = 1/4, gamma = 1/2, no VTU), the others "
-        "through the time loop (logged). time loop: every case through the "
-        "normal time loop.");
-      prm.declare_entry("Write VTU",
-                        "false",
-                        Patterns::Bool(),
-                        "false: the cases write no VTU (Output/VTU interval "
-                        "= 0, so that they can run by convolution); "
-                        "--study-case K reruns one case with the input's "
-                        "VTU output. true: the input's VTU interval (time "
-                        "loop).");
-    }
-    prm.leave_subsection();
-  }
-
-
-
-  void
-  StudyParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Study");
-    entries.clear();
-    for (const auto &entry :
-         Utilities::split_string_list(prm.get("Entries"), ';'))
-      if (!entry.empty())
-        entries.push_back(entry);
-    combination = (prm.get("Combination") == "zip" ? Combination::zip :
-                                                     Combination::product);
-    method      = (prm.get("Method") == "time loop" ? Method::time_loop :
-                                                      Method::automatic);
-    write_vtu   = prm.get_bool("Write VTU");
-    prm.leave_subsection();
-    n_file_entries = entries.size();
-  }
-
-
-
-  void
-  StudyParameters::append_command_line(
-    const std::vector<std::string> &study_options)
-  {
-    entries.insert(entries.end(), study_options.begin(), study_options.end());
-  }
-
-
-
-  std::string
-  StudyParameters::origin(const std::size_t i) const
-  {
-    return i < n_file_entries ? "Study/Entries" : "--study";
-  }
-
-
-
-  std::vector<StudyCase>
-  expand_study(const StudyParameters &study)
-  {
-    std::vector<std::string>              paths;
-    std::vector<std::string>              origins;
-    std::vector<std::vector<std::string>> lists;
-    for (std::size_t i = 0; i < study.entries.size(); ++i)
-      {
-        const std::string &entry = study.entries[i];
-        const std::string  where = study.origin(i) + ": '";
-        const auto         eq    = entry.find('=');
-        AssertThrow(eq != std::string::npos && eq > 0,
-                    ExcMessage(where + entry +
-                               "' is not 'Section/Entry = v1, v2, ...'"));
-        const std::string path = Utilities::trim(entry.substr(0, eq));
-        AssertThrow(std::find(paths.begin(), paths.end(), path) == paths.end(),
-                    ExcMessage(where + path +
-                               "' is listed twice (the second list would "
-                               "replace the first); give it once."));
-        paths.push_back(path);
-        origins.push_back(study.origin(i));
-        lists.push_back(
-          Utilities::split_string_list(entry.substr(eq + 1), ','));
-        AssertThrow(!lists.back().empty() && !paths.back().empty(),
-                    ExcMessage(where + entry + "' has no values"));
-      }
-    std::vector<StudyCase> cases;
-    if (paths.empty())
-      return cases;
-    if (study.combination == StudyParameters::Combination::zip)
-      {
-        for (const auto &list : lists)
-          AssertThrow(list.size() == lists[0].size(),
-                      ExcMessage("Study/Combination = zip: the lists of "
-                                 "Study/Entries differ in length"));
-        for (std::size_t i = 0; i < lists[0].size(); ++i)
-          {
-            StudyCase c;
-            c.paths   = paths;
-            c.origins = origins;
-            for (const auto &list : lists)
-              c.values.push_back(list[i]);
-            cases.push_back(c);
-          }
-        return cases;
-      }
-    // Cartesian product, the last entry varying fastest.
-    std::vector<std::size_t> index(paths.size(), 0);
-    while (true)
-      {
-        StudyCase c;
-        c.paths   = paths;
-        c.origins = origins;
-        for (std::size_t e = 0; e < paths.size(); ++e)
-          c.values.push_back(lists[e][index[e]]);
-        cases.push_back(c);
-        std::size_t e = paths.size();
-        while (e > 0 && ++index[e - 1] == lists[e - 1].size())
-          index[--e] = 0;
-        if (e == 0)
-          return cases;
-      }
-  }
-
-
-
   namespace
   {
     /// A case, parsed and checked.
@@ -282,15 +134,33 @@ namespace fgimpact
 
     /// A case through the normal set-up and time loop.
     void
-    run_time_loop(const ParsedCase &c, const InputFile &input)
+    run_time_loop(const ParsedCase &c,
+                  const InputFile  &input,
+                  SummaryEntries   &summary)
     {
       Simulator          simulator(c.parameters, MPI_COMM_WORLD);
       CheckpointSettings checkpoint;
       checkpoint.parameters_text = c.checkpoint_text;
       simulator.set_checkpointing(checkpoint);
-      simulator.setup();
-      start_case_files(c, input);
-      simulator.run();
+      try
+        {
+          simulator.setup();
+          start_case_files(c, input);
+          simulator.run();
+        }
+      catch (const RunInterrupted &)
+        {
+          summary = simulator.summary().entries();
+          throw;
+        }
+      catch (...)
+        {
+          // A failed set-up has no summary.txt yet: the simulator's.
+          simulator.write_failed_summary();
+          summary = simulator.summary().entries();
+          throw;
+        }
+      summary = simulator.summary().entries();
     }
 
     /// "case_NNN" of a case's output directory.
@@ -322,26 +192,52 @@ namespace fgimpact
         }
     }
 
-    /// A failed case whose summary.txt was not written (the convolution
-    /// engine's failures): status = failed, as a failed single run's.
+    /// One case of a group: by the engine if given, else through the time
+    /// loop; a failure is added to failures (name, one-line reason), and
+    /// the case's summary to summaries (by its directory).
     void
-    ensure_failed_summary(const std::string &directory)
+    run_case(const ParsedCase                                 &c,
+             const InputFile                                  &input,
+             ImpactStudyEngine                                *engine,
+             std::vector<std::pair<std::string, std::string>> &failures,
+             std::map<std::string, SummaryEntries>            &summaries)
     {
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
-        return;
-      std::ifstream in(directory + "/summary.txt");
-      std::string   text((std::istreambuf_iterator<char>(in)),
-                       std::istreambuf_iterator<char>());
-      if (text.find("status = failed") != std::string::npos)
-        return;
+      ConditionalOStream pcout(
+        std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+      const std::string &directory = c.parameters.output.directory;
+      // The convolution case's summary.txt (a time-loop case's is its
+      // simulator's).
+      SummaryFile summary(directory, MPI_COMM_WORLD);
       try
         {
-          SummaryWriter out;
-          out.add_text("status", "failed");
-          out.write(directory + "/summary.txt");
+          if (engine)
+            {
+              start_case_files(c, input);
+              engine->run_case(c.parameters, summary);
+              summaries[directory] = summary.entries();
+            }
+          else
+            run_time_loop(c, input, summaries[directory]);
+        }
+      catch (const RunInterrupted &)
+        {
+          throw; // a signal stops the study
         }
       catch (...)
-        {}
+        {
+          // The case failed (its summary.txt says so); the others run.
+          failures.push_back(
+            {case_name(directory), failure_text(std::current_exception())});
+          pcout << "  study case failed: " << failures.back().second << '\n';
+          if (engine)
+            {
+              // As a single run that failed: status = failed.
+              SummaryWriter failed;
+              failed.add_text("status", "failed");
+              summary.write_failed(failed);
+              summaries[directory] = summary.entries();
+            }
+        }
     }
 
     /// The group's cases: by convolution if the engine applies; a case
@@ -351,7 +247,8 @@ namespace fgimpact
               const std::vector<const ParsedCase *>            &cases,
               const InputFile                                  &input,
               const Timer                                      &study_timer,
-              std::vector<std::pair<std::string, std::string>> &failures)
+              std::vector<std::pair<std::string, std::string>> &failures,
+              std::map<std::string, SummaryEntries>            &summaries)
     {
       ConditionalOStream pcout(
         std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
@@ -381,8 +278,11 @@ namespace fgimpact
             }
         }
       if (!reason.empty())
-        pcout << "  study: " << cases.size()
-              << " case(s) through the time loop: " << reason << '\n';
+        {
+          engine.reset();
+          pcout << "  study: " << cases.size()
+                << " case(s) through the time loop: " << reason << '\n';
+        }
       for (const auto *c : cases)
         {
           throw_if_stop_signal(MPI_COMM_WORLD,
@@ -394,60 +294,26 @@ namespace fgimpact
           for (unsigned int e = 0; e < c->study_case.paths.size(); ++e)
             pcout << ' ' << c->study_case.assignment(e) << ';';
           pcout << '\n';
-          try
-            {
-              if (engine && reason.empty())
-                {
-                  start_case_files(*c, input);
-                  engine->run_case(c->parameters);
-                }
-              else
-                run_time_loop(*c, input);
-            }
-          catch (const RunInterrupted &)
-            {
-              throw; // a signal stops the study
-            }
-          catch (...)
-            {
-              // The case failed (its summary.txt says so); the others run.
-              failures.push_back({case_name(c->parameters.output.directory),
-                                  failure_text(std::current_exception())});
-              pcout << "  study case failed: " << failures.back().second
-                    << '\n';
-              ensure_failed_summary(c->parameters.output.directory);
-            }
+          run_case(*c, input, engine.get(), failures, summaries);
         }
-    }
-
-    /// "key = value" lines of a summary.txt ('#' lines skipped).
-    std::vector<std::pair<std::string, std::string>>
-    read_summary(const std::string &filename)
-    {
-      std::vector<std::pair<std::string, std::string>> entries;
-      std::ifstream                                    in(filename);
-      std::string                                      line;
-      while (std::getline(in, line))
-        {
-          const auto eq = line.find(" = ");
-          if (line.empty() || line[0] == '#' || eq == std::string::npos)
-            continue;
-          entries.emplace_back(line.substr(0, eq), line.substr(eq + 3));
-        }
-      return entries;
     }
 
     /// study.csv: case, the varied entries, every summary key (of the
     /// first case: the numbers, "none", and the words that say what was
-    /// modelled and how the case ended; no value holds a comma).
+    /// modelled and how the case ended; no value holds a comma), from the
+    /// cases' summaries in memory.
     void
-    write_study_csv(const std::vector<ParsedCase> &cases,
-                    const std::string             &filename)
+    write_study_csv(const std::vector<ParsedCase>               &cases,
+                    const std::map<std::string, SummaryEntries> &summaries,
+                    const std::string                           &filename)
     {
+      const auto entries_of = [&summaries](const ParsedCase &c) {
+        const auto found = summaries.find(c.parameters.output.directory);
+        return found == summaries.end() ? SummaryEntries() : found->second;
+      };
       std::vector<std::string> keys;
       for (const auto &c : cases)
-        for (const auto &[key, value] :
-             read_summary(c.parameters.output.directory + "/summary.txt"))
+        for (const auto &[key, value] : entries_of(c))
           if (std::find(keys.begin(), keys.end(), key) == keys.end())
             keys.push_back(key);
       std::ostringstream csv;
@@ -460,8 +326,7 @@ namespace fgimpact
       for (unsigned int i = 0; i < cases.size(); ++i)
         {
           std::map<std::string, std::string> summary;
-          for (const auto &[key, value] : read_summary(
-                 cases[i].parameters.output.directory + "/summary.txt"))
+          for (const auto &[key, value] : entries_of(cases[i]))
             summary[key] = value;
           csv << i;
           for (const auto &value : cases[i].study_case.values)
@@ -555,7 +420,8 @@ namespace fgimpact
       {
         if (only_case >= 0)
           {
-            run_time_loop(cases[only_case], input);
+            SummaryEntries summary;
+            run_time_loop(cases[only_case], input, summary);
             if (root)
               std::cout << "fgimpact: results in "
                         << cases[only_case].parameters.output.directory << '\n';
@@ -570,10 +436,13 @@ namespace fgimpact
         if (root)
           std::cout << "fgimpact: study of " << cases.size() << " cases\n";
         std::vector<std::pair<std::string, std::string>> failures;
+        std::map<std::string, SummaryEntries>            summaries;
         for (const auto &group : groups_of(cases))
-          run_group(study, group, input, study_timer, failures);
+          run_group(study, group, input, study_timer, failures, summaries);
         run_on_root(MPI_COMM_WORLD, [&]() {
-          write_study_csv(cases, base.output.directory + "/study.csv");
+          write_study_csv(cases,
+                          summaries,
+                          base.output.directory + "/study.csv");
         });
         if (root)
           std::cout << "fgimpact: study of " << cases.size() << " cases in "

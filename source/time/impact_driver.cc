@@ -85,10 +85,12 @@ namespace fgimpact
   ImpactDriver::ImpactDriver(const Parameters &parameters,
                              const Scene      &scene,
                              const PlateModel &plate,
-                             const Timer      &total_timer)
+                             const Timer      &total_timer,
+                             SummaryFile      &summary)
     : parameters(parameters)
     , plate(plate)
     , total_timer(total_timer)
+    , summary_file(summary)
     , pcout(std::cout,
             Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
     , scene(scene)
@@ -360,7 +362,8 @@ namespace fgimpact
                                               impactor.initial_velocity(),
                                               dt,
                                               n_steps,
-                                              results);
+                                              results,
+                                              summary_file);
     for (const auto &observer : observers)
       monitor->add_row_observer(observer);
     monitor->add_field_output(scene.impact_point(), impactor.radius());
@@ -412,8 +415,7 @@ namespace fgimpact
   void
   ImpactDriver::write_failed_summary(const std::string &status) const
   {
-    if (monitor || !checkpoint_settings.resume_directory.empty() ||
-        Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) != 0)
+    if (monitor || !checkpoint_settings.resume_directory.empty())
       return;
     // The time history has not started: its maxima are 0, and the ball
     // has not left (contact_duration and departure_velocity are none).
@@ -421,12 +423,12 @@ namespace fgimpact
     r.contact_duration   = std::numeric_limits<double>::quiet_NaN();
     r.departure_velocity = std::numeric_limits<double>::quiet_NaN();
     r.wall_time          = total_timer.wall_time();
-    write_impact_summary(parameters.output.directory + "/summary.txt",
-                         r,
-                         contact && contact->reports_contact_area(),
-                         parameters.output.instrumentation,
-                         status,
-                         0.);
+    summary_file.write(
+      impact_summary(r,
+                     contact && contact->reports_contact_area(),
+                     parameters.output.instrumentation,
+                     status,
+                     0.));
   }
 
 

@@ -64,7 +64,7 @@ namespace fgimpact
     void
     run();
 
-    /// Rank 0, after a failure that left no summary.txt (set-up, or a
+    /// After a failure that left no summary.txt (set-up, or a
     /// static or modal run): summary.txt with status = failed, best effort
     /// (a failure to write it is swallowed: the first failure counts).
     void
@@ -91,6 +91,13 @@ namespace fgimpact
     void
     set_checkpointing(const CheckpointSettings &settings);
 
+    /// summary.txt as last written (every rank; empty before).
+    const SummaryFile &
+    summary() const
+    {
+      return summary_file;
+    }
+
   private:
     /// Geometry/Contact refinement *: centre, radius (automatic from the
     /// scene's expected contact radius) and levels.
@@ -116,6 +123,7 @@ namespace fgimpact
     std::unique_ptr<ProblemDriver>              driver;
     std::vector<ImpactMonitor::RowObserver>     observers;
     CheckpointSettings                          checkpoint_settings;
+    mutable SummaryFile                         summary_file;
   };
 } // namespace fgimpact
 

@@ -4,6 +4,7 @@
 #include <fgimpact/app/parameters.h>
 #include <fgimpact/app/scene.h>
 #include <fgimpact/contact/contact_model.h>
+#include <fgimpact/output/output_files.h>
 #include <fgimpact/output/results.h>
 #include <fgimpact/plate/plate_model.h>
 
@@ -85,28 +86,27 @@ namespace fgimpact
   };
 
   /// The keys of an impact run's summary.txt in the file's order,
-  /// declared once: write_impact_summary() writes them, and the README's
+  /// declared once: impact_summary() writes them, and the README's
   /// table is checked against them (test readme_columns).
   const std::vector<SummaryKey> &
   impact_summary_keys();
 
   /**
-   * summary.txt of an impact run: every key of the README's table from r
-   * (scaled to the units in the names), with `status` (completed,
-   * interrupted or failed) and time_reached_us = t_end.  The monitor
-   * writes it at the end of the time loop; the driver writes it with
-   * status = failed when set-up fails before the monitor exists, so that
-   * a failed run always has the same keys.  contact_area: the resolved
-   * sphere's keys; instrumentation: spmv_ms and solve_ms.  Throws
-   * ExcOutputFailure if filename cannot be written.
+   * The contents of an impact run's summary.txt: every key of the
+   * README's table from r (scaled to the units in the names), with
+   * `status` (completed, interrupted or failed) and time_reached_us =
+   * t_end.  The monitor writes it at the end of the time loop; the driver
+   * writes it with status = failed when set-up fails before the monitor
+   * exists, so that a failed run always has the same keys (both through
+   * the run's SummaryFile).  contact_area: the resolved sphere's keys;
+   * instrumentation: spmv_ms and solve_ms.
    */
-  void
-  write_impact_summary(const std::string   &filename,
-                       const ImpactResults &r,
-                       const bool           contact_area,
-                       const bool           instrumentation,
-                       const std::string   &status,
-                       const double         t_end);
+  SummaryWriter
+  impact_summary(const ImpactResults &r,
+                 const bool           contact_area,
+                 const bool           instrumentation,
+                 const std::string   &status,
+                 const double         t_end);
 } // namespace fgimpact
 
 #endif

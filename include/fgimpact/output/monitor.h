@@ -114,7 +114,8 @@ namespace fgimpact
                   const double            impact_velocity,
                   const double            dt,
                   const unsigned int      n_steps,
-                  ImpactResults          &results);
+                  ImpactResults          &results,
+                  SummaryFile            &summary);
 
     /// Receive every history row (the CSV's columns and units, before
     /// rounding) on every rank.
@@ -226,6 +227,7 @@ namespace fgimpact
     ContactState       whole_contact;
     ConditionalOStream pcout;
     ImpactResults     &impact_results;
+    SummaryFile       &summary;
 
     PointProbe mid_probe, top_probe;
     /// The stepper's fields with the constraints distributed: every

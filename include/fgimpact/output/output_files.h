@@ -4,12 +4,17 @@
 #include <chrono>
 #include <cstdint>
 #include <fstream>
+#include <mpi.h>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace fgimpact
 {
+  /// summary.txt's (name, value) pairs in the file's order, the values as
+  /// written.
+  using SummaryEntries = std::vector<std::pair<std::string, std::string>>;
+
   /**
    * A CSV file streamed row by row, with fixed decimals per column so that
    * reference outputs compare cleanly.  Rows are collected and handed to
@@ -77,6 +82,13 @@ namespace fgimpact
     void
     write(const std::string &filename) const;
 
+    /// The (name, value) pairs in the order added, the values as written.
+    const SummaryEntries &
+    entries() const
+    {
+      return lines;
+    }
+
     /// Lines written first by every write(), as '#' comments (the run's
     /// provenance; set once by the executable, empty by default).
     static void
@@ -86,7 +98,51 @@ namespace fgimpact
     static std::string &
     preamble();
 
-    std::string text;
+    SummaryEntries lines;
+  };
+
+
+
+  /**
+   * summary.txt of one run, the one object that writes it: rank 0 writes
+   * the file (SummaryWriter: atomically), every rank keeps the entries of
+   * the last write, so that a study builds study.csv from memory instead
+   * of reading its cases' files back.
+   */
+  class SummaryFile
+  {
+  public:
+    SummaryFile(const std::string &directory, const MPI_Comm communicator);
+
+    /// Write summary.txt; throws ExcOutputFailure on rank 0 if it cannot.
+    void
+    write(const SummaryWriter &content);
+
+    /**
+     * After a failure: write `content` (its status, failed or interrupted,
+     * and what the run knows) unless a summary with that status is written
+     * already (the run's own, with its results so far).  Best effort: a
+     * failure to write is swallowed, the first failure is the one that
+     * counts.
+     */
+    void
+    write_failed(const SummaryWriter &content);
+
+    /// The entries of the last write (none before).
+    const SummaryEntries &
+    entries() const
+    {
+      return last.entries();
+    }
+
+    /// The value of `status` in the last write ("" if none).
+    std::string
+    status() const;
+
+  private:
+    const std::string filename;
+    const bool        root;
+    SummaryWriter     last;
   };
 } // namespace fgimpact
 

@@ -80,13 +80,14 @@ namespace fgimpact
     /**
      * Run one case (whose parameters differ from prepare()'s only in the
      * entries listed above) and write its history.csv and summary.txt into
-     * its Output/Directory, which must exist.  Throws ExcMessage if its
+     * its Output/Directory, which must exist (summary.txt through
+     * `summary`, which keeps its entries).  Throws ExcMessage if its
      * contact DoF is not the group's; a stop signal (SIGINT, SIGTERM, ...)
      * ends the case's files (status = interrupted) and throws
      * RunInterrupted, as does one during prepare().  Collective.
      */
     const ImpactResults &
-    run_case(const Parameters &parameters);
+    run_case(const Parameters &parameters, SummaryFile &summary);
 
     /// Receive every history row of the following cases (as
     /// ImpactMonitor::add_row_observer()).

@@ -38,7 +38,7 @@ namespace fgimpact
     virtual void
     run() = 0;
 
-    /// Rank 0, after a failure that left no summary.txt behind (in set-up,
+    /// After a failure that left no summary.txt behind (in set-up,
     /// or in run() before its own outputs): summary.txt with status =
     /// failed.  Throws ExcOutputFailure if it cannot be written.
     virtual void
@@ -61,7 +61,8 @@ namespace fgimpact
     ImpactDriver(const Parameters &parameters,
                  const Scene      &scene,
                  const PlateModel &plate,
-                 const Timer      &total_timer);
+                 const Timer      &total_timer,
+                 SummaryFile      &summary);
 
     void
     setup() override;
@@ -138,9 +139,11 @@ namespace fgimpact
     stop_on_output_failure(const unsigned int steps_done,
                            const double       loop_time);
 
-    const Parameters  &parameters;
-    const PlateModel  &plate;
-    const Timer       &total_timer;
+    const Parameters &parameters;
+    const PlateModel &plate;
+    const Timer      &total_timer;
+    /// summary.txt (the monitor writes it; a failed set-up here).
+    SummaryFile       &summary_file;
     ConditionalOStream pcout;
     const Scene       &scene;
     const Impactor    &impactor; // the scene's

@@ -1,0 +1,159 @@
+// The Study subsection and the expansion of its entries into cases (the
+// rest of a study is in study.cc).
+
+#include <deal.II/base/utilities.h>
+
+#include <fgimpact/study/study.h>
+
+#include <algorithm>
+#include <set>
+#include <sstream>
+
+namespace fgimpact
+{
+  void
+  StudyParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Study");
+    {
+      prm.declare_entry(
+        "Entries",
+        "",
+        Patterns::Anything(),
+        "The entries a parameter study varies, separated by ';', each "
+        "'Section/Entry = v1, v2, ...' (nested subsections joined by '/'), "
+        "e.g. 'Impactor/Initial velocity = 1, 2, 3, 4'. Empty: no study, "
+        "one run. Each case writes a normal output directory "
+        "Directory/case_NNN and Directory/study.csv gathers their "
+        "summaries. The command-line option --study appends to this list.");
+      prm.declare_entry("Combination",
+                        "product",
+                        Patterns::Selection("product|zip"),
+                        "product: every combination of the lists (the first "
+                        "entry varies slowest). zip: the i-th case takes the "
+                        "i-th value of every list (all lists equally long).");
+      prm.declare_entry(
+        "Method",
+        "auto",
+        Patterns::Selection("auto|time loop"),
+        "auto: cases that share the plate and differ only in the impactor, "
+        "the contact law's constants or Newton's control run as "
+        "convolutions of the plate's unit response (Hertz node contact, "
+        "implicit Newmark with beta = 1/4, gamma = 1/2, no VTU), the others "
+        "through the time loop (logged). time loop: every case through the "
+        "normal time loop.");
+      prm.declare_entry("Write VTU",
+                        "false",
+                        Patterns::Bool(),
+                        "false: the cases write no VTU (Output/VTU interval "
+                        "= 0, so that they can run by convolution); "
+                        "--study-case K reruns one case with the input's "
+                        "VTU output. true: the input's VTU interval (time "
+                        "loop).");
+    }
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  StudyParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Study");
+    entries.clear();
+    for (const auto &entry :
+         Utilities::split_string_list(prm.get("Entries"), ';'))
+      if (!entry.empty())
+        entries.push_back(entry);
+    combination = (prm.get("Combination") == "zip" ? Combination::zip :
+                                                     Combination::product);
+    method      = (prm.get("Method") == "time loop" ? Method::time_loop :
+                                                      Method::automatic);
+    write_vtu   = prm.get_bool("Write VTU");
+    prm.leave_subsection();
+    n_file_entries = entries.size();
+  }
+
+
+
+  void
+  StudyParameters::append_command_line(
+    const std::vector<std::string> &study_options)
+  {
+    entries.insert(entries.end(), study_options.begin(), study_options.end());
+  }
+
+
+
+  std::string
+  StudyParameters::origin(const std::size_t i) const
+  {
+    return i < n_file_entries ? "Study/Entries" : "--study";
+  }
+
+
+
+  std::vector<StudyCase>
+  expand_study(const StudyParameters &study)
+  {
+    std::vector<std::string>              paths;
+    std::vector<std::string>              origins;
+    std::vector<std::vector<std::string>> lists;
+    for (std::size_t i = 0; i < study.entries.size(); ++i)
+      {
+        const std::string &entry = study.entries[i];
+        const std::string  where = study.origin(i) + ": '";
+        const auto         eq    = entry.find('=');
+        AssertThrow(eq != std::string::npos && eq > 0,
+                    ExcMessage(where + entry +
+                               "' is not 'Section/Entry = v1, v2, ...'"));
+        const std::string path = Utilities::trim(entry.substr(0, eq));
+        AssertThrow(std::find(paths.begin(), paths.end(), path) == paths.end(),
+                    ExcMessage(where + path +
+                               "' is listed twice (the second list would "
+                               "replace the first); give it once."));
+        paths.push_back(path);
+        origins.push_back(study.origin(i));
+        lists.push_back(
+          Utilities::split_string_list(entry.substr(eq + 1), ','));
+        AssertThrow(!lists.back().empty() && !paths.back().empty(),
+                    ExcMessage(where + entry + "' has no values"));
+      }
+    std::vector<StudyCase> cases;
+    if (paths.empty())
+      return cases;
+    if (study.combination == StudyParameters::Combination::zip)
+      {
+        for (const auto &list : lists)
+          AssertThrow(list.size() == lists[0].size(),
+                      ExcMessage("Study/Combination = zip: the lists of "
+                                 "Study/Entries differ in length"));
+        for (std::size_t i = 0; i < lists[0].size(); ++i)
+          {
+            StudyCase c;
+            c.paths   = paths;
+            c.origins = origins;
+            for (const auto &list : lists)
+              c.values.push_back(list[i]);
+            cases.push_back(c);
+          }
+        return cases;
+      }
+    // Cartesian product, the last entry varying fastest.
+    std::vector<std::size_t> index(paths.size(), 0);
+    while (true)
+      {
+        StudyCase c;
+        c.paths   = paths;
+        c.origins = origins;
+        for (std::size_t e = 0; e < paths.size(); ++e)
+          c.values.push_back(lists[e][index[e]]);
+        cases.push_back(c);
+        std::size_t e = paths.size();
+        while (e > 0 && ++index[e - 1] == lists[e - 1].size())
+          index[--e] = 0;
+        if (e == 0)
+          return cases;
+      }
+  }
+} // namespace fgimpact
