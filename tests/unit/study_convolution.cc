@@ -127,7 +127,8 @@ namespace
         const Parameters p = parameters_of(
           case_settings(current, "engine_" + std::to_string(current)) + extra);
         std::filesystem::create_directories(p.output.directory);
-        engine.run_case(p);
+        SummaryFile summary(p.output.directory, MPI_COMM_WORLD);
+        engine.run_case(p, summary);
       }
     std::cout.rdbuf(old);
     return rows;
