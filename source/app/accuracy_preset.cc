@@ -64,8 +64,9 @@ namespace fgimpact
   void
   AccuracyPreset::Parameters::apply(ParameterHandler &prm)
   {
-    preset = prm.get("Accuracy");
-    log_message.clear();
+    preset              = prm.get("Accuracy");
+    file_subdivisions_x = file_subdivisions_y = file_subdivisions_z = 0;
+    file_time_step                                                  = 0;
     if (preset == "custom")
       return;
     const Setting &s =
@@ -109,6 +110,25 @@ namespace fgimpact
     prm.set("Time step", std::string(dt_text));
     prm.leave_subsection();
 
+    file_subdivisions_x = old_n[0];
+    file_subdivisions_y = old_n[1];
+    file_subdivisions_z = old_n[2];
+    file_time_step      = old_dt;
+  }
+
+
+
+  std::string
+  AccuracyPreset::Parameters::applied_message(const unsigned int nx,
+                                              const unsigned int ny,
+                                              const unsigned int nz) const
+  {
+    if (preset == "custom")
+      return "";
+    const Setting &s =
+      *std::find_if(settings().begin(),
+                    settings().end(),
+                    [&](const Setting &x) { return x.name == preset; });
     char line[400];
     std::snprintf(line,
                   sizeof(line),
@@ -116,15 +136,15 @@ namespace fgimpact
                   "%u, %u (%g mm in plane) and Time integration/Time step "
                   "= %g us (the file had %u, %u, %u and %g us)",
                   preset.c_str(),
-                  n[0],
-                  n[1],
-                  n[2],
+                  nx,
+                  ny,
+                  nz,
                   s.element_size * 1e3,
                   s.time_step * 1e6,
-                  old_n[0],
-                  old_n[1],
-                  old_n[2],
-                  old_dt * 1e6);
-    log_message = line;
+                  file_subdivisions_x,
+                  file_subdivisions_y,
+                  file_subdivisions_z,
+                  file_time_step * 1e6);
+    return line;
   }
 } // namespace fgimpact

@@ -286,8 +286,11 @@ namespace fgimpact
     // Machine-dependent timings: only with them.
     if (parameters.output.print_timing)
       pcout << "  " << resource_estimate.describe() << '\n';
-    if (!parameters.accuracy.log_message.empty())
-      pcout << "  " << parameters.accuracy.log_message << '\n';
+    const auto &g = parameters.geometry;
+    if (const std::string line = parameters.accuracy.applied_message(
+          g.subdivisions_x, g.subdivisions_y, g.subdivisions_z);
+        !line.empty())
+      pcout << "  " << line << '\n';
     if (!part.note.empty())
       pcout << "  " << part.note << '\n';
     warn_sampled_boundary_layer();

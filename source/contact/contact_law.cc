@@ -99,8 +99,7 @@ namespace fgimpact
     const auto        &p      = material.get_parameters();
     const Constituents phases = p.constituents();
     double             E_reuss, G_reuss, E_voigt, nu;
-    if (p.gradation == Gradation::power_law ||
-        p.gradation == Gradation::sigmoid)
+    if (material.grades_volume_fraction())
       {
         // Eq. 2.3 on the two phases with their total volume fractions
         // (power law 1/(1+n), sigmoid 1/2): Reuss (series) through the

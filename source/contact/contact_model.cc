@@ -267,14 +267,81 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// What a contact model's factory may read (create_contact_model()'s
+    /// arguments).
+    struct ContactModelInputs
+    {
+      const ContactModelParameters &parameters;
+      const HertzContactLaw        &law;
+      const PlateModel             &plate;
+      double                        sphere_radius;
+      Point<2>                      impact_point;
+      double                        expected_radius;
+      double                        reference_modulus;
+    };
+
+    using ContactModelFactory =
+      std::unique_ptr<ContactModel> (*)(const ContactModelInputs &);
+    using Model = ContactModelParameters::Model;
+
+    /// Every contact model: name, value, help, factory.  A new model is
+    /// its class and one row here (and its enum value).
+    const Registry<Model, ContactModelFactory> &
+    contact_model_registry()
+    {
+      static const Registry<Model, ContactModelFactory> registry = {
+        {"hertz node",
+         Model::hertz_node,
+         "the paper's Eq. 3.14, the modified Hertz law as a point force at "
+         "the top node nearest to the impact point (its force depends on "
+         "the element size there: it does not converge under refinement).",
+         [](const ContactModelInputs &in) -> std::unique_ptr<ContactModel> {
+           return std::make_unique<HertzNodeContact>(in.law,
+                                                     in.plate,
+                                                     in.impact_point);
+         }},
+        {"hertz midplane",
+         Model::hertz_midplane,
+         "the same law with the indentation measured from the mid-plane "
+         "vertex under the impact point (the plate theories' alpha; "
+         "converges; needs an even Subdivisions z); the force is still a "
+         "point force at the top node.",
+         [](const ContactModelInputs &in) -> std::unique_ptr<ContactModel> {
+           return std::make_unique<HertzMidplaneContact>(in.law,
+                                                         in.plate,
+                                                         in.impact_point);
+         }},
+        {"resolved sphere",
+         Model::resolved_sphere,
+         "a rigid sphere in frictionless unilateral contact with every top "
+         "node near the impact point (no contact law; converges with "
+         "Geometry/Contact refinement levels, whose default auto resolves "
+         "the contact radius; rigid ball only; implicit scheme only).",
+         [](const ContactModelInputs &in) -> std::unique_ptr<ContactModel> {
+           const ContactModelParameters &p = in.parameters;
+           return std::make_unique<ResolvedSphereContact>(
+             in.plate,
+             in.sphere_radius,
+             in.impact_point,
+             p.candidate_radius > 0. ?
+               p.candidate_radius :
+               1.5 * in.expected_radius + 2. * in.plate.smallest_cell_size(),
+             create_sphere_profile(in.sphere_radius, p.paraboloid_gap),
+             in.reference_modulus,
+             p.modified_mass);
+         }}};
+      return registry;
+    }
+  } // namespace
+
+
+
   const SelectionTable<ContactModelParameters::Model> &
   ContactModelParameters::model_names()
   {
-    static const SelectionTable<Model> names = {
-      {"hertz node", Model::hertz_node},
-      {"hertz midplane", Model::hertz_midplane},
-      {"resolved sphere", Model::resolved_sphere}};
-    return names;
+    return contact_model_registry();
   }
 
 
@@ -284,21 +351,10 @@ namespace fgimpact
   {
     prm.enter_subsection("Contact");
     {
-      prm.declare_entry(
-        "Model",
-        "hertz node",
-        model_names().pattern(),
-        "hertz node: the paper's Eq. 3.14, the modified Hertz law as a point "
-        "force at the top node nearest to the impact point (its force "
-        "depends on the element size there: it does not converge under "
-        "refinement). hertz midplane: the same law with the indentation "
-        "measured from the mid-plane vertex under the impact point (the "
-        "plate theories' alpha; converges; needs an even Subdivisions z); "
-        "the force is still a point force at the top node. resolved sphere: a rigid sphere in frictionless "
-        "unilateral contact with every top node near the impact point (no "
-        "contact law; converges with Geometry/Contact refinement levels, "
-        "whose default auto resolves the contact radius; rigid ball only; "
-        "implicit scheme only).");
+      prm.declare_entry("Model",
+                        "hertz node",
+                        model_names().pattern(),
+                        contact_model_registry().help());
       prm.declare_entry(
         "Gap shape",
         "sphere",
@@ -352,26 +408,13 @@ namespace fgimpact
                        const double                  expected_radius,
                        const double                  reference_modulus)
   {
-    switch (parameters.model)
-      {
-        case ContactModelParameters::Model::resolved_sphere:
-          return std::make_unique<ResolvedSphereContact>(
-            plate,
-            sphere_radius,
-            impact_point,
-            parameters.candidate_radius > 0. ?
-              parameters.candidate_radius :
-              1.5 * expected_radius + 2. * plate.smallest_cell_size(),
-            create_sphere_profile(sphere_radius, parameters.paraboloid_gap),
-            reference_modulus,
-            parameters.modified_mass);
-        case ContactModelParameters::Model::hertz_midplane:
-          return std::make_unique<HertzMidplaneContact>(law,
-                                                        plate,
-                                                        impact_point);
-        case ContactModelParameters::Model::hertz_node:
-          break;
-      }
-    return std::make_unique<HertzNodeContact>(law, plate, impact_point);
+    return contact_model_registry().factory(parameters.model)(
+      {parameters,
+       law,
+       plate,
+       sphere_radius,
+       impact_point,
+       expected_radius,
+       reference_modulus});
   }
 } // namespace fgimpact

@@ -12,19 +12,6 @@ namespace fgimpact
 {
   using dealii::ExcMessage;
 
-  const SelectionTable<Gradation> &
-  gradation_names()
-  {
-    static const SelectionTable<Gradation> names = {
-      {"power law", Gradation::power_law},
-      {"exponential", Gradation::exponential},
-      {"sigmoid", Gradation::sigmoid},
-      {"tabulated", Gradation::tabulated}};
-    return names;
-  }
-
-
-
   const SelectionTable<Homogenization> &
   homogenization_names()
   {
@@ -113,6 +100,13 @@ namespace fgimpact
                constituents.metal.nu == constituents.ceramic.nu;
       }
 
+      double
+      total_metal_volume_fraction() const override
+      {
+        // The sigmoid law is antisymmetric about the mid-plane: half metal.
+        return sigmoid ? 0.5 : 1. / (1. + index);
+      }
+
     private:
       const Constituents   constituents;
       const Homogenization homogenization;
@@ -178,6 +172,80 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// What a gradation law's factory may read.
+    struct GradationInputs
+    {
+      Homogenization     homogenization;
+      const Constituents constituents;
+      double             index;
+      std::string        profile_file;
+    };
+
+    using GradationFactory =
+      std::unique_ptr<GradationLaw> (*)(const GradationInputs &);
+
+    /// Every gradation law: name, value, help, factory.  A new law is its
+    /// class above and one row here (and its enum value).
+    const Registry<Gradation, GradationFactory> &
+    gradation_registry()
+    {
+      static const Registry<Gradation, GradationFactory> registry = {
+        {"power law",
+         Gradation::power_law,
+         "metal volume fraction V_m = zeta^n (Eq. 2.1).",
+         [](const GradationInputs &in) -> std::unique_ptr<GradationLaw> {
+           return std::make_unique<VolumeFractionLaw>(in.constituents,
+                                                      in.homogenization,
+                                                      in.index,
+                                                      false);
+         }},
+        {"exponential",
+         Gradation::exponential,
+         "P = P_c exp(ln(P_m/P_c) zeta) for E and rho, nu = nu_c + (nu_m - "
+         "nu_c) zeta (Power-law index unused).",
+         [](const GradationInputs &in) -> std::unique_ptr<GradationLaw> {
+           return std::make_unique<ExponentialLaw>(in.constituents);
+         }},
+        {"sigmoid",
+         Gradation::sigmoid,
+         "Chung & Chi's two power laws, V_m = (2 zeta)^n / 2 for zeta <= "
+         "1/2, 1 - (2 - 2 zeta)^n / 2 above (n = Power-law index).",
+         [](const GradationInputs &in) -> std::unique_ptr<GradationLaw> {
+           return std::make_unique<VolumeFractionLaw>(in.constituents,
+                                                      in.homogenization,
+                                                      in.index,
+                                                      true);
+         }},
+        {"tabulated",
+         Gradation::tabulated,
+         "E, nu, rho interpolated linearly in Profile file.",
+         [](const GradationInputs &in) -> std::unique_ptr<GradationLaw> {
+           return std::make_unique<TabulatedLaw>(in.profile_file);
+         }}};
+      return registry;
+    }
+  } // namespace
+
+
+
+  const SelectionTable<Gradation> &
+  gradation_names()
+  {
+    return gradation_registry();
+  }
+
+
+
+  std::string
+  gradation_help()
+  {
+    return gradation_registry().help();
+  }
+
+
+
   std::unique_ptr<GradationLaw>
   create_gradation_law(const Gradation      gradation,
                        const Homogenization homogenization,
@@ -185,27 +253,15 @@ namespace fgimpact
                        const double         index,
                        const std::string   &profile_file)
   {
-    const bool by_fraction =
-      gradation == Gradation::power_law || gradation == Gradation::sigmoid;
-    AssertThrow(by_fraction ||
+    auto law = gradation_registry().factory(gradation)(
+      {homogenization, constituents, index, profile_file});
+    AssertThrow(std::isfinite(law->total_metal_volume_fraction()) ||
                   homogenization == Homogenization::rule_of_mixtures,
                 ExcMessage("Material/Homogenization = Mori-Tanaka needs a "
                            "volume fraction: Material/Gradation = power law "
                            "or sigmoid (exponential and tabulated give the "
                            "properties themselves)."));
-    switch (gradation)
-      {
-        case Gradation::exponential:
-          return std::make_unique<ExponentialLaw>(constituents);
-        case Gradation::tabulated:
-          return std::make_unique<TabulatedLaw>(profile_file);
-        default:
-          return std::make_unique<VolumeFractionLaw>(constituents,
-                                                     homogenization,
-                                                     index,
-                                                     gradation ==
-                                                       Gradation::sigmoid);
-      }
+    return law;
   }
 
 

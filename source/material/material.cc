@@ -46,12 +46,8 @@ namespace fgimpact
         "power law",
         gradation_names().pattern(),
         "How the properties vary with zeta = z/h (z from the bottom face; "
-        "metal on top). power law: metal volume fraction V_m = zeta^n "
-        "(Eq. 2.1). exponential: P = P_c exp(ln(P_m/P_c) zeta) for E and "
-        "rho, nu = nu_c + (nu_m - nu_c) zeta (Power-law index unused). "
-        "sigmoid: Chung & Chi's two power laws, V_m = (2 zeta)^n / 2 for "
-        "zeta <= 1/2, 1 - (2 - 2 zeta)^n / 2 above (n = Power-law index). "
-        "tabulated: E, nu, rho interpolated linearly in Profile file.");
+        "metal on top). " +
+          gradation_help());
       prm.declare_entry(
         "Homogenization",
         "rule of mixtures",
@@ -301,10 +297,7 @@ namespace fgimpact
   double
   FunctionallyGradedMaterial::total_metal_volume_fraction() const
   {
-    // The sigmoid law is antisymmetric about the mid-plane: half metal.
-    return parameters.gradation == Gradation::sigmoid ?
-             0.5 :
-             1. / (1. + parameters.power_law_index);
+    return law->total_metal_volume_fraction();
   }
 
 } // namespace fgimpact

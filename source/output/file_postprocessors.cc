@@ -47,12 +47,115 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    std::vector<std::pair<std::string, int>>
+    header_of(const std::vector<HistoryColumn> &columns)
+    {
+      std::vector<std::pair<std::string, int>> header;
+      for (const auto &column : columns)
+        header.emplace_back(column.name, column.decimals);
+      return header;
+    }
+  } // namespace
+
+
+
+  CsvPostprocessor::CsvPostprocessor(
+    const std::string                              &filename,
+    const std::vector<std::pair<std::string, int>> &columns,
+    const bool                                      root)
+    : filename(filename)
+    , columns(columns)
+    , root(root)
+  {}
+
+
+
+  void
+  CsvPostprocessor::start()
+  {
+    if (!root)
+      return;
+    try
+      {
+        csv = std::make_unique<CsvWriter>(filename, columns, resume_length);
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+      }
+  }
+
+
+
+  void
+  CsvPostprocessor::write_row(const std::vector<double> &row)
+  {
+    try
+      {
+        if (csv)
+          csv->write_row(row);
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+        csv.reset();
+      }
+  }
+
+
+
+  void
+  CsvPostprocessor::save(CheckpointWriter &out, const unsigned int)
+  {
+    std::uintmax_t length = 0;
+    try
+      {
+        if (csv)
+          length = csv->length();
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+        csv.reset();
+      }
+    out.put<std::uint64_t>(length);
+  }
+
+
+
+  void
+  CsvPostprocessor::load(CheckpointReader &in)
+  {
+    std::uint64_t length = 0;
+    in.get(length);
+    resume_length = length;
+  }
+
+
+
+  void
+  CsvPostprocessor::close_output()
+  {
+    try
+      {
+        if (csv)
+          csv->flush();
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+      }
+  }
+
+
+
   HistoryWriter::HistoryWriter(const std::string                &directory,
                                const std::vector<HistoryColumn> &columns,
                                const bool                        root)
-    : directory(directory)
+    : CsvPostprocessor(directory + "/history.csv", header_of(columns), root)
     , columns(columns)
-    , root(root)
   {}
 
 
@@ -66,124 +169,27 @@ namespace fgimpact
 
 
   void
-  HistoryWriter::start()
-  {
-    if (!root)
-      return;
-    try
-      {
-        std::vector<std::pair<std::string, int>> header;
-        for (const auto &column : columns)
-          header.emplace_back(column.name, column.decimals);
-        csv = std::make_unique<CsvWriter>(directory + "/history.csv",
-                                          header,
-                                          resume_length);
-      }
-    catch (const ExceptionBase &e)
-      {
-        keep_failure(e);
-      }
-  }
-
-
-
-  void
   HistoryWriter::execute(const StepRecord &record)
   {
     std::vector<double> row;
     row.reserve(columns.size());
     for (const auto &column : columns)
       row.push_back(column.value(*record.sample));
-    try
-      {
-        if (csv)
-          csv->write_row(row);
-      }
-    catch (const ExceptionBase &e)
-      {
-        keep_failure(e);
-        csv.reset();
-      }
+    write_row(row);
     for (const auto &observer : observers)
       observer(row);
   }
 
 
 
-  void
-  HistoryWriter::save(CheckpointWriter &out, const unsigned int)
-  {
-    std::uintmax_t length = 0;
-    try
-      {
-        if (csv)
-          length = csv->length();
-      }
-    catch (const ExceptionBase &e)
-      {
-        keep_failure(e);
-        csv.reset();
-      }
-    out.put<std::uint64_t>(length);
-  }
-
-
-
-  void
-  HistoryWriter::load(CheckpointReader &in)
-  {
-    std::uint64_t length = 0;
-    in.get(length);
-    resume_length = length;
-  }
-
-
-
-  void
-  HistoryWriter::close_output()
-  {
-    try
-      {
-        if (csv)
-          csv->flush();
-      }
-    catch (const ExceptionBase &e)
-      {
-        keep_failure(e);
-      }
-  }
-
-
-
-  ProbeWriter::ProbeWriter(const PlateModel              &plate,
-                           const std::vector<ProbePoint> &points,
-                           const std::string             &directory,
-                           const double                   whole,
-                           const bool                     root)
-    : probes(plate, points)
-    , directory(directory)
+  ProbeWriter::ProbeWriter(std::unique_ptr<const ProbeSet> probe_set,
+                           const std::string              &directory,
+                           const double                    whole,
+                           const bool                      root)
+    : CsvPostprocessor(directory + "/probes.csv", probe_set->columns(), root)
+    , probes(std::move(probe_set))
     , whole(whole)
-    , root(root)
   {}
-
-
-
-  void
-  ProbeWriter::start()
-  {
-    if (!root)
-      return;
-    try
-      {
-        csv = std::make_unique<CsvWriter>(directory + "/probes.csv",
-                                          probes.columns(),
-                                          resume_length);
-      }
-    catch (const ExceptionBase &e)
-      {
-        keep_failure(e);
-      }
-  }
 
 
 
@@ -195,67 +201,12 @@ namespace fgimpact
     if (!record.fields)
       return;
     const PlateFields &f      = *record.fields;
-    ProbeValues        values = probes.evaluate(f.displacement(),
-                                         f.velocity(),
-                                         f.acceleration(),
-                                         f.lumped_mass());
+    ProbeValues        values = probes->evaluate(f.displacement(),
+                                          f.velocity(),
+                                          f.acceleration(),
+                                          f.lumped_mass());
     values.support_reaction_z *= whole; // a part's supports: scaled up
-    try
-      {
-        if (csv)
-          csv->write_row(probes.row(record.t, values));
-      }
-    catch (const ExceptionBase &e)
-      {
-        keep_failure(e);
-        csv.reset();
-      }
-  }
-
-
-
-  void
-  ProbeWriter::save(CheckpointWriter &out, const unsigned int)
-  {
-    // probes.csv continues from here on resume, as history.csv does.
-    std::uintmax_t length = 0;
-    try
-      {
-        if (csv)
-          length = csv->length();
-      }
-    catch (const ExceptionBase &e)
-      {
-        keep_failure(e);
-        csv.reset();
-      }
-    out.put<std::uint64_t>(length);
-  }
-
-
-
-  void
-  ProbeWriter::load(CheckpointReader &in)
-  {
-    std::uint64_t length = 0;
-    in.get(length);
-    resume_length = length;
-  }
-
-
-
-  void
-  ProbeWriter::close_output()
-  {
-    try
-      {
-        if (csv)
-          csv->flush();
-      }
-    catch (const ExceptionBase &e)
-      {
-        keep_failure(e);
-      }
+    write_row(probes->row(record.t, values));
   }
 
 

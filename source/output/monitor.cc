@@ -51,11 +51,11 @@ namespace fgimpact
     history             = history_writer.get();
     add(std::move(history_writer));
     if (!parameters.probe_points.points.empty())
-      add(std::make_unique<ProbeWriter>(plate,
-                                        parameters.probe_points.points,
-                                        parameters.directory,
-                                        whole,
-                                        pcout.is_active()));
+      add(std::make_unique<ProbeWriter>(
+        std::make_unique<ProbeSet>(plate, parameters.probe_points.points),
+        parameters.directory,
+        whole,
+        pcout.is_active()));
   }
 
 

@@ -15,14 +15,27 @@
 
 namespace fgimpact
 {
-  const SelectionTable<TimeStepper::Scheme> &
-  TimeStepper::scheme_names()
+  namespace
   {
-    static const SelectionTable<Scheme> names = {
-      {"implicit", Scheme::implicit_newmark},
-      {"explicit", Scheme::central_difference}};
-    return names;
-  }
+    /// What a scheme's factory may read (create_time_stepper()'s
+    /// arguments).
+    struct TimeStepperInputs
+    {
+      const TimeStepper::Parameters           &parameters;
+      const EffectiveMatrixSolver::Parameters &solver;
+      const PlateModel                        &plate;
+      const ContactModel                      &contact;
+      double                                   impactor_mass;
+      double                                   impact_velocity;
+    };
+
+    using TimeStepperFactory =
+      std::unique_ptr<TimeStepper> (*)(const TimeStepperInputs &);
+    using Scheme = TimeStepper::Scheme;
+
+    const Registry<Scheme, TimeStepperFactory> &
+    scheme_registry();
+  } // namespace
 
 
 
@@ -31,15 +44,10 @@ namespace fgimpact
   {
     prm.enter_subsection("Time integration");
     {
-      prm.declare_entry(
-        "Scheme",
-        "implicit",
-        scheme_names().pattern(),
-        "implicit: Newmark with 'Newmark beta/gamma' and a Newton iteration "
-        "on the contact (block-eliminated: one linear solve per step). "
-        "explicit: central difference (beta = 0, gamma = 1/2) with a "
-        "row-sum lumped mass; one matrix-vector product per step, time step "
-        "limited by stability.");
+      prm.declare_entry("Scheme",
+                        "implicit",
+                        scheme_names().pattern(),
+                        scheme_registry().help());
       prm.declare_entry(
         "Stable step safety factor",
         "0.9",
@@ -470,6 +478,52 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// Every time scheme: name, value, help, factory.  A new scheme is its
+    /// class and one row here (and its enum value).
+    const Registry<Scheme, TimeStepperFactory> &
+    scheme_registry()
+    {
+      static const Registry<Scheme, TimeStepperFactory> registry = {
+        {"implicit",
+         Scheme::implicit_newmark,
+         "Newmark with 'Newmark beta/gamma' and a Newton iteration on the "
+         "contact (block-eliminated: one linear solve per step).",
+         [](const TimeStepperInputs &in) -> std::unique_ptr<TimeStepper> {
+           return std::make_unique<ImplicitNewmarkStepper>(
+             in.parameters,
+             in.solver,
+             in.plate,
+             in.contact.contact_dofs(),
+             in.contact.massless_dofs());
+         }},
+        {"explicit",
+         Scheme::central_difference,
+         "central difference (beta = 0, gamma = 1/2) with a row-sum lumped "
+         "mass; one matrix-vector product per step, time step limited by "
+         "stability.",
+         [](const TimeStepperInputs &in) -> std::unique_ptr<TimeStepper> {
+           return create_central_difference_stepper(
+             in.parameters,
+             in.plate,
+             in.contact.contact_dofs(),
+             in.contact.stiffness_bound(in.impactor_mass, in.impact_velocity));
+         }}};
+      return registry;
+    }
+  } // namespace
+
+
+
+  const SelectionTable<TimeStepper::Scheme> &
+  TimeStepper::scheme_names()
+  {
+    return scheme_registry();
+  }
+
+
+
   std::unique_ptr<TimeStepper>
   create_time_stepper(const TimeStepper::Parameters           &parameters,
                       const EffectiveMatrixSolver::Parameters &solver,
@@ -478,21 +532,7 @@ namespace fgimpact
                       const double                             impactor_mass,
                       const double                             impact_velocity)
   {
-    switch (parameters.scheme)
-      {
-        case TimeStepper::Scheme::central_difference:
-          return create_central_difference_stepper(
-            parameters,
-            plate,
-            contact.contact_dofs(),
-            contact.stiffness_bound(impactor_mass, impact_velocity));
-        case TimeStepper::Scheme::implicit_newmark:
-          break;
-      }
-    return std::make_unique<ImplicitNewmarkStepper>(parameters,
-                                                    solver,
-                                                    plate,
-                                                    contact.contact_dofs(),
-                                                    contact.massless_dofs());
+    return scheme_registry().factory(parameters.scheme)(
+      {parameters, solver, plate, contact, impactor_mass, impact_velocity});
   }
 } // namespace fgimpact

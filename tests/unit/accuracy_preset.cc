@@ -51,7 +51,9 @@ namespace
                 p.time_integration.time_step,
                 "",
                 "",
-                p.accuracy.log_message};
+                p.accuracy.applied_message(p.geometry.subdivisions_x,
+                                           p.geometry.subdivisions_y,
+                                           p.geometry.subdivisions_z)};
     prm.enter_subsection("Geometry");
     e.prm_nx = prm.get("Subdivisions x");
     prm.leave_subsection();

@@ -45,9 +45,19 @@ namespace fgimpact
     struct Parameters
     {
       std::string preset = "custom";
-      /// One line saying what the preset set (empty for custom); printed
-      /// by Simulator::setup().
-      std::string log_message;
+      /// What the file had before a preset other than custom overwrote
+      /// it: Geometry/Subdivisions x, y, z and Time integration/Time step
+      /// (s); 0 for custom.
+      unsigned int file_subdivisions_x = 0, file_subdivisions_y = 0,
+                   file_subdivisions_z = 0;
+      double file_time_step            = 0;
+
+      /// One line saying what the preset set, given the subdivisions it
+      /// set (empty for custom); printed by Simulator::setup().
+      std::string
+      applied_message(const unsigned int nx,
+                      const unsigned int ny,
+                      const unsigned int nz) const;
 
       static void
       declare_parameters(ParameterHandler &prm);

@@ -3,6 +3,7 @@
 
 #include <fgimpact/base/selection.h>
 
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -46,6 +47,9 @@ namespace fgimpact
   /// The names of Material/Gradation and Material/Homogenization.
   const SelectionTable<Gradation> &
   gradation_names();
+  /// "name: help ..." of every gradation law (Material/Gradation's help).
+  std::string
+  gradation_help();
   const SelectionTable<Homogenization> &
   homogenization_names();
 
@@ -111,9 +115,20 @@ namespace fgimpact
     /// it exactly, without interpolation).
     virtual bool
     constant_poissons_ratio() const = 0;
+
+    /// The metal's volume fraction over the whole thickness for a law
+    /// that grades a volume fraction (power law, sigmoid); NaN for a law
+    /// that gives the properties themselves (exponential, tabulated).
+    virtual double
+    total_metal_volume_fraction() const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
   };
 
-  /// The factory: `profile` is read only for Gradation::tabulated.
+  /// The factory (the registry in gradation.cc): `profile` is read only
+  /// for Gradation::tabulated.  Throws if Mori-Tanaka is asked of a law
+  /// without a volume fraction.
   std::unique_ptr<GradationLaw>
   create_gradation_law(const Gradation      gradation,
                        const Homogenization homogenization,

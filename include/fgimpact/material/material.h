@@ -5,6 +5,7 @@
 
 #include <fgimpact/material/gradation.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -130,10 +131,18 @@ namespace fgimpact
     constant_poissons_ratio() const;
 
     /// Power law: total metal volume fraction of the whole thickness,
-    /// Eq. 2.2: V_m = 1/(1+n); sigmoid: 1/2.  (Not defined for the
-    /// exponential and tabulated profiles, which have no phases.)
+    /// Eq. 2.2: V_m = 1/(1+n); sigmoid: 1/2.  NaN for the exponential and
+    /// tabulated profiles, which have no phases (the gradation law says).
     double
     total_metal_volume_fraction() const;
+
+    /// Whether the gradation grades a metal volume fraction (power law,
+    /// sigmoid), so that the two phases' properties apply.
+    bool
+    grades_volume_fraction() const
+    {
+      return std::isfinite(total_metal_volume_fraction());
+    }
 
     const Parameters &
     get_parameters() const

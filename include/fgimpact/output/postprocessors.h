@@ -105,11 +105,54 @@ namespace fgimpact
 
 
   /**
-   * history.csv, streamed (nothing kept in memory; observers may
-   * subscribe to the rows, before rounding, on every rank).  Rank 0
-   * writes.
+   * A CSV file that grows by one row per step (CsvWriter: rank 0 writes,
+   * rows handed to the disk whole), continued from its checkpointed
+   * length on resume.  Its checkpoint section is the file's length
+   * (flushed).  A failed write drops the file and is kept in
+   * output_failure().
    */
-  class HistoryWriter : public Postprocessor
+  class CsvPostprocessor : public Postprocessor
+  {
+  public:
+    /// filename: in the output directory; columns: name and decimals.
+    CsvPostprocessor(const std::string                              &filename,
+                     const std::vector<std::pair<std::string, int>> &columns,
+                     const bool                                      root);
+
+    std::string
+    name() const override
+    {
+      return filename.substr(filename.find_last_of('/') + 1);
+    }
+    void
+    start() override;
+    void
+    save(CheckpointWriter &out, const unsigned int step) override;
+    void
+    load(CheckpointReader &in) override;
+    void
+    close_output() override;
+
+  protected:
+    /// Rank 0 writes it (a no-op elsewhere, or after a failure).
+    void
+    write_row(const std::vector<double> &row);
+
+  private:
+    const std::string                              filename;
+    const std::vector<std::pair<std::string, int>> columns;
+    const bool                                     root;
+    std::unique_ptr<CsvWriter>                     csv;
+    std::uintmax_t                                 resume_length = 0;
+  };
+
+
+
+  /**
+   * history.csv, streamed (nothing kept in memory; observers may
+   * subscribe to the rows, before rounding, on every rank).
+   */
+  class HistoryWriter : public CsvPostprocessor
   {
   public:
     using RowObserver = std::function<void(const std::vector<double> &)>;
@@ -121,30 +164,12 @@ namespace fgimpact
     void
     add_observer(const RowObserver &observer);
 
-    std::string
-    name() const override
-    {
-      return "history.csv";
-    }
-    void
-    start() override;
     void
     execute(const StepRecord &record) override;
-    /// The file's length (flushed) for a resumed run to continue from.
-    void
-    save(CheckpointWriter &out, const unsigned int step) override;
-    void
-    load(CheckpointReader &in) override;
-    void
-    close_output() override;
 
   private:
-    const std::string                directory;
     const std::vector<HistoryColumn> columns;
-    const bool                       root;
-    std::unique_ptr<CsvWriter>       csv;
     std::vector<RowObserver>         observers;
-    std::uintmax_t                   resume_length = 0;
   };
 
 
@@ -154,44 +179,26 @@ namespace fgimpact
    * at every step that has fields.  Every rank evaluates (collective);
    * rank 0 writes.
    */
-  class ProbeWriter : public Postprocessor
+  class ProbeWriter : public CsvPostprocessor
   {
   public:
     /// whole: 1 / the part's share (the supports' reaction is scaled up).
-    ProbeWriter(const PlateModel              &plate,
-                const std::vector<ProbePoint> &points,
-                const std::string             &directory,
-                const double                   whole,
-                const bool                     root);
+    ProbeWriter(std::unique_ptr<const ProbeSet> probes,
+                const std::string              &directory,
+                const double                    whole,
+                const bool                      root);
 
-    std::string
-    name() const override
-    {
-      return "probes.csv";
-    }
     bool
     needs_rates(const unsigned int) const override
     {
       return true;
     }
     void
-    start() override;
-    void
     execute(const StepRecord &record) override;
-    void
-    save(CheckpointWriter &out, const unsigned int step) override;
-    void
-    load(CheckpointReader &in) override;
-    void
-    close_output() override;
 
   private:
-    const ProbeSet             probes;
-    const std::string          directory;
-    const double               whole;
-    const bool                 root;
-    std::unique_ptr<CsvWriter> csv;
-    std::uintmax_t             resume_length = 0;
+    const std::unique_ptr<const ProbeSet> probes;
+    const double                          whole;
   };
 
 
