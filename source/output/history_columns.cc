@@ -1,5 +1,6 @@
 // The history.csv columns: name, decimals and value in one list each
-// (declared in monitor.h), apart from the monitor that writes them; and
+// (declared in postprocessor.h), apart from the postprocessor that writes
+// them (HistoryWriter); and
 // the probes whose values they show.
 
 #include <fgimpact/output/monitor.h>
