@@ -370,7 +370,7 @@ namespace fgimpact
     // Rank 0 writes, every rank learns the outcome before the collective
     // VTU output (a failure on rank 0 alone must not leave rank 1 waiting).
     run_on_root(plate.get_mpi_communicator(), [&]() {
-      std::string   csv = "mode, frequency_Hz, w_energy_fraction\n";
+      std::string   csv = "mode,frequency_Hz,w_energy_fraction\n";
       SummaryWriter summary;
       summary.add_text("status", "completed");
       char line[200];
@@ -378,7 +378,7 @@ namespace fgimpact
         {
           std::snprintf(line,
                         sizeof(line),
-                        "%u, %.4f, %.6f\n",
+                        "%u,%.4f,%.6f\n",
                         j + 1,
                         modes[j].frequency,
                         modes[j].w_fraction);

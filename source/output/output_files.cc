@@ -46,7 +46,7 @@ namespace fgimpact
     out.open(filename, std::ios::binary);
     AssertThrow(out, ExcOutputFailure("cannot write " + filename + "."));
     for (unsigned int i = 0; i < columns.size(); ++i)
-      buffer += (i ? ", " : "") + columns[i].first;
+      buffer += (i ? "," : "") + columns[i].first;
     buffer += '\n';
     flush();
   }
@@ -87,7 +87,7 @@ namespace fgimpact
         const double v = (std::abs(values[i]) * scale < 0.5) ? 0. : values[i];
         std::snprintf(buffer_row, sizeof(buffer_row), "%.*f", decimals[i], v);
         if (i > 0)
-          buffer += ", ";
+          buffer += ',';
         buffer += buffer_row;
       }
     buffer += '\n';

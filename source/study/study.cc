@@ -319,9 +319,9 @@ namespace fgimpact
       std::ostringstream csv;
       csv << "case";
       for (const auto &path : cases[0].study_case.paths)
-        csv << ", " << path;
+        csv << ',' << path;
       for (const auto &key : keys)
-        csv << ", " << key;
+        csv << ',' << key;
       csv << '\n';
       for (unsigned int i = 0; i < cases.size(); ++i)
         {
@@ -330,9 +330,9 @@ namespace fgimpact
             summary[key] = value;
           csv << i;
           for (const auto &value : cases[i].study_case.values)
-            csv << ", " << value;
+            csv << ',' << value;
           for (const auto &key : keys)
-            csv << ", " << (summary.count(key) ? summary[key] : "none");
+            csv << ',' << (summary.count(key) ? summary[key] : "none");
           csv << '\n';
         }
       write_file_atomically(filename, csv.str());
