@@ -247,8 +247,8 @@ main()
       code == 2 && n_lines(err) == 1 && contains(err, "case_001") &&
         contains(read("cli_fail/case_000/summary.txt"), "status = completed") &&
         contains(read("cli_fail/case_001/summary.txt"), "status = failed") &&
-        n_lines(csv) == 3 && contains(csv, ", completed") &&
-        contains(csv, ", failed"));
+        n_lines(csv) == 3 && contains(csv, ",completed") &&
+        contains(csv, ",failed"));
   }
   {
     const int         code = run("cli_fail.prm --study 'Impactor/Initial "
@@ -480,7 +480,7 @@ main()
     check("named probes: probes.csv has t_us, support_reaction_z_N, the "
           "named columns and a row per history row",
           code == 0 &&
-            contains(probes, "t_us, support_reaction_z_N, corner_ux_um") &&
+            contains(probes, "t_us,support_reaction_z_N,corner_ux_um") &&
             contains(probes, "q_sigma_yz_MPa\n") &&
             n_lines(probes) == n_lines(history("cli_probes")));
     const int         outside = run("cli_probes.prm -s 'Output/Probe "
