@@ -60,10 +60,11 @@ namespace fgimpact
 
 
   void
-  ContactVtuWriter::write(const unsigned int  step,
-                          const double        t,
-                          const double        w,
-                          const ContactState &state)
+  ContactVtuWriter::write(const unsigned int         step,
+                          const double               t,
+                          const double               w,
+                          const ContactState        &state,
+                          const std::vector<double> &node_uz)
   {
     char name[64];
     std::snprintf(name, sizeof(name), "sphere_%05u.vtu", step);
@@ -72,7 +73,7 @@ namespace fgimpact
     if (!contact.contact_points().empty())
       {
         std::snprintf(name, sizeof(name), "contact_%05u.vtu", step);
-        write_nodes(directory + "/" + name, state);
+        write_nodes(directory + "/" + name, state, node_uz);
         contacts.emplace_back(t, name);
       }
   }
@@ -85,11 +86,13 @@ namespace fgimpact
                                  const double       F) const
   {
     // A latitude-longitude triangulation: 24 rings of 48 points and the
-    // two poles.
+    // two poles, at the reference position (touching the undeformed top
+    // face at the impact point); the point field displacement_m moves it
+    // by w, as WarpByVector moves the plate.
     const unsigned int    n_rings = 24, n_around = 48;
     const Point<3>        centre(impact_point[0],
                           impact_point[1],
-                          impact_point[2] + R - w);
+                          impact_point[2] + R);
     std::vector<Point<3>> points{centre + Point<3>(0, 0, -R)};
     for (unsigned int i = 1; i < n_rings; ++i)
       for (unsigned int j = 0; j < n_around; ++j)
@@ -135,7 +138,12 @@ namespace fgimpact
            "format=\"ascii\">\n";
     for (unsigned int k = 0; k < triangles.size(); ++k)
       out << "5\n";
-    out << "</DataArray>\n</Cells>\n<CellData>\n"
+    out << "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement_m\">\n"
+        << "<DataArray type=\"Float64\" Name=\"displacement_m\" "
+           "NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (unsigned int k = 0; k < points.size(); ++k)
+      out << "0 0 " << -w << '\n';
+    out << "</DataArray>\n</PointData>\n<CellData>\n"
         << "<DataArray type=\"Float64\" Name=\"contact_force_N\" "
            "format=\"ascii\">\n";
     for (unsigned int k = 0; k < triangles.size(); ++k)
@@ -152,8 +160,9 @@ namespace fgimpact
 
 
   void
-  ContactVtuWriter::write_nodes(const std::string  &file,
-                                const ContactState &state) const
+  ContactVtuWriter::write_nodes(const std::string         &file,
+                                const ContactState        &state,
+                                const std::vector<double> &node_uz) const
   {
     // Read each time: the candidate set may have grown.
     const std::vector<Point<3>> nodes = contact.contact_points();
@@ -173,7 +182,7 @@ namespace fgimpact
            "format=\"ascii\">\n";
     for (unsigned int k = 0; k < nodes.size(); ++k)
       out << "1\n";
-    out << "</DataArray>\n</Cells>\n<PointData>\n"
+    out << "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement_m\">\n"
         << "<DataArray type=\"Float64\" Name=\"contact_pressure_MPa\" "
            "format=\"ascii\">\n";
     // (No forces yet at t = 0.)
@@ -186,6 +195,13 @@ namespace fgimpact
            "Name=\"nodal_force_N\" format=\"ascii\">\n";
     for (unsigned int k = 0; k < nodes.size(); ++k)
       out << force(k) << '\n';
+    // The nodes' z displacement (their in-plane displacement is not
+    // known here: it is in the plate's field).
+    out << "</DataArray>\n<DataArray type=\"Float64\" "
+           "Name=\"displacement_m\" NumberOfComponents=\"3\" "
+           "format=\"ascii\">\n";
+    for (unsigned int k = 0; k < nodes.size(); ++k)
+      out << "0 0 " << (k < node_uz.size() ? node_uz[k] : 0.) << '\n';
     out << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"
            "</VTKFile>\n";
     write_file_atomically(file, out.str());

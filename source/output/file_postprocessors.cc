@@ -218,6 +218,7 @@ namespace fgimpact
                            const double            radius)
     : interval(parameters.vtu_interval)
     , communicator(plate.get_mpi_communicator())
+    , contact(contact)
     , vtu(std::make_unique<VtuWriter>(plate,
                                       parameters.directory,
                                       parameters.vtu_compression,
@@ -253,6 +254,10 @@ namespace fgimpact
       return;
     const PlateFields &f = *record.fields;
     timer.start();
+    // Collective: before the rank-0-only writer.
+    const std::vector<double> node_uz = contact.contact_points().empty() ?
+                                          std::vector<double>() :
+                                          contact_node_uz(f.displacement());
     try
       {
         vtu->write(record.step,
@@ -265,7 +270,8 @@ namespace fgimpact
           contact_vtu->write(record.step,
                              record.t,
                              record.sample->ball->w,
-                             *record.sample->contact);
+                             *record.sample->contact,
+                             node_uz);
       }
     catch (const ExceptionBase &e)
       {
@@ -274,6 +280,23 @@ namespace fgimpact
         contact_vtu.reset();
       }
     timer.stop();
+  }
+
+
+
+  std::vector<double>
+  FieldWriter::contact_node_uz(const TrilinosWrappers::MPI::Vector &u) const
+  {
+    // Each DoF's value from the rank that owns it, summed over the ranks.
+    const auto         &dofs = contact.contact_dofs();
+    std::vector<double> local(dofs.size(), 0.), global(dofs.size(), 0.);
+    for (unsigned int k = 0; k < dofs.size(); ++k)
+      if (u.locally_owned_elements().is_element(dofs[k]))
+        local[k] = u(dofs[k]);
+    Utilities::MPI::sum(ArrayView<const double>(local),
+                        communicator,
+                        ArrayView<double>(global));
+    return global;
   }
 
 

@@ -15,11 +15,15 @@ namespace fgimpact
 
   /**
    * The ball and the contact for ParaView, beside the plate's VTU series:
-   * at every VTU step a triangulated sphere surface at the ball's position
-   * (sphere_NNNNN.vtu, with the contact force and the ball's displacement
-   * as field data) and, for a contact model with several contact nodes,
-   * those nodes as points with their force and nodal pressure
-   * (contact_NNNNN.vtu); each series has its PVD file (sphere.pvd,
+   * at every VTU step a triangulated sphere surface (sphere_NNNNN.vtu, with
+   * the contact force and the ball's displacement as cell data) and, for a
+   * contact model with several contact nodes, those nodes as points with
+   * their force and nodal pressure (contact_NNNNN.vtu).  Both are written
+   * at their reference positions (the ball touching the undeformed top
+   * face at the impact point, the nodes undeformed) with the point field
+   * displacement_m, as the plate's solution: one WarpByVector with the
+   * same scale factor on plate, ball and nodes shows them where they are
+   * (factor 1) or magnified alike.  Each series has its PVD file (sphere.pvd,
    * contact.pvd) with the simulation time.  Everything is replicated on
    * the MPI ranks: rank 0 alone writes.  Every file is written to a
    * temporary name and renamed.
@@ -34,12 +38,15 @@ namespace fgimpact
                      const ContactModel &contact);
 
     /// Write the snapshot of step `step` at time t (s), with the ball's
-    /// displacement w (m, positive down).
+    /// displacement w (m, positive down) and the z displacement of the
+    /// plate at each contact node (m, positive up; in the order of
+    /// ContactModel::contact_points(); empty: zero).
     void
-    write(const unsigned int  step,
-          const double        t,
-          const double        w,
-          const ContactState &state);
+    write(const unsigned int         step,
+          const double               t,
+          const double               w,
+          const ContactState        &state,
+          const std::vector<double> &node_uz = {});
 
     /// Write the PVD files (through a temporary name and a rename).
     void
@@ -70,7 +77,9 @@ namespace fgimpact
     void
     write_sphere(const std::string &file, const double w, const double F) const;
     void
-    write_nodes(const std::string &file, const ContactState &state) const;
+    write_nodes(const std::string         &file,
+                const ContactState        &state,
+                const std::vector<double> &node_uz) const;
 
     const std::string                           directory;
     const Point<3>                              impact_point;

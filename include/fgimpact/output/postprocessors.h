@@ -257,8 +257,14 @@ namespace fgimpact
   private:
     using Records = std::vector<std::pair<double, std::string>>;
 
+    /// The z displacement (m, up) at the contact DoFs, on every rank
+    /// (collective).
+    std::vector<double>
+    contact_node_uz(const TrilinosWrappers::MPI::Vector &u) const;
+
     const unsigned int                interval;
     const MPI_Comm                    communicator;
+    const ContactModel               &contact;
     std::unique_ptr<VtuWriter>        vtu;
     std::unique_ptr<ContactVtuWriter> contact_vtu;
     Records vtu_records, sphere_records, contact_records;
