@@ -234,12 +234,13 @@ namespace fgimpact
         skip(nullptr, length);
         if (buffer.compare(name_at, name_length, name) != 0)
           continue;
-        AssertThrow(found_version == version,
-                    ExcMessage("the checkpoint's section '" + name +
-                               "' has version " +
-                               std::to_string(found_version) +
-                               ", this program reads version " +
-                               std::to_string(version)));
+        AssertThrow(
+          found_version == version,
+          ExcMessage("the checkpoint's section '" + name + "' has version " +
+                     std::to_string(found_version) +
+                     ", this program reads version " + std::to_string(version) +
+                     " (written by a different version of the "
+                     "program: run again without --resume)"));
         CheckpointReader part(buffer.substr(data_at, length));
         part.step = step;
         return part;
@@ -247,7 +248,7 @@ namespace fgimpact
     AssertThrow(false,
                 ExcMessage("the checkpoint has no section '" + name +
                            "' (written by a different version of the "
-                           "program)"));
+                           "program: run again without --resume)"));
     return CheckpointReader("");
   }
 
