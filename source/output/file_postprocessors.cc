@@ -171,10 +171,10 @@ namespace fgimpact
   void
   HistoryWriter::execute(const StepRecord &record)
   {
-    std::vector<double> row;
-    row.reserve(columns.size());
-    for (const auto &column : columns)
-      row.push_back(column.value(*record.sample));
+    // A member: no allocation per step.
+    row.resize(columns.size());
+    for (unsigned int i = 0; i < columns.size(); ++i)
+      row[i] = columns[i].value(*record.sample);
     write_row(row);
     for (const auto &observer : observers)
       observer(row);

@@ -39,7 +39,7 @@ namespace fgimpact
     output_timer.reset();
     add(std::make_unique<ResultsAccumulator>(
       results, contact, m_i, V0, dt, whole != 1., pcout));
-    add(std::make_unique<EnergyWatchdog>(E0, pcout));
+    add(std::make_unique<EnergyWatchdog>(pcout));
     auto columns = history_columns();
     if (contact.reports_contact_area())
       columns.insert(columns.end(),
@@ -203,6 +203,7 @@ namespace fgimpact
     record.part_contact      = &part_contact;
     record.fields            = fields;
     record.linear_iterations = plate.linear_iterations;
+    record.energy_drift      = std::abs(sample.E_total - E0) / E0;
     for (const auto &p : postprocessors)
       p->execute(record);
   }

@@ -201,13 +201,25 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The value of `status` among entries ("" if none).
+    std::string
+    status_of(const SummaryEntries &entries)
+    {
+      for (const auto &[name, value] : entries)
+        if (name == "status")
+          return value;
+      return "";
+    }
+  } // namespace
+
+
+
   void
   SummaryFile::write_failed(const SummaryWriter &content)
   {
-    std::string wanted;
-    for (const auto &[name, value] : content.entries())
-      if (name == "status")
-        wanted = value;
+    const std::string wanted = status_of(content.entries());
     if (!wanted.empty() && status() == wanted)
       return;
     try
@@ -223,9 +235,6 @@ namespace fgimpact
   std::string
   SummaryFile::status() const
   {
-    for (const auto &[name, value] : last.entries())
-      if (name == "status")
-        return value;
-    return "";
+    return status_of(last.entries());
   }
 } // namespace fgimpact

@@ -65,6 +65,8 @@ namespace fgimpact
     const PlateFields *fields = nullptr;
     /// Iterations of the plate's linear solver in this step.
     unsigned int linear_iterations = 0;
+    /// |E_total - E0| / E0, the relative energy drift (E0 = m V0^2 / 2).
+    double energy_drift = 0;
   };
 
 

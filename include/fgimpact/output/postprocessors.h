@@ -81,8 +81,7 @@ namespace fgimpact
   class EnergyWatchdog : public Postprocessor
   {
   public:
-    /// E0: the impact's energy (J).
-    EnergyWatchdog(const double E0, const ConditionalOStream &pcout);
+    explicit EnergyWatchdog(const ConditionalOStream &pcout);
 
     std::string
     name() const override
@@ -97,7 +96,6 @@ namespace fgimpact
     load(CheckpointReader &in) override;
 
   private:
-    const double              E0;
     const ConditionalOStream &pcout;
     bool                      warned = false;
   };
@@ -170,6 +168,7 @@ namespace fgimpact
   private:
     const std::vector<HistoryColumn> columns;
     std::vector<RowObserver>         observers;
+    std::vector<double>              row;
   };
 
 

@@ -30,7 +30,7 @@ namespace fgimpact
 
   /**
    * The results of an impact run, in SI units, as written to summary.txt
-   * (ImpactMonitor::write_summary() scales them).
+   * (impact_summary() scales them).
    */
   struct ImpactResults
   {
