@@ -1,14 +1,16 @@
 #ifndef fgimpact_tests_vtu_reader_h
 #define fgimpact_tests_vtu_reader_h
 
-// Reads back what users open in ParaView: the data arrays of a deal.II VTU
-// piece written with Output/VTU compression = none (base64, zlib stored
-// blocks), independently of the library that wrote it.
+// Reads back what users open in ParaView: the data arrays of a VTU piece
+// written with Output/VTU compression = none (raw appended binary data, or
+// deal.II's base64 zlib stored blocks), independently of the library that
+// wrote it.
 
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -28,11 +30,32 @@ namespace fgimpact_tests
     return buffer.str();
   }
 
-  /// The float32 values of the binary DataArray body that starts after
-  /// position `tag` of text.
+  /// The float32 values of a DataArray with format="appended" (what
+  /// Output/VTU compression = none writes): its offset="N" attribute
+  /// counts from the byte after the '_' that opens <AppendedData
+  /// encoding="raw">, where a UInt64 byte count precedes the values.
+  inline std::vector<float>
+  decode_appended(const std::string &text, const std::size_t tag)
+  {
+    const auto at     = text.find("offset=\"", tag) + 8;
+    const auto offset = std::stoull(text.substr(at, text.find('"', at) - at));
+    const auto start  = text.find('_', text.find("<AppendedData")) + 1;
+    std::uint64_t n   = 0;
+    std::memcpy(&n, text.data() + start + offset, sizeof(n));
+    std::vector<float> values(n / sizeof(float));
+    std::memcpy(values.data(), text.data() + start + offset + sizeof(n), n);
+    return values;
+  }
+
+  /// The float32 values of the DataArray whose tag starts at position
+  /// `tag` of text: appended raw data, or deal.II's base64 zlib body.
   inline std::vector<float>
   decode_array(const std::string &text, const std::size_t tag)
   {
+    const auto tag_end = text.find('>', tag);
+    if (text.substr(tag, tag_end - tag).find("format=\"appended\"") !=
+        std::string::npos)
+      return decode_appended(text, tag);
     const auto  begin = text.find('>', tag) + 1;
     const auto  end   = text.find("</DataArray>", begin);
     std::string body  = text.substr(begin, end - begin);

@@ -33,7 +33,7 @@ namespace fgimpact
     }
 
     /// Whether name is `prefix` + 5 digits (the step) + `suffix`, where a
-    /// suffix ".R.vtu" takes any number R >= 0 of digits (the rank).
+    /// suffix ".R.vtu" takes any number R >= 0 of digits (the piece).
     bool
     is_series_file(const std::string &name,
                    const std::string &prefix,
@@ -116,6 +116,31 @@ namespace fgimpact
         fs::remove(directory, error);
     }
 
+    /**
+     * Remove an earlier run's VTU pieces from the folder vtu/: the files
+     * this program writes only, then the folder if that left it empty (a
+     * user's file in it stays, and so does the folder).
+     */
+    void
+    remove_own_files(const std::filesystem::path &directory)
+    {
+      namespace fs = std::filesystem;
+      std::error_code error;
+      for (const auto &entry : fs::directory_iterator(directory, error))
+        if (entry.is_regular_file() &&
+            is_own_output(entry.path().filename().string()))
+          {
+            fs::remove(entry.path(), error);
+            AssertThrow(!error,
+                        ExcMessage("Output/Directory: cannot remove the "
+                                   "earlier run's " +
+                                   entry.path().string() + ": " +
+                                   error.message()));
+          }
+      if (fs::is_empty(directory, error))
+        fs::remove(directory, error);
+    }
+
     /// Close fd (a lock file another process holds) and throw the one
     /// line naming the directory and the holder's process id (in the file).
     [[noreturn]] void
@@ -180,7 +205,8 @@ namespace fgimpact
         ((entry.is_regular_file() &&
           is_own_output(entry.path().filename().string())) ||
              (entry.is_directory() &&
-              is_checkpoint_directory(entry.path().filename().string())) ?
+              (is_checkpoint_directory(entry.path().filename().string()) ||
+               entry.path().filename() == "vtu")) ?
            own :
            foreign)
           .push_back(entry.path());
@@ -188,7 +214,7 @@ namespace fgimpact
     // written: one that holds a file of the user's is refused, before
     // anything is removed.
     for (const auto &path : own)
-      if (fs::is_directory(path))
+      if (fs::is_directory(path) && path.filename() != "vtu")
         for (const auto &entry : fs::directory_iterator(path, error))
           AssertThrow(entry.is_regular_file() &&
                         is_checkpoint_file(entry.path().filename().string()),
@@ -209,7 +235,10 @@ namespace fgimpact
       {
         if (fs::is_directory(file))
           {
-            remove_checkpoint_directory(file);
+            if (file.filename() == "vtu")
+              remove_own_files(file);
+            else
+              remove_checkpoint_directory(file);
             continue;
           }
         fs::remove(file, error);

@@ -6,6 +6,8 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <numeric>
 #include <sstream>
 
 namespace fgimpact
@@ -47,14 +49,16 @@ namespace fgimpact
 
 
 
-  ContactVtuWriter::ContactVtuWriter(const std::string  &directory,
-                                     const Point<3>     &impact_point,
-                                     const double        radius,
-                                     const ContactModel &contact)
+  ContactVtuWriter::ContactVtuWriter(const std::string   &directory,
+                                     const Point<3>      &impact_point,
+                                     const double         radius,
+                                     const ContactModel  &contact,
+                                     const PlateGeometry *mirror)
     : directory(directory)
     , impact_point(impact_point)
     , R(radius)
     , contact(contact)
+    , mirror(mirror)
   {}
 
 
@@ -66,13 +70,17 @@ namespace fgimpact
                           const ContactState        &state,
                           const std::vector<double> &node_uz)
   {
+    // The pieces in vtu/ (created by the plate's writer, or here when
+    // the two run apart), the PVD files at the top.
+    std::error_code error;
+    std::filesystem::create_directories(directory + "/vtu", error);
     char name[64];
-    std::snprintf(name, sizeof(name), "sphere_%05u.vtu", step);
+    std::snprintf(name, sizeof(name), "vtu/sphere_%05u.vtu", step);
     write_sphere(directory + "/" + name, w, state.force);
     spheres.emplace_back(t, name);
     if (!contact.contact_points().empty())
       {
-        std::snprintf(name, sizeof(name), "contact_%05u.vtu", step);
+        std::snprintf(name, sizeof(name), "vtu/contact_%05u.vtu", step);
         write_nodes(directory + "/" + name, state, node_uz);
         contacts.emplace_back(t, name);
       }
@@ -159,49 +167,88 @@ namespace fgimpact
 
 
 
+  ContactVtuWriter::Nodes
+  ContactVtuWriter::nodes_to_write() const
+  {
+    // Read each time: the candidate set may have grown.
+    Nodes nodes;
+    nodes.points = contact.contact_points();
+    nodes.source.resize(nodes.points.size());
+    std::iota(nodes.source.begin(), nodes.source.end(), 0u);
+    nodes.factor.assign(nodes.points.size(), 1.);
+    if (mirror == nullptr)
+      return nodes;
+    const double centre[2] = {0.5 * mirror->length(), 0.5 * mirror->width()};
+    for (unsigned int d = 0; d < 2; ++d)
+      if (mirror->is_cut(d))
+        {
+          // On the cut plane to a millionth of the plate's size.
+          const double      tol = 1e-6 * (mirror->length() + mirror->width());
+          const std::size_t n   = nodes.points.size();
+          for (std::size_t k = 0; k < n; ++k)
+            if (std::abs(nodes.points[k][d] - centre[d]) <= tol)
+              nodes.factor[k] *= 2.; // itself and its image: one node
+            else
+              {
+                Point<3> image = nodes.points[k];
+                image[d]       = 2. * centre[d] - image[d];
+                nodes.points.push_back(image);
+                nodes.source.push_back(nodes.source[k]);
+                nodes.factor.push_back(nodes.factor[k]);
+              }
+        }
+    return nodes;
+  }
+
+
+
   void
   ContactVtuWriter::write_nodes(const std::string         &file,
                                 const ContactState        &state,
                                 const std::vector<double> &node_uz) const
   {
-    // Read each time: the candidate set may have grown.
-    const std::vector<Point<3>> nodes = contact.contact_points();
-    const std::vector<double>   areas = contact.contact_areas();
-    std::ostringstream          out;
+    const Nodes               nodes = nodes_to_write();
+    const std::vector<double> areas = contact.contact_areas();
+    const std::size_t         n     = nodes.points.size();
+    std::ostringstream        out;
     out.precision(10);
-    begin_grid(out, nodes, nodes.size());
+    begin_grid(out, nodes.points, n);
     out << "<Cells>\n<DataArray type=\"Int32\" Name=\"connectivity\" "
            "format=\"ascii\">\n";
-    for (unsigned int k = 0; k < nodes.size(); ++k)
+    for (unsigned int k = 0; k < n; ++k)
       out << k << '\n';
     out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" "
            "format=\"ascii\">\n";
-    for (unsigned int k = 1; k <= nodes.size(); ++k)
+    for (unsigned int k = 1; k <= n; ++k)
       out << k << '\n';
     out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
            "format=\"ascii\">\n";
-    for (unsigned int k = 0; k < nodes.size(); ++k)
+    for (unsigned int k = 0; k < n; ++k)
       out << "1\n";
     out << "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement_m\">\n"
         << "<DataArray type=\"Float64\" Name=\"contact_pressure_MPa\" "
            "format=\"ascii\">\n";
     // (No forces yet at t = 0.)
-    const auto force = [&state](const unsigned int k) {
-      return k < state.forces.size() ? state.forces[k] : 0.;
+    const auto force = [&](const unsigned int k) {
+      const unsigned int s = nodes.source[k];
+      return s < state.forces.size() ? state.forces[s] : 0.;
     };
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-      out << force(k) / areas[k] * 1e-6 << '\n';
+    for (unsigned int k = 0; k < n; ++k)
+      out << force(k) / areas[nodes.source[k]] * 1e-6 << '\n';
     out << "</DataArray>\n<DataArray type=\"Float64\" "
            "Name=\"nodal_force_N\" format=\"ascii\">\n";
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-      out << force(k) << '\n';
+    for (unsigned int k = 0; k < n; ++k)
+      out << nodes.factor[k] * force(k) << '\n';
     // The nodes' z displacement (their in-plane displacement is not
     // known here: it is in the plate's field).
     out << "</DataArray>\n<DataArray type=\"Float64\" "
            "Name=\"displacement_m\" NumberOfComponents=\"3\" "
            "format=\"ascii\">\n";
-    for (unsigned int k = 0; k < nodes.size(); ++k)
-      out << "0 0 " << (k < node_uz.size() ? node_uz[k] : 0.) << '\n';
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const unsigned int s = nodes.source[k];
+        out << "0 0 " << (s < node_uz.size() ? node_uz[s] : 0.) << '\n';
+      }
     out << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n"
            "</VTKFile>\n";
     write_file_atomically(file, out.str());

@@ -225,10 +225,14 @@ namespace fgimpact
                                       parameters.vtu_fields))
   {
     if (Utilities::MPI::this_mpi_process(communicator) == 0)
-      contact_vtu = std::make_unique<ContactVtuWriter>(parameters.directory,
-                                                       impact_point,
-                                                       radius,
-                                                       contact);
+      contact_vtu =
+        std::make_unique<ContactVtuWriter>(parameters.directory,
+                                           impact_point,
+                                           radius,
+                                           contact,
+                                           parameters.vtu_fields.mirror ?
+                                             &plate.get_geometry() :
+                                             nullptr);
     timer.stop();
     timer.reset();
   }
@@ -258,17 +262,19 @@ namespace fgimpact
     const std::vector<double> node_uz = contact.contact_points().empty() ?
                                           std::vector<double>() :
                                           contact_node_uz(f.displacement());
+    // The PVD time in µs, as every CSV and the log.
+    const double t_us = record.t * 1e6;
     try
       {
         vtu->write(record.step,
-                   record.t,
+                   t_us,
                    f.displacement(),
                    f.velocity(),
                    {},
                    &f.acceleration());
         if (contact_vtu)
           contact_vtu->write(record.step,
-                             record.t,
+                             t_us,
                              record.sample->ball->w,
                              *record.sample->contact,
                              node_uz);
@@ -318,7 +324,7 @@ namespace fgimpact
                        const PlateFields &fields)
   {
     vtu->write(step,
-               t,
+               t * 1e6,
                fields.displacement(),
                fields.velocity(),
                {},

@@ -1,4 +1,5 @@
 #include <fgimpact/output/mirrored_data_out.h>
+#include <fgimpact/output/raw_vtu.h>
 
 #include <array>
 
@@ -104,20 +105,26 @@ namespace fgimpact
   void
   MirroredDataOut::mirror()
   {
-    whole                              = DataOut<3>::get_patches();
-    mirrored                           = true;
+    first    = DataOut<3>::get_patches();
+    mirrored = true;
+    second.clear();
+    whole.clear();
     const std::array<double, 2> centre = {
       {0.5 * geometry.length(), 0.5 * geometry.width()}};
-    for (unsigned int d = 0; d < 2; ++d)
+    const int last_cut = geometry.is_cut(1) ? 1 : geometry.is_cut(0) ? 0 : -1;
+    for (int d = 0; d <= last_cut; ++d)
       if (geometry.is_cut(d))
         {
           const std::vector<float> signs = reflection_signs(d);
-          const std::size_t        n     = whole.size();
-          whole.reserve(2 * n);
+          const std::size_t        n     = first.size();
+          // The last reflection is a piece of its own (numbered from 0 in
+          // it), the others extend the first piece.
+          auto &target = (d == last_cut ? second : first);
+          target.reserve(target.size() + n);
           for (std::size_t i = 0; i < n; ++i)
             {
-              whole.push_back(reflect(whole[i], d, centre[d], signs));
-              whole.back().patch_index = n + i;
+              target.push_back(reflect(first[i], d, centre[d], signs));
+              target.back().patch_index = (d == last_cut ? i : n + i);
             }
         }
   }
@@ -127,6 +134,44 @@ namespace fgimpact
   const std::vector<DataOutBase::Patch<3, 3>> &
   MirroredDataOut::get_patches() const
   {
-    return mirrored ? whole : DataOut<3>::get_patches();
+    if (!mirrored)
+      return DataOut<3>::get_patches();
+    if (second.empty())
+      return first;
+    if (whole.empty())
+      {
+        whole = first;
+        for (const auto &p : second)
+          {
+            whole.push_back(p);
+            whole.back().patch_index += first.size();
+          }
+      }
+    return whole;
+  }
+
+
+
+  void
+  MirroredDataOut::write_vtu_piece(const unsigned int k,
+                                   std::ostream      &out) const
+  {
+    AssertIndexRange(k, n_pieces());
+    const auto &patches = n_pieces() == 1 ? get_patches() :
+                          k == 0          ? first :
+                                            second;
+    // No compression: raw binary (deal.II would still deflate and encode).
+    if (vtk.compression_level == DataOutBase::VtkFlags::no_compression)
+      write_raw_vtu(patches,
+                    get_dataset_names(),
+                    get_nonscalar_data_ranges(),
+                    vtk.time,
+                    vtk.cycle,
+                    out);
+    else if (n_pieces() == 1)
+      write_vtu(out);
+    else
+      DataOutBase::write_vtu(
+        patches, get_dataset_names(), get_nonscalar_data_ranges(), vtk, out);
   }
 } // namespace fgimpact

@@ -43,13 +43,15 @@ namespace fgimpact
                         "(spmv_ms, solve_ms in summary.txt, for the "
                         "benchmarks in bench/); costs 20 products and 3 "
                         "solves at set-up.");
-      prm.declare_entry("VTU compression",
-                        "speed",
-                        Patterns::Selection("none|speed|default|best"),
-                        "zlib level of the VTU data: none, speed (fastest, "
-                        "default), default (zlib's compromise) or best "
-                        "(smallest files, several times slower).  The values "
-                        "in the files are the same at every level.");
+      prm.declare_entry(
+        "VTU compression",
+        "none",
+        Patterns::Selection("none|speed|default|best"),
+        "How the VTU data are stored: none (default: raw binary, the "
+        "fastest to write and read, about 2.5 times the size of speed), "
+        "or zlib-compressed at the level speed (fastest zlib), default "
+        "(zlib's compromise) or best (smallest files, several times "
+        "slower).  The values in the files are the same at every level.");
       prm.declare_entry(
         "Overwrite",
         "true",
@@ -57,9 +59,9 @@ namespace fgimpact
         "true: before writing, remove exactly the files this "
         "program writes from Directory (history.csv, probes.csv, "
         "summary.txt, parameters.prm, input.prm, log.txt, "
-        "frequencies.csv, solution.pvd, solution_*.vtu/"
-        ".pvtu, sphere and contact series, peak_fields, "
-        "contact_pressure.csv, checkpoint/), so that no file of an earlier run is mixed "
+        "frequencies.csv, the PVD files, peak_fields.pvtu, the VTU pieces "
+        "in vtu/, contact_pressure.csv, checkpoint/), so that no file of an "
+        "earlier run is mixed "
         "with the new ones. false: refuse a Directory that "
         "is not empty.");
       prm.declare_entry(

@@ -334,7 +334,7 @@ namespace fgimpact
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
     const std::string  base   = "solution_" + Utilities::int_to_string(step, 5);
-    const std::string  record = base + ".pvtu";
+    const std::string  record = "vtu/" + base + ".pvtu";
 
     // Patches and files, in the background on one rank. On several ranks
     // DataOut on the distributed mesh makes MPI calls of its own, which
@@ -346,7 +346,6 @@ namespace fgimpact
                         rank,
                         n_ranks,
                         base,
-                        record,
                         constant_field,
                         with_acceleration]() {
       MirroredDataOut data_out(plate.get_geometry());
@@ -361,20 +360,9 @@ namespace fgimpact
       flags.cycle = step;
 
       flags.compression_level = compression;
-      data_out.set_flags(flags);
+      data_out.set_vtk_flags(flags);
 
-      write_checked(directory + "/" + base + "." +
-                      Utilities::int_to_string(rank) + ".vtu",
-                    [&](std::ostream &out) { data_out.write_vtu(out); });
-      if (rank == 0)
-        {
-          std::vector<std::string> pieces;
-          for (unsigned int r = 0; r < n_ranks; ++r)
-            pieces.push_back(base + "." + Utilities::int_to_string(r) + ".vtu");
-          write_checked(directory + "/" + record, [&](std::ostream &out) {
-            data_out.write_pvtu_record(out, pieces);
-          });
-        }
+      write_pieces(data_out, base, "", rank, n_ranks);
     };
     if (n_ranks == 1)
       pending = std::async(std::launch::async, write_files);
@@ -449,20 +437,64 @@ namespace fgimpact
       data_out.mirror();
     DataOutBase::VtkFlags flags;
     flags.compression_level = compression;
-    data_out.set_flags(flags);
+    data_out.set_vtk_flags(flags);
+    // The record at the top, beside the PVD files; its pieces in vtu/.
+    write_pieces(data_out, "peak_fields", "vtu/", rank, n_ranks);
+  }
 
-    const std::string base = "peak_fields";
-    write_checked(directory + "/" + base + "." +
-                    Utilities::int_to_string(rank) + ".vtu",
-                  [&](std::ostream &out) { data_out.write_vtu(out); });
+
+
+  void
+  VtuWriter::write_pieces(const MirroredDataOut &data_out,
+                          const std::string     &base,
+                          const std::string     &piece_prefix,
+                          const unsigned int     rank,
+                          const unsigned int     n_ranks) const
+  {
+    // rank, n_ranks: from the caller (no MPI call in a background thread).
+    const unsigned int n_pieces = data_out.n_pieces(); // alike on all ranks
+    const auto         piece    = [&](const unsigned int k) {
+      return base + "." + Utilities::int_to_string(k) + ".vtu";
+    };
+    const auto write_piece = [&](const unsigned int k) {
+      write_checked(directory + "/vtu/" + piece(rank * n_pieces + k),
+                    [&](std::ostream &out) {
+                      data_out.write_vtu_piece(k, out);
+                    });
+    };
+    ensure_piece_directory();
+    // A mirrored part: its two halves written by two threads at once.
+    std::future<void> other;
+    if (n_pieces == 2)
+      other = std::async(std::launch::async, write_piece, 1u);
+    write_piece(0);
+    if (other.valid())
+      other.get();
     if (rank == 0)
       {
         std::vector<std::string> pieces;
-        for (unsigned int r = 0; r < n_ranks; ++r)
-          pieces.push_back(base + "." + Utilities::int_to_string(r) + ".vtu");
-        write_checked(directory + "/" + base + ".pvtu", [&](std::ostream &out) {
+        for (unsigned int k = 0; k < n_ranks * n_pieces; ++k)
+          pieces.push_back(piece_prefix + piece(k));
+        const std::string record = directory + "/" +
+                                   (piece_prefix.empty() ? "vtu/" : "") + base +
+                                   ".pvtu";
+        write_checked(record, [&](std::ostream &out) {
           data_out.write_pvtu_record(out, pieces);
         });
       }
+  }
+
+
+
+  void
+  VtuWriter::ensure_piece_directory() const
+  {
+    // Every rank writes its own pieces: each makes sure the folder exists
+    // (a race between ranks is harmless: it exists either way).
+    std::error_code error;
+    std::filesystem::create_directories(directory + "/vtu", error);
+    AssertThrow(std::filesystem::is_directory(directory + "/vtu"),
+                ExcOutputFailure("cannot create " + directory + "/vtu (" +
+                                 error.message() + ")."));
   }
 } // namespace fgimpact

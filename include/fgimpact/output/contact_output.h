@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 
 #include <fgimpact/contact/contact_model.h>
+#include <fgimpact/plate/geometry.h>
 
 #include <string>
 #include <utility>
@@ -20,24 +21,29 @@ namespace fgimpact
    * contact model with several contact nodes, those nodes as points with
    * their force and nodal pressure (contact_NNNNN.vtu).  Both are written
    * at their reference positions (the ball touching the undeformed top
-   * face at the impact point, the nodes undeformed) with the point field
+   * face at the impact point, the nodes undeformed), in Directory/vtu/,
+   * with the point field
    * displacement_m, as the plate's solution: one WarpByVector with the
    * same scale factor on plate, ball and nodes shows them where they are
    * (factor 1) or magnified alike.  Each series has its PVD file (sphere.pvd,
-   * contact.pvd) with the simulation time.  Everything is replicated on
-   * the MPI ranks: rank 0 alone writes.  Every file is written to a
-   * temporary name and renamed.
+   * contact.pvd, at the top) with the simulation time in µs.  Everything is
+   * replicated on the MPI ranks: rank 0 alone writes.  Every file is written to
+   * a temporary name and renamed.
    */
   class ContactVtuWriter
   {
   public:
-    /// impact_point: where the ball first touches the top face (m).
-    ContactVtuWriter(const std::string  &directory,
-                     const Point<3>     &impact_point,
-                     const double        radius,
-                     const ContactModel &contact);
+    /// impact_point: where the ball first touches the top face (m);
+    /// mirror: a symmetric part's geometry, whose contact nodes are then
+    /// written with their reflections across the cut planes (nullptr:
+    /// the modelled nodes only).
+    ContactVtuWriter(const std::string   &directory,
+                     const Point<3>      &impact_point,
+                     const double         radius,
+                     const ContactModel  &contact,
+                     const PlateGeometry *mirror = nullptr);
 
-    /// Write the snapshot of step `step` at time t (s), with the ball's
+    /// Write the snapshot of step `step` at time t (µs), with the ball's
     /// displacement w (m, positive down) and the z displacement of the
     /// plate at each contact node (m, positive up; in the order of
     /// ContactModel::contact_points(); empty: zero).
@@ -52,7 +58,7 @@ namespace fgimpact
     void
     finish() const;
 
-    /// (time in s, file name) of a PVD entry.
+    /// (time in µs, file name in the output directory) of a PVD entry.
     using Record = std::pair<double, std::string>;
 
     /// The PVD entries so far (for a checkpoint).
@@ -81,10 +87,24 @@ namespace fgimpact
                 const ContactState        &state,
                 const std::vector<double> &node_uz) const;
 
+    /// The nodes to write: the model's, and with `mirror` their
+    /// reflections (a node on a cut plane once, with its force doubled as
+    /// on the whole plate; the area likewise, so the pressure is the
+    /// part's), with each one's source node and force factor.
+    struct Nodes
+    {
+      std::vector<Point<3>>     points;
+      std::vector<unsigned int> source;
+      std::vector<double>       factor;
+    };
+    Nodes
+    nodes_to_write() const;
+
     const std::string                           directory;
     const Point<3>                              impact_point;
     const double                                R;
     const ContactModel                         &contact;
+    const PlateGeometry                        *mirror;
     std::vector<std::pair<double, std::string>> spheres, contacts;
   };
 } // namespace fgimpact

@@ -36,8 +36,33 @@ namespace fgimpact
     void
     mirror();
 
+    /// All patches: the part's, then (after mirror()) the reflections.
     const std::vector<DataOutBase::Patch<3, 3>> &
     get_patches() const override;
+
+    /**
+     * The number of VTU pieces write_vtu_piece() writes: 1, or 2 after
+     * mirror() (the patches up to and after the reflection across the
+     * last cut plane, half of them each), so that two threads can write
+     * the whole plate in the time of one half.
+     */
+    unsigned int
+    n_pieces() const
+    {
+      return mirrored && !second.empty() ? 2 : 1;
+    }
+
+    /// The VTU flags of every piece (and of write_vtu()).
+    void
+    set_vtk_flags(const DataOutBase::VtkFlags &flags)
+    {
+      set_flags(flags);
+      vtk = flags;
+    }
+
+    /// Write piece k < n_pieces() (a VTU file of its patches) to out.
+    void
+    write_vtu_piece(const unsigned int k, std::ostream &out) const;
 
     /**
      * The sign (+1 or -1) of each data set (scalar component, in the order
@@ -55,9 +80,14 @@ namespace fgimpact
     }
 
   private:
-    const PlateGeometry                  &geometry;
-    std::vector<DataOutBase::Patch<3, 3>> whole;
-    bool                                  mirrored = false;
+    const PlateGeometry &geometry;
+    /// After mirror(): the part and its reflections but the last (first),
+    /// the reflection of those across the last cut plane (second), and
+    /// both together, built on demand by get_patches().
+    std::vector<DataOutBase::Patch<3, 3>>         first, second;
+    mutable std::vector<DataOutBase::Patch<3, 3>> whole;
+    bool                                          mirrored = false;
+    DataOutBase::VtkFlags                         vtk;
   };
 } // namespace fgimpact
 

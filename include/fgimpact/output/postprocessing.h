@@ -180,6 +180,24 @@ namespace fgimpact
     void
     add_recovered_fields(DataOut<3> &data_out);
 
+    /**
+     * This rank's pieces of data_out (1, or 2 for a mirrored part,
+     * written by two threads) as Directory/vtu/base.K.vtu (K numbering
+     * the pieces of all ranks) and, on rank 0, the record base.pvtu that
+     * lists them: in vtu/ beside them (piece_prefix empty), or at the top
+     * with piece_prefix "vtu/".
+     */
+    void
+    write_pieces(const MirroredDataOut &data_out,
+                 const std::string     &base,
+                 const std::string     &piece_prefix,
+                 const unsigned int     rank,
+                 const unsigned int     n_ranks) const;
+
+    /// Create Directory/vtu if missing (throws ExcOutputFailure).
+    void
+    ensure_piece_directory() const;
+
     const PlateModel                           &plate;
     const std::string                           directory;
     const VtuFields                             fields;

@@ -224,6 +224,12 @@ namespace fgimpact
     {
       return "vtu";
     }
+    /// 2: the PVD times in µs and the files in vtu/ (1: s, at the top).
+    std::uint32_t
+    checkpoint_version() const override
+    {
+      return 2;
+    }
     bool
     needs_rates(const unsigned int step) const override
     {
