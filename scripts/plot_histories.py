@@ -26,8 +26,9 @@ Writes into DIR (created if missing), EXT = the --format:
   sigma_zz.EXT             sigma_zz at the mid-plane centre (MPa)  Fig. 5b
   energy.EXT               impactor, plate kinetic, strain, contact and
                            total energy (J) vs t (us)
-  force_indentation.EXT    contact force F (N) vs indentation (um), the
-                           samples in contact (indentation > 0)
+  force_indentation.EXT    contact force F (N) vs indentation (um): the
+                           ball's displacement minus the plate's deflection
+                           under it (every contact model), in contact (F > 0)
 and if a run_dir holds probes.csv (Output/Probe points):
   probes.EXT               per probe point u_z (um) and sigma_xx, sigma_zz
                            (MPa) vs t, and the support reaction (N) vs t
@@ -161,7 +162,7 @@ def parse_arguments(argv):
         else:
             label = pending_label
             if label is None:
-                label = os.path.basename(os.path.normpath(arg))
+                label = study_case_label(arg)
             runs.append((label, arg))
             pending_label = None
         i += 1
@@ -243,6 +244,32 @@ def to_float(text):
         return float("nan")
 
 
+def study_case_label(run_dir):
+    """The varied values of a study case (its row of the study.csv beside
+    it, the entries without their subsection), else the directory's name."""
+    name = os.path.basename(os.path.normpath(run_dir))
+    study = os.path.join(os.path.dirname(os.path.normpath(run_dir)),
+                         "study.csv")
+    if not os.path.isfile(study):
+        return name
+    import csv
+    with open(study, newline="") as f:
+        for row in csv.DictReader(f):
+            case = row.get("case", "")
+            if case.isdigit() and "case_%03d" % int(case) == name:
+                varied = [k for k in row if "/" in k]
+                if varied:
+                    # The units of plot_study.py, beside this script.
+                    sys.path.insert(0, os.path.dirname(os.path.abspath(
+                        __file__)))
+                    from plot_study import UNITS
+                    return ", ".join(
+                        ("%s = %s %s" % (k.split("/")[-1], row[k],
+                                         UNITS.get(k.split("/")[-1], ""))
+                         ).strip() for k in varied)
+    return name
+
+
 def style_axes(ax, title, xlabel, ylabel):
     ax.set_title(title)
     ax.set_xlabel(xlabel)
@@ -316,18 +343,25 @@ def plot_energy(out, title, runs, histories, options):
 
 
 def plot_force_indentation(out, title, runs, histories, options):
+    """The indentation from the motions, the same for every contact
+    model: the ball's displacement minus the plate's deflection under the
+    ball (its contact node), not indentation_um (for resolved sphere the
+    Hertz approach (F/K)^(2/3), a function of F alone)."""
     fig, ax = plt.subplots(figsize=(7.5, 4.8))
     for (label, run_dir), history in zip(runs, histories):
-        alpha = column(history, "indentation_um", run_dir)
+        ball = column(history, "impactor_displacement_um", run_dir)
+        plate = column(history, "contact_node_deflection_um", run_dir)
         force = column(history, "contact_force_N", run_dir)
-        # In contact only: after separation indentation_um is minus the gap.
-        points = [(a, f) for t, a, f in zip(history["t_us"], alpha, force)
-                  if a > 0 and in_window(t, options["window"])]
+        # In contact only (F > 0).
+        points = [(w - u, f) for t, w, u, f in
+                  zip(history["t_us"], ball, plate, force)
+                  if f > 0 and in_window(t, options["window"])]
         ax.plot([p[0] for p in points], [p[1] for p in points], label=label,
                 linewidth=1.4)
     style_axes(ax, "Force-indentation" if not title
                else "%s\nForce-indentation" % title,
-               r"Indentation $\alpha$ ($\mu$m)", "Contact force $F$ (N)")
+               r"Indentation $\alpha = w_{ball} - w_{plate}$ ($\mu$m)",
+               "Contact force $F$ (N)")
     ax.legend(loc="best", fontsize="small", framealpha=0.85)
     return [save(fig, out, "force_indentation", options)]
 

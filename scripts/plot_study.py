@@ -23,6 +23,23 @@ QUANTITIES = [
 ]
 
 
+# The units of the entries a study usually varies (the .prm's units).
+UNITS = {
+    "Initial velocity": "m/s", "Radius": "m", "Density": "kg/m³",
+    "Young's modulus": "Pa", "Thickness h": "m", "Length a": "m",
+    "Width b": "m", "Time step": "s", "End time": "s",
+    "Metal Young's modulus": "Pa", "Ceramic Young's modulus": "Pa",
+    "Metal density": "kg/m³", "Ceramic density": "kg/m³",
+}
+
+
+def with_unit(entry):
+    """'Impactor/Initial velocity' -> 'Initial velocity (m/s)'; an entry
+    without a unit (an index, a count, a selection) keeps its name."""
+    name = entry.split("/")[-1]
+    return "%s (%s)" % (name, UNITS[name]) if name in UNITS else name
+
+
 def number(text):
     try:
         return float(text)
@@ -65,7 +82,10 @@ def main():
         others = [v for v in varied if v != entry]
         series = {}
         for r in rows:
-            key = ", ".join(f"{o.split('/')[-1]} = {r[o]}" for o in others)
+            key = ", ".join(
+                f"{o.split('/')[-1]} = {r[o]}"
+                + (f" {UNITS[o.split('/')[-1]]}" if o.split('/')[-1] in UNITS
+                   else "") for o in others)
             series.setdefault(key, []).append(r)
         fig, axes = plt.subplots(1, len(QUANTITIES),
                                  figsize=(4.2 * len(QUANTITIES), 3.6))
@@ -75,7 +95,7 @@ def main():
                 ax.plot([number(r[entry]) for r in members],
                         [number(r.get(column, "nan")) for r in members],
                         "o-", label=key or None)
-            ax.set_xlabel(entry)
+            ax.set_xlabel(with_unit(entry))
             ax.set_ylabel(label)
             ax.grid(True, alpha=0.3)
             ax.tick_params(axis="x", labelrotation=30)

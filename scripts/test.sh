@@ -12,6 +12,8 @@ allow_local_mpirun
 (cd build && ctest -j2 --output-on-failure)
 # The plotting script (skips the drawing without matplotlib, as in CI).
 scripts/check_plot_histories.sh build
+# The ParaView pictures (skipped without pvpython; CI installs it).
+scripts/check_render.sh build
 
 # The small unit tests, the run tests and the bad-input suite again,
 # against deal.II's debug library (its Assert checks) and with

@@ -29,6 +29,20 @@ namespace fgimpact_tests
   };
 
   /**
+   * Remove a directory an earlier run of the test left (rank 0, then every
+   * rank waits): the library's run does not clean its Output/Directory as
+   * the executable does, so a test would otherwise read stale files.
+   */
+  inline void
+  remove_output(const std::string &directory,
+                const MPI_Comm     communicator = MPI_COMM_WORLD)
+  {
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+      std::filesystem::remove_all(directory);
+    MPI_Barrier(communicator);
+  }
+
+  /**
    * Run the program through the library exactly as the executable does:
    * the defaults (with Geometry/Symmetry = none), then the file `prm_file`
    * (if not empty), then the .prm text `settings`; the log is kept out of

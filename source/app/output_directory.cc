@@ -32,16 +32,17 @@ namespace fgimpact
       return true;
     }
 
-    /// Whether name is `prefix` + 5 digits (the step) + `suffix`, where a
-    /// suffix ".R.vtu" takes any number R >= 0 of digits (the piece).
+    /// Whether name is `prefix` + n_digits digits (the step) + `suffix`, where
+    /// a suffix ".R.vtu" takes any number R >= 0 of digits (the piece).
     bool
     is_series_file(const std::string &name,
                    const std::string &prefix,
-                   const std::string &suffix)
+                   const std::string &suffix,
+                   const unsigned int n_digits = 5)
     {
-      if (name.rfind(prefix, 0) != 0 || !digits(name, prefix.size(), 5))
+      if (name.rfind(prefix, 0) != 0 || !digits(name, prefix.size(), n_digits))
         return false;
-      const std::string rest = name.substr(prefix.size() + 5);
+      const std::string rest = name.substr(prefix.size() + n_digits);
       if (suffix != ".R.vtu")
         return rest == suffix;
       // ".<rank>.vtu"
@@ -77,10 +78,22 @@ namespace fgimpact
       if (name.rfind("peak_fields.", 0) == 0 && ends_with(name, ".vtu") &&
           name.size() > 16 && digits(name, 12, name.size() - 16))
         return true;
-      return is_series_file(name, "solution_", ".pvtu") ||
-             is_series_file(name, "solution_", ".R.vtu") ||
-             is_series_file(name, "sphere_", ".vtu") ||
-             is_series_file(name, "contact_", ".vtu");
+      // The series: a 5-digit step, "t" and a 9-digit time in ns (Output/
+      // Snapshot times) or "peak" (the peak force's snapshot).
+      for (const std::string series : {"solution_", "sphere_", "contact_"})
+        for (const auto &[tag, n] :
+             {std::pair<std::string, unsigned int>{"", 5},
+              {"t", 9},
+              {"peak", 0}})
+          {
+            const std::string prefix = series + tag;
+            if (series == "solution_" ?
+                  (is_series_file(name, prefix, ".pvtu", n) ||
+                   is_series_file(name, prefix, ".R.vtu", n)) :
+                  is_series_file(name, prefix, ".vtu", n))
+              return true;
+          }
+      return false;
     }
 
     /// A checkpoint's own file: rank_DDDD.bin (or its temporary).

@@ -3,6 +3,7 @@
 #include <fgimpact/app/run_control.h>
 #include <fgimpact/output/contact_output.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -27,6 +28,26 @@ namespace fgimpact
         out << "<DataSet timestep=\"" << t << "\" file=\"" << name << "\"/>\n";
       out << "</Collection>\n</VTKFile>\n";
       write_file_atomically(file, out.str());
+    }
+
+    /// Add a PVD entry in time order, replacing one of the same file.
+    void
+    add_record(std::vector<std::pair<double, std::string>> &records,
+               const std::pair<double, std::string>        &entry)
+    {
+      records.erase(std::remove_if(records.begin(),
+                                   records.end(),
+                                   [&](const auto &r) {
+                                     return r.second == entry.second;
+                                   }),
+                    records.end());
+      records.insert(std::upper_bound(records.begin(),
+                                      records.end(),
+                                      entry,
+                                      [](const auto &a, const auto &b) {
+                                        return a.first < b.first;
+                                      }),
+                     entry);
     }
 
     /// The header of an ASCII unstructured grid with the given points.
@@ -64,7 +85,7 @@ namespace fgimpact
 
 
   void
-  ContactVtuWriter::write(const unsigned int         step,
+  ContactVtuWriter::write(const std::string         &tag,
                           const double               t,
                           const double               w,
                           const ContactState        &state,
@@ -74,15 +95,14 @@ namespace fgimpact
     // the two run apart), the PVD files at the top.
     std::error_code error;
     std::filesystem::create_directories(directory + "/vtu", error);
-    char name[64];
-    std::snprintf(name, sizeof(name), "vtu/sphere_%05u.vtu", step);
-    write_sphere(directory + "/" + name, w, state.force);
-    spheres.emplace_back(t, name);
+    const std::string sphere = "vtu/sphere_" + tag + ".vtu";
+    write_sphere(directory + "/" + sphere, w, state.force);
+    add_record(spheres, {t, sphere});
     if (!contact.contact_points().empty())
       {
-        std::snprintf(name, sizeof(name), "vtu/contact_%05u.vtu", step);
-        write_nodes(directory + "/" + name, state, node_uz);
-        contacts.emplace_back(t, name);
+        const std::string nodes = "vtu/contact_" + tag + ".vtu";
+        write_nodes(directory + "/" + nodes, state, node_uz);
+        add_record(contacts, {t, nodes});
       }
   }
 

@@ -6,6 +6,8 @@
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/output/postprocessors.h>
 
+#include <cmath>
+
 namespace fgimpact
 {
   namespace
@@ -211,12 +213,18 @@ namespace fgimpact
 
 
 
-  FieldWriter::FieldWriter(const PlateModel       &plate,
-                           const OutputParameters &parameters,
-                           const ContactModel     &contact,
-                           const Point<3>         &impact_point,
-                           const double            radius)
+  FieldWriter::FieldWriter(const PlateModel         &plate,
+                           const OutputParameters   &parameters,
+                           const ContactModel       &contact,
+                           const Point<3>           &impact_point,
+                           const double              radius,
+                           const ResultsAccumulator *results)
     : interval(parameters.vtu_interval)
+    , snapshot_times(parameters.snapshot_times)
+    , results(parameters.peak_snapshot ? results : nullptr)
+    , interpolator(!snapshot_times.empty() || this->results ?
+                     std::make_unique<SnapshotInterpolator>(plate) :
+                     nullptr)
     , communicator(plate.get_mpi_communicator())
     , contact(contact)
     , vtu(std::make_unique<VtuWriter>(plate,
@@ -254,30 +262,15 @@ namespace fgimpact
   void
   FieldWriter::execute(const StepRecord &record)
   {
-    if (!vtu || !record.fields || record.step % interval != 0)
+    if (!vtu || !record.fields)
       return;
-    const PlateFields &f = *record.fields;
     timer.start();
-    // Collective: before the rank-0-only writer.
-    const std::vector<double> node_uz = contact.contact_points().empty() ?
-                                          std::vector<double>() :
-                                          contact_node_uz(f.displacement());
-    // The PVD time in µs, as every CSV and the log.
-    const double t_us = record.t * 1e6;
     try
       {
-        vtu->write(record.step,
-                   t_us,
-                   f.displacement(),
-                   f.velocity(),
-                   {},
-                   &f.acceleration());
-        if (contact_vtu)
-          contact_vtu->write(record.step,
-                             t_us,
-                             record.sample->ball->w,
-                             *record.sample->contact,
-                             node_uz);
+        if (interval > 0 && record.step % interval == 0)
+          write_regular(record);
+        if (interpolator)
+          write_extras(record);
       }
     catch (const ExceptionBase &e)
       {
@@ -286,6 +279,76 @@ namespace fgimpact
         contact_vtu.reset();
       }
     timer.stop();
+  }
+
+
+
+  void
+  FieldWriter::write_regular(const StepRecord &record)
+  {
+    const PlateFields &f = *record.fields;
+    // Collective: before the rank-0-only writer.
+    const std::vector<double> node_uz = contact.contact_points().empty() ?
+                                          std::vector<double>() :
+                                          contact_node_uz(f.displacement());
+    // The PVD time in µs, as every CSV and the log.
+    const double t_us = record.t * 1e6;
+    vtu->write(
+      record.step, t_us, f.displacement(), f.velocity(), {}, &f.acceleration());
+    if (contact_vtu)
+      contact_vtu->write(Utilities::int_to_string(record.step, 5),
+                         t_us,
+                         record.sample->ball->w,
+                         *record.sample->contact,
+                         node_uz);
+  }
+
+
+
+  void
+  FieldWriter::write_extras(const StepRecord &record)
+  {
+    interpolator->push(record);
+    const bool regular = interval > 0 && record.step % interval == 0;
+    // Each requested time once, when the step that reaches it is done;
+    // one on this step's own time with a regular snapshot is that one.
+    for (; next_snapshot < snapshot_times.size() &&
+           snapshot_times[next_snapshot] <= interpolator->last_time();
+         ++next_snapshot)
+      {
+        const double t = snapshot_times[next_snapshot];
+        if (t < interpolator->first_time() ||
+            (regular && std::abs(t - record.t) <= 1e-9 * record.t))
+          continue;
+        // The name: the time in ns, 9 digits (solution_t000056300).
+        write_interpolated("t" +
+                             Utilities::int_to_string(static_cast<unsigned int>(
+                                                        std::llround(t * 1e9)),
+                                                      9),
+                           record.step,
+                           t);
+      }
+    if (results && results->new_peak() &&
+        results->peak_time() >= interpolator->first_time())
+      write_interpolated("peak", record.step, results->peak_time());
+  }
+
+
+
+  void
+  FieldWriter::write_interpolated(const std::string &name,
+                                  const unsigned int step,
+                                  const double       t)
+  {
+    interpolator->interpolate(t, interpolated);
+    const std::vector<double> node_uz = contact.contact_points().empty() ?
+                                          std::vector<double>() :
+                                          contact_node_uz(interpolated.u);
+    vtu->write_extra(
+      name, step, t * 1e6, interpolated.u, interpolated.v, interpolated.a);
+    if (contact_vtu)
+      contact_vtu->write(
+        name, t * 1e6, interpolated.ball.w, interpolated.contact, node_uz);
   }
 
 
@@ -353,6 +416,9 @@ namespace fgimpact
     out.put(in_flight);
     put_records(out, contact_vtu ? contact_vtu->sphere_records() : Records());
     put_records(out, contact_vtu ? contact_vtu->contact_records() : Records());
+    out.put(next_snapshot);
+    if (interpolator)
+      interpolator->save(out);
   }
 
 
@@ -365,6 +431,9 @@ namespace fgimpact
     in.get(rewrite_snapshot);
     get_records(in, sphere_records);
     get_records(in, contact_records);
+    in.get(next_snapshot);
+    if (interpolator)
+      interpolator->load(in);
   }
 
 

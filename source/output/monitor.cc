@@ -37,8 +37,10 @@ namespace fgimpact
   {
     output_timer.stop();
     output_timer.reset();
-    add(std::make_unique<ResultsAccumulator>(
-      results, contact, m_i, V0, dt, whole != 1., pcout));
+    auto accumulator = std::make_unique<ResultsAccumulator>(
+      results, contact, m_i, V0, dt, whole != 1., pcout);
+    results_accumulator = accumulator.get();
+    add(std::move(accumulator));
     add(std::make_unique<EnergyWatchdog>(pcout));
     auto columns = history_columns();
     if (contact.reports_contact_area())
@@ -80,9 +82,13 @@ namespace fgimpact
   ImpactMonitor::add_field_output(const Point<3> &impact_point,
                                   const double    sphere_radius)
   {
-    if (parameters.vtu_interval > 0)
-      add(std::make_unique<FieldWriter>(
-        plate, parameters, contact_model, impact_point, sphere_radius));
+    if (parameters.writes_vtu())
+      add(std::make_unique<FieldWriter>(plate,
+                                        parameters,
+                                        contact_model,
+                                        impact_point,
+                                        sphere_radius,
+                                        results_accumulator));
   }
 
 

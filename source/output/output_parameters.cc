@@ -4,6 +4,8 @@
 
 #include <fgimpact/output/monitor.h>
 
+#include <algorithm>
+
 namespace fgimpact
 {
   void
@@ -22,6 +24,27 @@ namespace fgimpact
                         Patterns::Integer(0, 100000000),
                         "Write VTU every this many time steps (and the "
                         "initial state); 0 = no VTU output.");
+      prm.declare_entry(
+        "Snapshot times",
+        "",
+        Patterns::List(Patterns::Double(0.), 0, 10000, ","),
+        "Impact runs: extra VTU snapshots at these times (µs, "
+        "comma-separated), also with VTU interval = 0: the plate, ball and "
+        "contact between the two time steps that hold the time, "
+        "interpolated (u, v and the ball by cubic Hermite interpolation, a "
+        "linearly, the forces by the parabola through three steps), as "
+        "vtu/solution_tNNNNNNNNN.pvtu (the time in ns); solution.pvd lists "
+        "them in time order with the regular ones.");
+      prm.declare_entry(
+        "Snapshot at peak force",
+        "true",
+        Patterns::Bool(),
+        "Impact runs with VTU output (VTU interval > 0 or Snapshot times): "
+        "also a snapshot at the time of the peak contact force "
+        "(vtu/solution_peak.pvtu, sphere_peak, contact_peak), interpolated "
+        "as Snapshot times to time_of_peak_force_us of summary.txt (the "
+        "vertex of the parabola through the largest sample and its two "
+        "neighbours).");
       prm.declare_entry("Log interval",
                         "50",
                         Patterns::Integer(0, 100000000),
@@ -84,9 +107,15 @@ namespace fgimpact
   OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    directory       = prm.get("Directory");
-    vtu_interval    = prm.get_integer("VTU interval");
-    log_interval    = prm.get_integer("Log interval");
+    directory    = prm.get("Directory");
+    vtu_interval = prm.get_integer("VTU interval");
+    log_interval = prm.get_integer("Log interval");
+    snapshot_times.clear();
+    for (const std::string &time :
+         Utilities::split_string_list(prm.get("Snapshot times")))
+      snapshot_times.push_back(Utilities::string_to_double(time) * 1e-6);
+    std::sort(snapshot_times.begin(), snapshot_times.end());
+    peak_snapshot   = prm.get_bool("Snapshot at peak force");
     print_timing    = prm.get_bool("Print timing");
     instrumentation = prm.get_bool("Instrumentation");
 

@@ -235,8 +235,23 @@ namespace fgimpact
     if (!record_pending)
       return;
     record_pending = false;
-    // Only rank 0 keeps the PVD, and it lists complete snapshots only.
-    times_and_names.push_back(pending_record);
+    // Only rank 0 keeps the PVD, and it lists complete snapshots only, in
+    // time order (an extra snapshot falls between regular ones; one of the
+    // same name, the peak's, is replaced).
+    times_and_names.erase(std::remove_if(times_and_names.begin(),
+                                         times_and_names.end(),
+                                         [this](const auto &entry) {
+                                           return entry.second ==
+                                                  pending_record.second;
+                                         }),
+                          times_and_names.end());
+    times_and_names.insert(std::upper_bound(times_and_names.begin(),
+                                            times_and_names.end(),
+                                            pending_record,
+                                            [](const auto &a, const auto &b) {
+                                              return a.first < b.first;
+                                            }),
+                           pending_record);
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, times_and_names);
     write_file_atomically(directory + "/solution.pvd", pvd.str());
@@ -247,7 +262,10 @@ namespace fgimpact
   std::vector<std::pair<double, std::string>>
   VtuWriter::records(const unsigned int step, bool &in_flight)
   {
-    in_flight = any_written && pending_step == step && pending.valid();
+    // An extra snapshot is waited for: the resumed run rewrites regular
+    // snapshots only.
+    in_flight =
+      any_written && pending_step == step && pending.valid() && !pending_extra;
     if (!in_flight)
       finish();
     return times_and_names;
@@ -318,6 +336,42 @@ namespace fgimpact
                    const std::pair<std::string, double> &constant_field,
                    const TrilinosWrappers::MPI::Vector  *a)
   {
+    write_snapshot("solution_" + Utilities::int_to_string(step, 5),
+                   step,
+                   t,
+                   u,
+                   v,
+                   constant_field,
+                   a);
+    pending_extra = false;
+  }
+
+
+
+  void
+  VtuWriter::write_extra(const std::string                   &name,
+                         const unsigned int                   step,
+                         const double                         t,
+                         const TrilinosWrappers::MPI::Vector &u,
+                         const TrilinosWrappers::MPI::Vector &v,
+                         const TrilinosWrappers::MPI::Vector &a)
+  {
+    write_snapshot("solution_" + name, step, t, u, v, {}, &a);
+    pending_extra = true;
+  }
+
+
+
+  void
+  VtuWriter::write_snapshot(
+    const std::string                    &base,
+    const unsigned int                    step,
+    const double                          t,
+    const TrilinosWrappers::MPI::Vector  &u,
+    const TrilinosWrappers::MPI::Vector  &v,
+    const std::pair<std::string, double> &constant_field,
+    const TrilinosWrappers::MPI::Vector  *a)
+  {
     finish(); // the previous snapshot still reads u_ghosted, v_ghosted
     any_written                  = true;
     u_ghosted                    = u;
@@ -333,8 +387,7 @@ namespace fgimpact
     const MPI_Comm     comm    = plate.get_mpi_communicator();
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
-    const std::string  base   = "solution_" + Utilities::int_to_string(step, 5);
-    const std::string  record = "vtu/" + base + ".pvtu";
+    const std::string  record  = "vtu/" + base + ".pvtu";
 
     // Patches and files, in the background on one rank. On several ranks
     // DataOut on the distributed mesh makes MPI calls of its own, which

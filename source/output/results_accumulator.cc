@@ -126,6 +126,7 @@ namespace fgimpact
   {
     ImpactResults &r = results;
     const double   F = sample.contact->force;
+    peak_resolved    = false;
     // Peak force: the parabola through the largest sample and its two
     // neighbours (second-order accurate in dt, unlike the largest sample,
     // whose error depends on where the samples fall).
@@ -147,7 +148,8 @@ namespace fgimpact
               Fm - (peak_left - F) * (peak_left - F) / (8. * d);
             r.time_of_peak_force = t - dt + dt * (peak_left - F) / (2. * d);
           }
-        peak_pending = false;
+        peak_pending  = false;
+        peak_resolved = true;
       }
     const ContactState &c  = *sample.contact;
     r.max_indentation      = std::max(r.max_indentation, c.alpha);

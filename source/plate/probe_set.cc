@@ -40,7 +40,7 @@ namespace fgimpact
       return begin == std::string::npos ? "" : s.substr(begin, end - begin + 1);
     }
 
-    /// A coordinate: a number in mm, or a number followed by the letter of
+    /// A coordinate: a number in m, or a number followed by the letter of
     /// its plate dimension (fraction of a, b or h).
     std::pair<double, bool>
     parse_coordinate(const std::string &text,
@@ -62,7 +62,7 @@ namespace fgimpact
         }
       if (number.empty() || used != number.size() || !std::isfinite(value))
         refuse("'" + point + "': the coordinate '" + t +
-               "' is not a number in mm or a fraction followed by '" +
+               "' is not a number in m or a fraction followed by '" +
                std::string(1, letter) + "'.");
       return {value, fraction};
     }
@@ -76,7 +76,7 @@ namespace fgimpact
     const double size[3] = {a, b, h};
     Point<3>     p;
     for (unsigned int d = 0; d < 3; ++d)
-      p[d] = fraction[d] ? value[d] * size[d] : value[d] * 1e-3;
+      p[d] = fraction[d] ? value[d] * size[d] : value[d];
     return p;
   }
 
@@ -92,8 +92,8 @@ namespace fgimpact
       "Points whose displacement, velocity, acceleration and recovered "
       "stress an impact run writes to probes.csv at every time step (with "
       "the total support reaction): 'name: x, y, z' separated by ';'. "
-      "Coordinates in mm from the corner (0, 0, 0) (z from the bottom "
-      "face), or as a fraction of the plate's length, width or thickness "
+      "Coordinates in m (as every length of the input) from the corner "
+      "(0, 0, 0) (z from the bottom face), or as a fraction of the plate's length, width or thickness "
       "with the suffix a, b or h (0.5a = the middle of the length). Names: "
       "letters, digits and '_'. Empty: no probes.csv. The default: the "
       "centre of the mid-plane, the top and the bottom face.");

@@ -77,6 +77,10 @@ namespace
             "sphere_99999.vtu",
             "contact_99999.vtu",
             "peak_fields.3.vtu",
+            "vtu/solution_00020.1.vtu",
+            "vtu/solution_peak.pvtu",
+            "vtu/solution_t000037500.0.vtu",
+            "vtu/sphere_peak.vtu",
             "summary.txt",
             "history.csv.tmp",
             "checkpoint/rank_0003.bin",
@@ -96,7 +100,9 @@ namespace
             "contact_x.vtu",
             "peak_fields.mine.vtu",
             "history.csv.bak",
-            "mine/solution_00000.0.vtu"};
+            "mine/solution_00000.0.vtu",
+            "vtu/solution_t37.5.vtu",
+            "vtu/notes.txt"};
   }
 
   std::string

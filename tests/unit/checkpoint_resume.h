@@ -192,6 +192,11 @@ namespace checkpoint_test
             name != "parameters.prm" && name != "input.prm" && name[0] != '.')
           names.insert(name);
       }
+    // The VTU files, in their folder.
+    if (fs::is_directory(directory + "/vtu"))
+      for (const auto &entry : fs::directory_iterator(directory + "/vtu"))
+        if (entry.is_regular_file())
+          names.insert("vtu/" + entry.path().filename().string());
     return names;
   }
 

@@ -475,7 +475,7 @@ main()
   {
     write("cli_probes.prm", scene("cli_probes"));
     const int code = run("cli_probes.prm -s 'Output/Probe points=corner: "
-                         "0, 0, 0; q: 0.25a, 0.5b, 15'");
+                         "0, 0, 0; q: 0.25a, 0.5b, 0.015'");
     const std::string probes = read("cli_probes/probes.csv");
     check("named probes: probes.csv has t_us, support_reaction_z_N, the "
           "named columns and a row per history row",
@@ -484,7 +484,7 @@ main()
             contains(probes, "q_sigma_yz_MPa\n") &&
             n_lines(probes) == n_lines(history("cli_probes")));
     const int         outside = run("cli_probes.prm -s 'Output/Probe "
-                                    "points=far: 250, 50, 5'");
+                                    "points=far: 0.25, 0.05, 0.005'");
     const std::string err     = read("cli.stderr");
     check("a probe outside the plate: exit 1, one line naming the entry "
           "and the point",

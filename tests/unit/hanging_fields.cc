@@ -68,7 +68,7 @@ namespace
     std::vector<std::array<PointValues, 8>> cells;
     for (unsigned int piece = 0; piece < n_pieces; ++piece)
       {
-        const std::string file = "out/solution_" +
+        const std::string file = "out/vtu/solution_" +
                                  Utilities::int_to_string(step, 5) + "." +
                                  std::to_string(piece) + ".vtu";
         const auto                      xyz = fgimpact_tests::read_points(file);
@@ -215,6 +215,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  fgimpact_tests::remove_output("out");
   const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
   const bool root       = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   const std::string prm = FGIMPACT_SOURCE_DIR "/prm/default.prm";
@@ -270,7 +271,7 @@ main(int argc, char **argv)
     }
 
   // 3. Probes on the top-face hanging vertex that moves most and 1e-9 m
-  // beside it (towards the plate's edge x = 0), in mm.
+  // beside it (towards the plate's edge x = 0), in m.
   std::array<double, 3> vertex{};
   if (root)
     {
@@ -280,18 +281,18 @@ main(int argc, char **argv)
           {
             largest = std::abs(p.f[2]);
             for (unsigned int d = 0; d < 3; ++d)
-              vertex[d] = std::round(p.x[d] * 1e6) * 1e-3; // mm, whole um
+              vertex[d] = std::round(p.x[d] * 1e6) * 1e-6; // m, whole um
           }
     }
   vertex = Utilities::MPI::broadcast(MPI_COMM_WORLD, vertex, 0);
   char probes[200];
   std::snprintf(probes,
                 sizeof(probes),
-                "hanging: %.3f, %.3f, %.3f; beside: %.6f, %.3f, %.3f",
+                "hanging: %.6f, %.6f, %.6f; beside: %.9f, %.6f, %.6f",
                 vertex[0],
                 vertex[1],
                 vertex[2],
-                vertex[0] - 1e-6,
+                vertex[0] - 1e-9,
                 vertex[1],
                 vertex[2]);
   fgimpact_tests::run_quietly(prm, scene(probes));
@@ -331,9 +332,9 @@ main(int argc, char **argv)
                   "(u_z down to %.4f um) and 1e-9 m beside it, %u rows: "
                   "largest |difference| of u %.6f um, of v %.6f m/s "
                   "(<= 2e-6: %s)\n",
-                  vertex[0],
-                  vertex[1],
-                  vertex[2],
+                  vertex[0] * 1e3,
+                  vertex[1] * 1e3,
+                  vertex[2] * 1e3,
                   uz_peak,
                   rows,
                   largest_u,

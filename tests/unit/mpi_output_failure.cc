@@ -112,7 +112,10 @@ main()
   const std::string dir = "failure_out";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  fs::create_symlink("/dev/full", dir + "/solution_00010.1.vtu");
+  // The whole plate from a quarter: rank 1 writes the pieces 2 and 3 (two
+  // per rank); the first of them cannot be written.
+  fs::create_directories(dir + "/vtu");
+  fs::create_symlink("/dev/full", dir + "/vtu/solution_00010.2.vtu");
   // A hang would be ended by timeout (exit code 124).
   const int  exit_code = run_two_ranks(dir, " set VTU interval = 5\n");
   const bool no_hang   = exit_code != 124;
@@ -122,7 +125,7 @@ main()
   const std::string ours = our_line(n_ours);
   std::string       line;
   const bool        one_line = n_ours == 1;
-  const bool named = ours.find("solution_00010.1.vtu") != std::string::npos;
+  const bool named = ours.find("solution_00010.2.vtu") != std::string::npos;
 
   const std::string summary = read(dir + "/summary.txt");
   const bool failed = summary.find("status = failed") != std::string::npos &&

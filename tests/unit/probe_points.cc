@@ -86,9 +86,10 @@ namespace
   ProbePoint
   probe(const char *name, const double x, const double y, const double z)
   {
+    // The arguments in mm, the entry in m.
     ProbePoint p;
     p.name  = name;
-    p.value = {{x, y, z}};
+    p.value = {{x * 1e-3, y * 1e-3, z * 1e-3}};
     return p;
   }
 

@@ -30,7 +30,7 @@ namespace
   std::string
   snapshot(const unsigned int n)
   {
-    return "out/solution_" + Utilities::int_to_string(n, 5) + ".0.vtu";
+    return "out/vtu/solution_" + Utilities::int_to_string(n, 5) + ".0.vtu";
   }
 } // namespace
 
@@ -38,6 +38,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  fgimpact_tests::remove_output("out");
   fgimpact_tests::run_quietly(
     "",
     "subsection Geometry\n set Subdivisions x = 10\n set Subdivisions y = 6\n"

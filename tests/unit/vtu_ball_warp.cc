@@ -1,6 +1,7 @@
 // The ball and the contact nodes in ParaView warp with the plate: read
-// back from the files a user opens (sphere_NNNNN.vtu, contact_NNNNN.vtu,
-// solution_NNNNN.0.vtu, history.csv) after a resolved-sphere impact,
+// back from the files a user opens (vtu/sphere_NNNNN.vtu,
+// vtu/contact_NNNNN.vtu, vtu/solution_NNNNN.0.vtu, history.csv) after a
+// resolved-sphere impact,
 //  (1) the sphere is written at its reference position, its lowest point
 //      on the undeformed top face (the plate VTU's largest z, float32:
 //      to 1e-8 m), and its
@@ -21,6 +22,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <test_tools.h>
@@ -51,7 +53,7 @@ namespace
   std::string
   file(const std::string &series, const unsigned int n)
   {
-    return "out/" + series + "_" + Utilities::int_to_string(n, 5) +
+    return "out/vtu/" + series + "_" + Utilities::int_to_string(n, 5) +
            (series == "solution" ? ".0.vtu" : ".vtu");
   }
 
@@ -81,6 +83,7 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  fgimpact_tests::remove_output("out");
   fgimpact_tests::run_quietly(
     "",
     "subsection Contact\n set Model = resolved sphere\nend\n"

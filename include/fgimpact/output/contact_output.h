@@ -43,12 +43,14 @@ namespace fgimpact
                      const ContactModel  &contact,
                      const PlateGeometry *mirror = nullptr);
 
-    /// Write the snapshot of step `step` at time t (µs), with the ball's
+    /// Write the snapshot `tag` (the step's 5 digits, or an extra
+    /// snapshot's name; one of the same tag is replaced in the PVD) at
+    /// time t (µs), with the ball's
     /// displacement w (m, positive down) and the z displacement of the
     /// plate at each contact node (m, positive up; in the order of
     /// ContactModel::contact_points(); empty: zero).
     void
-    write(const unsigned int         step,
+    write(const std::string         &tag,
           const double               t,
           const double               w,
           const ContactState        &state,

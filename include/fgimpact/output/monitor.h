@@ -43,6 +43,18 @@ namespace fgimpact
     /// Entry "Checkpoint interval" (steps; 0 = none).
     unsigned int checkpoint_interval = 200;
 
+    /// Entry "Snapshot times" (s, ascending; the input is in µs) and
+    /// "Snapshot at peak force".
+    std::vector<double> snapshot_times;
+    bool                peak_snapshot = true;
+
+    /// Whether any VTU series is written.
+    bool
+    writes_vtu() const
+    {
+      return vtu_interval > 0 || !snapshot_times.empty();
+    }
+
     /// Entry "VTU compression" (zlib level of the VTU data).
     DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression =
       DataOutBase::VtkFlags::best_speed;
@@ -236,7 +248,9 @@ namespace fgimpact
     /// In the order they run at every step.
     std::vector<std::unique_ptr<Postprocessor>> postprocessors;
     HistoryWriter                              *history = nullptr;
-    Timer                                       output_timer;
+    /// The results, for the snapshot at the peak force.
+    const ResultsAccumulator *results_accumulator = nullptr;
+    Timer                     output_timer;
 
     /// Models without a potential: the contact force (N) and approach at
     /// the top node (m) of the last step, and the force's work on it (J).

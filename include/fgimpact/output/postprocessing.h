@@ -139,6 +139,21 @@ namespace fgimpact
           const std::pair<std::string, double> &constant_field = {},
           const TrilinosWrappers::MPI::Vector  *a              = nullptr);
 
+    /**
+     * An extra snapshot at time t (the PVD time) between the regular ones,
+     * as Directory/vtu/solution_<name>.pvtu (and pieces), listed in the
+     * PVD in time order; an earlier snapshot of the same name is replaced
+     * (the peak force's, when a higher peak comes).  step: the time step
+     * it was written at (for a checkpoint).
+     */
+    void
+    write_extra(const std::string                   &name,
+                const unsigned int                   step,
+                const double                         t,
+                const TrilinosWrappers::MPI::Vector &u,
+                const TrilinosWrappers::MPI::Vector &v,
+                const TrilinosWrappers::MPI::Vector &a);
+
     /// Wait for the pending snapshot, rethrowing its errors, and list it
     /// in the PVD.
     void
@@ -180,6 +195,16 @@ namespace fgimpact
     void
     add_recovered_fields(DataOut<3> &data_out);
 
+    /// Write the snapshot Directory/vtu/<base>.pvtu (see write()).
+    void
+    write_snapshot(const std::string                    &base,
+                   const unsigned int                    step,
+                   const double                          t,
+                   const TrilinosWrappers::MPI::Vector  &u,
+                   const TrilinosWrappers::MPI::Vector  &v,
+                   const std::pair<std::string, double> &constant_field,
+                   const TrilinosWrappers::MPI::Vector  *a);
+
     /**
      * This rank's pieces of data_out (1, or 2 for a mirrored part,
      * written by two threads) as Directory/vtu/base.K.vtu (K numbering
@@ -208,6 +233,7 @@ namespace fgimpact
     std::pair<double, std::string>              pending_record;
     bool                                        record_pending = false;
     unsigned int                                pending_step   = 0;
+    bool                                        pending_extra  = false;
     std::future<void>                           pending;
     bool                                        any_written = false;
 

@@ -10,6 +10,7 @@
 #include <fgimpact/output/postprocessing.h>
 #include <fgimpact/output/postprocessor.h>
 #include <fgimpact/output/results.h>
+#include <fgimpact/output/snapshot_interpolation.h>
 #include <fgimpact/plate/probe_set.h>
 
 #include <functional>
@@ -51,6 +52,20 @@ namespace fgimpact
     void
     finish(const ImpactorState &ball) override;
 
+    /// Whether the last step resolved a new peak of the contact force
+    /// (the parabola through the largest sample and its neighbours), and
+    /// its time (s), as time_of_peak_force_us will give it.
+    bool
+    new_peak() const
+    {
+      return peak_resolved;
+    }
+    double
+    peak_time() const
+    {
+      return results.time_of_peak_force;
+    }
+
   private:
     void
     update_episodes(const double t, const ContactState &contact);
@@ -67,8 +82,9 @@ namespace fgimpact
     bool   separated_once = false;
     double last_force = 0, last_alpha = 0;
     // Peak detection: the sample left of the largest one.
-    double peak_left    = 0;
-    bool   peak_pending = false;
+    double peak_left     = 0;
+    bool   peak_pending  = false;
+    bool   peak_resolved = false; // in the last step only: no checkpoint
   };
 
 
@@ -213,11 +229,13 @@ namespace fgimpact
   public:
     /// impact_point: where the ball first touches the top face; radius:
     /// the ball's (m).
-    FieldWriter(const PlateModel       &plate,
-                const OutputParameters &parameters,
-                const ContactModel     &contact,
-                const Point<3>         &impact_point,
-                const double            radius);
+    /// results: for the snapshot at the peak force (nullptr: none).
+    FieldWriter(const PlateModel         &plate,
+                const OutputParameters   &parameters,
+                const ContactModel       &contact,
+                const Point<3>           &impact_point,
+                const double              radius,
+                const ResultsAccumulator *results);
 
     std::string
     name() const override
@@ -233,7 +251,7 @@ namespace fgimpact
     bool
     needs_rates(const unsigned int step) const override
     {
-      return step % interval == 0;
+      return interpolator || (interval > 0 && step % interval == 0);
     }
     void
     start() override;
@@ -267,11 +285,32 @@ namespace fgimpact
     std::vector<double>
     contact_node_uz(const TrilinosWrappers::MPI::Vector &u) const;
 
-    const unsigned int                interval;
-    const MPI_Comm                    communicator;
-    const ContactModel               &contact;
-    std::unique_ptr<VtuWriter>        vtu;
-    std::unique_ptr<ContactVtuWriter> contact_vtu;
+    /// The regular snapshot of this step (the step's 5 digits).
+    void
+    write_regular(const StepRecord &record);
+
+    /// The snapshots between the last two steps: Output/Snapshot times
+    /// and the peak force's (interpolated, SnapshotInterpolator).
+    void
+    write_extras(const StepRecord &record);
+
+    /// One interpolated snapshot named `name` at time t (s).
+    void
+    write_interpolated(const std::string &name,
+                       const unsigned int step,
+                       const double       t);
+
+    const unsigned int interval;
+    /// Output/Snapshot times (s, ascending) and the next one to write.
+    const std::vector<double>             snapshot_times;
+    unsigned int                          next_snapshot = 0;
+    const ResultsAccumulator             *results;
+    std::unique_ptr<SnapshotInterpolator> interpolator;
+    SnapshotInterpolator::State           interpolated;
+    const MPI_Comm                        communicator;
+    const ContactModel                   &contact;
+    std::unique_ptr<VtuWriter>            vtu;
+    std::unique_ptr<ContactVtuWriter>     contact_vtu;
     Records vtu_records, sphere_records, contact_records;
     bool    resumed = false, rewrite_snapshot = false;
     Timer   timer;

@@ -1,0 +1,311 @@
+#!/usr/bin/env pvpython
+"""Render the standard pictures of an fgimpact run with ParaView.
+
+Usage:  pvpython scripts/render.py OUTPUT_DIR [--out DIR] [--frames N]
+        (headless: xvfb-run -a pvpython scripts/render.py OUTPUT_DIR; Debian's
+        ParaView 5.11 crashed with --force-offscreen-rendering)
+
+Reads OUTPUT_DIR/solution.pvd (and sphere.pvd, contact.pvd, summary.txt) and
+writes into OUTPUT_DIR/pictures (or --out):
+
+  deformed_von_mises.png  the deformed plate (displacement magnified so the
+                          largest deflection is 5 % of the plate's length)
+                          and the ball, coloured by von Mises stress (MPa),
+                          at the peak contact force
+  deformed_sigma_zz.png   the same, coloured by sigma_zz (MPa)
+  section.png             the section y = b/2 through the impact point,
+                          coloured by von Mises stress (MPa), at the peak
+  contact_pressure.png    the contact nodes seen from above, coloured by the
+                          contact pressure (MPa), at the peak (resolved
+                          contact only)
+  plastic_strain.png      the equivalent plastic strain (when the files
+                          hold it)
+  animation/frame_NNNN.png  the deformed plate over the run (--frames, 0: none)
+  scene.pvsm              a ParaView state with the deformed plate, ball and
+                          section at the peak: File > Load State, choose
+                          "Search files under specified directory" and this
+                          OUTPUT_DIR to open it on any machine
+
+Every picture has the time in us and the scene (the output directory and the
+peak force of summary.txt) in its title, and a colour bar with the unit.
+Exit 2 with one line on a bad command line or a directory without
+solution.pvd.
+"""
+
+import argparse
+import math
+import os
+import sys
+
+
+def fail(message):
+    sys.stderr.write("render.py: " + message + "\n")
+    sys.exit(2)
+
+
+def parse_arguments():
+    parser = argparse.ArgumentParser(
+        description="Render the standard pictures of an fgimpact run.")
+    parser.add_argument("directory", help="the run's Output/Directory")
+    parser.add_argument("--out", help="where to write (default "
+                        "DIRECTORY/pictures)")
+    parser.add_argument("--frames", type=int, default=24,
+                        help="animation frames (0: no animation)")
+    parser.add_argument("--size", type=int, nargs=2, default=[1200, 700],
+                        metavar=("W", "H"), help="picture size in pixels")
+    args = parser.parse_args()
+    if not os.path.isfile(os.path.join(args.directory, "solution.pvd")):
+        fail(args.directory + " has no solution.pvd (set Output/VTU "
+             "interval or Output/Snapshot times)")
+    if args.frames < 0:
+        fail("--frames must be >= 0")
+    return args
+
+
+def summary(directory):
+    """summary.txt's keys and values (strings); empty if missing."""
+    values = {}
+    path = os.path.join(directory, "summary.txt")
+    if os.path.isfile(path):
+        for line in open(path):
+            if " = " in line and not line.startswith("#"):
+                key, value = line.split(" = ", 1)
+                values[key.strip()] = value.strip()
+    return values
+
+
+def history_column(directory, name):
+    """(t_us, value) pairs of a history.csv column; [] if missing."""
+    import csv
+    path = os.path.join(directory, "history.csv")
+    if not os.path.isfile(path):
+        return []
+    rows = list(csv.DictReader(open(path)))
+    if not rows or name not in rows[0]:
+        return []
+    return [(float(r["t_us"]), float(r[name])) for r in rows]
+
+
+def interpolate(pairs, t):
+    """Linear interpolation in (t, value) pairs sorted by t."""
+    for (t0, v0), (t1, v1) in zip(pairs, pairs[1:]):
+        if t0 <= t <= t1:
+            return v0 + (v1 - v0) * (t - t0) / (t1 - t0) if t1 > t0 else v0
+    return pairs[-1][1] if t > pairs[-1][0] else pairs[0][1]
+
+
+def pvd_times(path):
+    """The timestep values (us) of a PVD file, in its order."""
+    import re
+    return [float(t) for t in
+            re.findall(r'timestep="([^"]+)"', open(path).read())]
+
+
+def main():
+    args = parse_arguments()
+    # Imported here: --help and the argument checks work without ParaView.
+    from paraview import simple as pv
+
+    directory = os.path.abspath(args.directory)
+    out = os.path.abspath(args.out or os.path.join(directory, "pictures"))
+    os.makedirs(out, exist_ok=True)
+    keys = summary(directory)
+    scene = os.path.basename(directory.rstrip("/"))
+    if "peak_contact_force_N" in keys:
+        scene += ", peak force %.0f N" % float(keys["peak_contact_force_N"])
+    times = pvd_times(os.path.join(directory, "solution.pvd"))
+    t_peak = float(keys.get("time_of_peak_force_us", "nan"))
+    if math.isnan(t_peak):
+        t_peak = times[len(times) // 2]
+    # The snapshot nearest the peak (the peak's own one if written).
+    t_show = min(times, key=lambda t: abs(t - t_peak))
+
+    plate = pv.PVDReader(FileName=os.path.join(directory, "solution.pvd"))
+    plate.UpdatePipelineInformation()
+    arrays = plate.PointData.keys()
+    if "displacement_m" not in arrays:
+        fail("solution.pvd has no displacement_m (Output/Fields)")
+
+    # The magnification: the largest |u| over the run -> 5 % of the length.
+    bounds = plate.GetDataInformation().GetBounds()
+    length = bounds[1] - bounds[0]
+    largest = 0.0
+    for t in times:
+        plate.UpdatePipeline(t)
+        r = plate.PointData["displacement_m"].GetRange(-1)
+        largest = max(largest, r[1])
+    factor = 0.05 * length / largest if largest > 0 else 1.0
+
+    warp = pv.WarpByVector(Input=plate, Vectors=["POINTS", "displacement_m"],
+                           ScaleFactor=factor)
+    # The ball: with a resolved contact (contact.pvd) it touches the plate
+    # where the plate is, so it is warped like the plate; a Hertz model's
+    # indentation is a law, not geometry (magnified, the ball would sink
+    # into the plate), so there the ball rests on the magnified top node:
+    # moved by the factor times history.csv's top deflection.
+    ball = None
+    resolved = os.path.isfile(os.path.join(directory, "contact.pvd"))
+    top = history_column(directory, "top_deflection_um")
+    if os.path.isfile(os.path.join(directory, "sphere.pvd")):
+        sphere = pv.PVDReader(FileName=os.path.join(directory, "sphere.pvd"))
+        if resolved or not top:
+            ball = pv.WarpByVector(Input=sphere,
+                                   Vectors=["POINTS", "displacement_m"],
+                                   ScaleFactor=factor)
+        else:
+            ball = pv.Transform(Input=sphere)
+            ball.Transform = "Transform"
+
+    def place_ball(t):
+        if ball is not None and not resolved and top:
+            ball.Transform.Translate = [0, 0, -factor * 1e-6 *
+                                        interpolate(top, t)]
+
+    view = pv.CreateView("RenderView")
+    view.ViewSize = args.size
+    view.Background = [1, 1, 1]
+    view.OrientationAxesVisibility = 1
+    # ParaView 5.11: a white background needs dark text.
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    title = pv.Text(Text="")
+    title_display = pv.Show(title, view)
+    title_display.Color = [0, 0, 0]
+    title_display.FontSize = 14
+    title_display.WindowLocation = "Upper Center"
+
+    def colour(display, field, label):
+        # One colour bar: the previous field's goes.
+        for name in colour.shown:
+            pv.HideScalarBarIfNotNeeded(pv.GetColorTransferFunction(name),
+                                        view)
+            pv.GetScalarBar(pv.GetColorTransferFunction(name),
+                            view).Visibility = 0
+        colour.shown = [field]
+        pv.ColorBy(display, ("POINTS", field))
+        lut = pv.GetColorTransferFunction(field)
+        lut.ApplyPreset("Cool to Warm", True)
+        display.RescaleTransferFunctionToDataRange(False, True)
+        display.SetScalarBarVisibility(view, True)
+        bar = pv.GetScalarBar(lut, view)
+        bar.Title = label
+        bar.ComponentTitle = ""
+        bar.TitleColor = [0, 0, 0]
+        bar.LabelColor = [0, 0, 0]
+
+    colour.shown = []
+
+    def set_title(text, t):
+        title.Text = "%s\nt = %.2f us  (%s)" % (text, t, scene)
+
+    def camera_3d():
+        view.CameraPosition = [bounds[0] - 0.3 * length,
+                               bounds[2] - 1.2 * length,
+                               bounds[5] + 0.45 * length]
+        view.CameraFocalPoint = [0.5 * (bounds[0] + bounds[1]),
+                                 0.5 * (bounds[2] + bounds[3]),
+                                 0.5 * (bounds[4] + bounds[5])]
+        view.CameraViewUp = [0, 0, 1]
+        view.ResetCamera(False)
+
+    written = []
+
+    def save(name):
+        path = os.path.join(out, name)
+        pv.SaveScreenshot(path, view, ImageResolution=args.size)
+        written.append(path)
+
+    view.ViewTime = t_show
+    place_ball(t_show)
+    plate_display = pv.Show(warp, view)
+    ball_display = None
+    if ball is not None:
+        ball_display = pv.Show(ball, view)
+        ball_display.ColorArrayName = [None, ""]
+        ball_display.DiffuseColor = [0.75, 0.75, 0.8]
+        ball_display.AmbientColor = [0.75, 0.75, 0.8]
+    camera_3d()
+    fields = warp.PointData.keys()
+    pictures = [("von_mises_MPa", "von Mises stress (MPa)",
+                 "deformed_von_mises.png"),
+                ("sigma_zz_MPa", "sigma_zz (MPa)", "deformed_sigma_zz.png"),
+                ("equivalent_plastic_strain", "equivalent plastic strain (-)",
+                 "plastic_strain.png")]
+    for field, label, name in pictures:
+        if field in fields:
+            colour(plate_display, field, label)
+            set_title("Deformed plate (displacement x %.0f), %s" %
+                      (factor, label), t_show)
+            save(name)
+
+    # The section y = b/2 through the impact point.
+    section = pv.Slice(Input=warp)
+    section.SliceType = "Plane"
+    section.SliceType.Origin = [0.5 * (bounds[0] + bounds[1]),
+                                0.5 * (bounds[2] + bounds[3]),
+                                0.5 * (bounds[4] + bounds[5])]
+    section.SliceType.Normal = [0, 1, 0]
+    pv.Hide(warp, view)
+    section_display = pv.Show(section, view)
+    field = "von_mises_MPa" if "von_mises_MPa" in fields else "displacement_m"
+    colour(section_display, field, "von Mises stress (MPa)"
+           if field == "von_mises_MPa" else "displacement (m)")
+    view.CameraPosition = [section.SliceType.Origin[0],
+                           bounds[2] - 2 * length, section.SliceType.Origin[2]]
+    view.CameraFocalPoint = section.SliceType.Origin
+    view.CameraViewUp = [0, 0, 1]
+    view.ResetCamera(False)
+    set_title("Section y = b/2 through the impact point", t_show)
+    save("section.png")
+    pv.Hide(section, view)
+
+    # The contact pressure, seen from above.
+    if os.path.isfile(os.path.join(directory, "contact.pvd")):
+        nodes = pv.PVDReader(FileName=os.path.join(directory, "contact.pvd"))
+        if ball_display is not None:
+            pv.Hide(ball, view)
+        node_display = pv.Show(nodes, view)
+        node_display.SetRepresentationType("Points")
+        node_display.PointSize = 8
+        colour(node_display, "contact_pressure_MPa", "contact pressure (MPa)")
+        nodes.UpdatePipeline(t_show)
+        nb = nodes.GetDataInformation().GetBounds()
+        centre = [0.5 * (nb[0] + nb[1]), 0.5 * (nb[2] + nb[3]), nb[5]]
+        view.CameraPosition = [centre[0], centre[1], centre[2] + length]
+        view.CameraFocalPoint = centre
+        view.CameraViewUp = [0, 1, 0]
+        view.ResetCamera(False)
+        set_title("Contact pressure at the nodes", t_show)
+        save("contact_pressure.png")
+        pv.Hide(nodes, view)
+        if ball_display is not None:
+            pv.Show(ball, view)
+
+    # The state file: the deformed plate and ball at the peak.
+    pv.Show(warp, view)
+    colour(plate_display, "von_mises_MPa" if "von_mises_MPa" in fields
+           else "displacement_m", "von Mises stress (MPa)"
+           if "von_mises_MPa" in fields else "displacement (m)")
+    camera_3d()
+    set_title("Deformed plate (displacement x %.0f)" % factor, t_show)
+    pv.SaveState(os.path.join(out, "scene.pvsm"))
+    written.append(os.path.join(out, "scene.pvsm"))
+
+    # The animation: frames over the run, the colour range fixed.
+    if args.frames > 0:
+        os.makedirs(os.path.join(out, "animation"), exist_ok=True)
+        for k in range(args.frames):
+            t = times[0] + (times[-1] - times[0]) * k / max(args.frames - 1, 1)
+            t = min(times, key=lambda s: abs(s - t))
+            view.ViewTime = t
+            place_ball(t)
+            set_title("Deformed plate (displacement x %.0f)" % factor, t)
+            save(os.path.join("animation", "frame_%04d.png" % k))
+    for path in written:
+        print(path)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,182 @@
+// Snapshots between time steps (Output/Snapshot times and the snapshot at
+// the peak force), read back from the files a user opens: solution.pvd,
+// vtu/solution_*.0.vtu, vtu/sphere_peak.vtu, history.csv and summary.txt,
+// after a Hertz impact on a 10 x 6 x 2 plate with dt = 1 us:
+//  (1) solution.pvd lists the regular snapshots (every 20 steps), the
+//      requested 0.25 and 37.5 us, and the peak, in time order and each
+//      time once (60 us is also a regular snapshot: written once);
+//  (2) the peak snapshot's time equals time_of_peak_force_us of
+//      summary.txt to 0.01 us, and the ball's contact_force_N in
+//      sphere_peak.vtu equals peak_contact_force_N (both the vertex of the
+//      parabola through the three largest-force steps: one from the
+//      results' formula, one from the snapshot's Lagrange interpolation);
+//  (3) the interpolated plate: the top centre node's u_z in the 37.5 us
+//      snapshot (cubic Hermite from u and v at 37 and 38 us) against the
+//      cubic through history.csv's top_deflection_um at 36, 37, 38 and
+//      39 us (both fourth-order in dt), relative to the largest
+//      deflection; and the ball's displacement (sphere file) against the
+//      cubic through impactor_displacement_um.
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <test_tools.h>
+#include <vtu_reader.h>
+
+using namespace dealii;
+
+namespace
+{
+  /// The PVD's timestep values, in the order listed.
+  std::vector<double>
+  pvd_times(const std::string &file)
+  {
+    const std::string   text = fgimpact_tests::file_text(file);
+    std::vector<double> times;
+    for (auto at = text.find("timestep=\""); at != std::string::npos;
+         at      = text.find("timestep=\"", at + 1))
+      times.push_back(std::stod(text.substr(at + 10)));
+    return times;
+  }
+
+  /// A number of summary.txt.
+  double
+  summary_value(const std::string &key)
+  {
+    std::ifstream in("out/summary.txt");
+    for (std::string line; std::getline(in, line);)
+      if (line.rfind(key + " = ", 0) == 0)
+        return std::stod(line.substr(key.size() + 3));
+    AssertThrow(false, ExcMessage(key + " not in summary.txt"));
+    return 0;
+  }
+
+  /// A column of history.csv (one row per step, dt = 1 us).
+  std::vector<double>
+  history_column(const std::string &name)
+  {
+    std::ifstream in("out/history.csv");
+    std::string   line;
+    std::getline(in, line);
+    const auto header = Utilities::split_string_list(line, ',');
+    const auto column =
+      std::find(header.begin(), header.end(), name) - header.begin();
+    std::vector<double> values;
+    while (std::getline(in, line))
+      values.push_back(
+        std::stod(Utilities::split_string_list(line, ',')[column]));
+    return values;
+  }
+
+  /// The cubic through (k, f[k]) for k = i-1 .. i+2 at i + s.
+  double
+  cubic(const std::vector<double> &f, const unsigned int i, const double s)
+  {
+    const double x[4] = {-1., 0., 1., 2.};
+    double       sum  = 0;
+    for (unsigned int k = 0; k < 4; ++k)
+      {
+        double l = 1;
+        for (unsigned int m = 0; m < 4; ++m)
+          if (m != k)
+            l *= (s - x[m]) / (x[k] - x[m]);
+        sum += l * f[i - 1 + k];
+      }
+    return sum;
+  }
+
+  /// The first value of the ASCII cell data array `name` of a VTU file.
+  double
+  first_ascii_value(const std::string &file, const std::string &name)
+  {
+    const std::string text = fgimpact_tests::file_text(file);
+    const auto        tag  = text.find("Name=\"" + name + "\"");
+    AssertThrow(tag != std::string::npos, ExcMessage("no " + name));
+    return std::stod(text.substr(text.find('>', tag) + 1));
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  fgimpact_tests::remove_output("out");
+  fgimpact_tests::run_impact(
+    "subsection Time integration\n set End time = 100e-6\nend\n"
+    "subsection Output\n set VTU interval = 20\n"
+    " set Snapshot times = 60, 37.5, 0.25\n"
+    " set Fields = displacement, velocity\nend\n");
+
+  // (1) The PVD: regular, requested and peak snapshots in time order.
+  const std::vector<double> times    = pvd_times("out/solution.pvd");
+  const double              t_peak   = summary_value("time_of_peak_force_us");
+  std::vector<double>       expected = {0, 0.25, 20, 37.5, 40, 60, 80, 100};
+  expected.insert(std::upper_bound(expected.begin(), expected.end(), t_peak),
+                  t_peak);
+  bool listed = times.size() == expected.size();
+  for (unsigned int k = 0; listed && k < times.size(); ++k)
+    listed = std::abs(times[k] - expected[k]) < 0.01;
+  std::printf("solution.pvd: %zu snapshots in time order (regular every "
+              "20 us, 0.25, 37.5 and the peak at %.4f us; 60 us once): %s\n",
+              times.size(),
+              t_peak,
+              listed ? "yes" : "NO");
+
+  // (2) The peak's time and force.
+  const std::vector<double> peak_times = pvd_times("out/sphere.pvd");
+  double                    worst_time = 1e9;
+  for (const double t : peak_times)
+    worst_time = std::min(worst_time, std::abs(t - t_peak));
+  const double F_peak = summary_value("peak_contact_force_N");
+  const double F_file =
+    first_ascii_value("out/vtu/sphere_peak.vtu", "contact_force_N");
+  const bool peak_ok =
+    worst_time < 0.01 && std::abs(F_file - F_peak) < 1e-6 * F_peak;
+  std::printf("peak snapshot at time_of_peak_force_us to %.1e us, its "
+              "contact_force_N %.4f N against peak_contact_force_N %.4f N "
+              "(relative %.1e): %s\n",
+              worst_time,
+              F_file,
+              F_peak,
+              std::abs(F_file - F_peak) / F_peak,
+              peak_ok ? "yes" : "NO");
+
+  // (3) The interpolated plate and ball at 37.5 us.
+  const std::string file   = "out/vtu/solution_t000037500.0.vtu";
+  const auto        points = fgimpact_tests::read_points(file);
+  const auto        u      = fgimpact_tests::read_array(file, "displacement_m");
+  double            uz     = 0;
+  for (std::size_t k = 0; 3 * k + 2 < points.size(); ++k)
+    if (std::abs(points[3 * k] - 0.1) < 1e-7 &&
+        std::abs(points[3 * k + 1] - 0.05) < 1e-7 &&
+        std::abs(points[3 * k + 2] - 0.02) < 1e-7)
+      uz = u[3 * k + 2];
+  const auto   W           = history_column("top_deflection_um");
+  const double W_max       = *std::max_element(W.begin(), W.end());
+  const double W_ref       = cubic(W, 37, 0.5);
+  const double plate_error = std::abs(-uz * 1e6 - W_ref) / W_max;
+  const auto   w_ball      = history_column("impactor_displacement_um");
+  const double w_ref       = cubic(w_ball, 37, 0.5);
+  const double w_file      = first_ascii_value("out/vtu/sphere_t000037500.vtu",
+                                          "impactor_displacement_um");
+  const double ball_error =
+    std::abs(w_file - w_ref) / *std::max_element(w_ball.begin(), w_ball.end());
+  const bool interpolated_ok = plate_error < 2e-3 && ball_error < 1e-4;
+  std::printf("at 37.5 us: top deflection %.5f um (Hermite) against %.5f "
+              "um (cubic through history.csv; difference / largest %.1e), "
+              "ball %.5f against %.5f um (%.1e): %s\n",
+              -uz * 1e6,
+              W_ref,
+              plate_error,
+              w_file,
+              w_ref,
+              ball_error,
+              interpolated_ok ? "yes" : "NO");
+  return listed && peak_ok && interpolated_ok ? 0 : 1;
+}
