@@ -55,9 +55,9 @@ namespace fgimpact
       return vtu_interval > 0 || !snapshot_times.empty();
     }
 
-    /// Entry "VTU compression" (zlib level of the VTU data).
+    /// Entry "VTU compression" (no_compression: raw binary VTU data).
     DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression =
-      DataOutBase::VtkFlags::best_speed;
+      DataOutBase::VtkFlags::no_compression;
     /// Entry "Fields" (what the VTU files hold).
     VtuFields vtu_fields;
     /// Entry "Probe points" (probes.csv).
