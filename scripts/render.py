@@ -176,6 +176,19 @@ def main():
     title_display.FontSize = 14
     title_display.WindowLocation = "Upper Center"
 
+    def clipped_range(source, field):
+        """The 2nd and 98th percentiles of a point field at the
+        view's time: the loaded node would otherwise take the whole colour
+        range (u ~ 1/r under a point force)."""
+        import numpy
+        from paraview import servermanager
+        from vtk.numpy_interface import dataset_adapter as dsa
+        data = dsa.WrapDataObject(servermanager.Fetch(
+            pv.MergeBlocks(Input=source)))
+        values = numpy.asarray(data.PointData[field]).ravel()
+        low, high = numpy.percentile(values, [2, 98])
+        return low, high, values.min(), values.max()
+
     def colour(display, field, label):
         # One colour bar: the previous field's goes.
         for name in colour.shown:
@@ -187,7 +200,14 @@ def main():
         pv.ColorBy(display, ("POINTS", field))
         lut = pv.GetColorTransferFunction(field)
         lut.ApplyPreset("Cool to Warm", True)
-        display.RescaleTransferFunctionToDataRange(False, True)
+        low, high, smallest, largest = clipped_range(display.Input, field)
+        # A positive field (von Mises) on a log scale: the contact zone's
+        # GPa and the plate's MPa both show.
+        if smallest > 0 and largest > 100 * smallest:
+            low, high = max(smallest, 1e-3 * largest), largest
+            lut.UseLogScale = 1
+        lut.RescaleTransferFunction(low, high)
+        label = "%s\n[%.3g, %.3g] in the data" % (label, smallest, largest)
         display.SetScalarBarVisibility(view, True)
         bar = pv.GetScalarBar(lut, view)
         bar.Title = label
@@ -209,6 +229,7 @@ def main():
                                  0.5 * (bounds[4] + bounds[5])]
         view.CameraViewUp = [0, 0, 1]
         view.ResetCamera(False)
+        pv.GetActiveCamera().Dolly(1.5)
 
     written = []
 
@@ -226,6 +247,7 @@ def main():
         ball_display.ColorArrayName = [None, ""]
         ball_display.DiffuseColor = [0.75, 0.75, 0.8]
         ball_display.AmbientColor = [0.75, 0.75, 0.8]
+        ball_display.Opacity = 0.35
     camera_3d()
     fields = warp.PointData.keys()
     pictures = [("von_mises_MPa", "von Mises stress (MPa)",
@@ -252,14 +274,20 @@ def main():
     field = "von_mises_MPa" if "von_mises_MPa" in fields else "displacement_m"
     colour(section_display, field, "von Mises stress (MPa)"
            if field == "von_mises_MPa" else "displacement (m)")
-    view.CameraPosition = [section.SliceType.Origin[0],
-                           bounds[2] - 2 * length, section.SliceType.Origin[2]]
-    view.CameraFocalPoint = section.SliceType.Origin
+    # Zoomed on the impact point: a window of 3 thicknesses each side.
+    thickness = bounds[5] - bounds[4]
+    focus = [section.SliceType.Origin[0], section.SliceType.Origin[1],
+             section.SliceType.Origin[2]]
+    view.CameraPosition = [focus[0], bounds[2] - 2 * length, focus[2]]
+    view.CameraFocalPoint = focus
     view.CameraViewUp = [0, 0, 1]
-    view.ResetCamera(False)
-    set_title("Section y = b/2 through the impact point", t_show)
+    view.CameraParallelProjection = 1
+    view.CameraParallelScale = 1.2 * thickness
+    set_title("Section y = b/2 through the impact point (displacement x %.0f)"
+              % factor, t_show)
     save("section.png")
     pv.Hide(section, view)
+    view.CameraParallelProjection = 0
 
     # The contact pressure, seen from above.
     if os.path.isfile(os.path.join(directory, "contact.pvd")):
