@@ -91,6 +91,26 @@ namespace fgimpact_tests
     return decode_array(text, tag);
   }
 
+  /// The numbers of an ASCII DataArray of a VTU file's text (the sphere
+  /// and contact files): the one named `name`, or the <Points> array if
+  /// name is empty.
+  inline std::vector<double>
+  ascii_array(const std::string &text, const std::string &name)
+  {
+    const auto tag = name.empty() ?
+                       text.find("<DataArray", text.find("<Points>")) :
+                       text.find("Name=\"" + name + "\"");
+    AssertThrow(tag != std::string::npos,
+                dealii::ExcMessage("no array " + name));
+    const auto          begin = text.find('>', tag) + 1;
+    const auto          end   = text.find("</DataArray>", begin);
+    std::istringstream  in(text.substr(begin, end - begin));
+    std::vector<double> values;
+    for (double x; in >> x;)
+      values.push_back(x);
+    return values;
+  }
+
   /// The point coordinates (x, y, z per point) of a VTU file: the first
   /// DataArray of <Points>, which has no Name.
   inline std::vector<float>

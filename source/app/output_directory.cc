@@ -58,9 +58,10 @@ namespace fgimpact
      * for pieces, the rank.
      */
     bool
-    is_own_output(std::string name)
+    is_own_output(const std::string &file_name)
     {
-      const auto ends_with = [](const std::string &s, const std::string &end) {
+      std::string name      = file_name;
+      const auto  ends_with = [](const std::string &s, const std::string &end) {
         return s.size() >= end.size() &&
                s.compare(s.size() - end.size(), end.size(), end) == 0;
       };
@@ -105,43 +106,19 @@ namespace fgimpact
     }
 
     /**
-     * Remove an earlier run's checkpoint directory: its rank files only,
-     * then the directory if that left it empty (a user's file in it
-     * stays, and so does the directory).
+     * Remove an earlier run's files from a subdirectory (checkpoint/: the
+     * rank files; vtu/: the VTU pieces), those `own` accepts only, then
+     * the subdirectory if that left it empty (a user's file in it stays,
+     * and so does the subdirectory).
      */
     void
-    remove_checkpoint_directory(const std::filesystem::path &directory)
+    remove_own_files(const std::filesystem::path &directory,
+                     bool (*own)(const std::string &name))
     {
       namespace fs = std::filesystem;
       std::error_code error;
       for (const auto &entry : fs::directory_iterator(directory, error))
-        if (entry.is_regular_file() &&
-            is_checkpoint_file(entry.path().filename().string()))
-          {
-            fs::remove(entry.path(), error);
-            AssertThrow(!error,
-                        ExcMessage("Output/Directory: cannot remove the "
-                                   "earlier run's " +
-                                   entry.path().string() + ": " +
-                                   error.message()));
-          }
-      if (fs::is_empty(directory, error))
-        fs::remove(directory, error);
-    }
-
-    /**
-     * Remove an earlier run's VTU pieces from the folder vtu/: the files
-     * this program writes only, then the folder if that left it empty (a
-     * user's file in it stays, and so does the folder).
-     */
-    void
-    remove_own_files(const std::filesystem::path &directory)
-    {
-      namespace fs = std::filesystem;
-      std::error_code error;
-      for (const auto &entry : fs::directory_iterator(directory, error))
-        if (entry.is_regular_file() &&
-            is_own_output(entry.path().filename().string()))
+        if (entry.is_regular_file() && own(entry.path().filename().string()))
           {
             fs::remove(entry.path(), error);
             AssertThrow(!error,
@@ -248,10 +225,9 @@ namespace fgimpact
       {
         if (fs::is_directory(file))
           {
-            if (file.filename() == "vtu")
-              remove_own_files(file);
-            else
-              remove_checkpoint_directory(file);
+            remove_own_files(file,
+                             file.filename() == "vtu" ? is_own_output :
+                                                        is_checkpoint_file);
             continue;
           }
         fs::remove(file, error);

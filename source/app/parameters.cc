@@ -288,6 +288,13 @@ namespace fgimpact
     AssertThrow(ti.time_step == 0 || ti.end_time / ti.time_step < 1e8,
                 ExcMessage("Time integration/End time divided by Time step "
                            "exceeds 1e8 steps."));
+    // A snapshot the run never reaches would be missing without a word.
+    for (const double t : output.snapshot_times)
+      AssertThrow(t <= ti.end_time * (1. + 1e-12),
+                  ExcMessage(
+                    "Output/Snapshot times: " + Utilities::to_string(t * 1e6) +
+                    " us is after Time integration/End time (" +
+                    Utilities::to_string(ti.end_time * 1e6) + " us)."));
     // Unconditional stability of Newmark: 2 beta >= gamma >= 1/2.
     AssertThrow(
       explicit_scheme || (2. * ti.newmark.beta >= ti.newmark.gamma - 1e-14 &&

@@ -2,6 +2,7 @@
 
 #include <fgimpact/app/run_control.h>
 #include <fgimpact/output/contact_output.h>
+#include <fgimpact/output/output_files.h>
 
 #include <algorithm>
 #include <array>
@@ -28,26 +29,6 @@ namespace fgimpact
         out << "<DataSet timestep=\"" << t << "\" file=\"" << name << "\"/>\n";
       out << "</Collection>\n</VTKFile>\n";
       write_file_atomically(file, out.str());
-    }
-
-    /// Add a PVD entry in time order, replacing one of the same file.
-    void
-    add_record(std::vector<std::pair<double, std::string>> &records,
-               const std::pair<double, std::string>        &entry)
-    {
-      records.erase(std::remove_if(records.begin(),
-                                   records.end(),
-                                   [&](const auto &r) {
-                                     return r.second == entry.second;
-                                   }),
-                    records.end());
-      records.insert(std::upper_bound(records.begin(),
-                                      records.end(),
-                                      entry,
-                                      [](const auto &a, const auto &b) {
-                                        return a.first < b.first;
-                                      }),
-                     entry);
     }
 
     /// The header of an ASCII unstructured grid with the given points.
@@ -97,12 +78,12 @@ namespace fgimpact
     std::filesystem::create_directories(directory + "/vtu", error);
     const std::string sphere = "vtu/sphere_" + tag + ".vtu";
     write_sphere(directory + "/" + sphere, w, state.force);
-    add_record(spheres, {t, sphere});
+    add_pvd_entry(spheres, {t, sphere});
     if (!contact.contact_points().empty())
       {
         const std::string nodes = "vtu/contact_" + tag + ".vtu";
         write_nodes(directory + "/" + nodes, state, node_uz);
-        add_record(contacts, {t, nodes});
+        add_pvd_entry(contacts, {t, nodes});
       }
   }
 

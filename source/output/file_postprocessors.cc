@@ -262,15 +262,26 @@ namespace fgimpact
   void
   FieldWriter::execute(const StepRecord &record)
   {
+    // A failed write of an earlier step stops the run at that step's end.
     if (!vtu || !record.fields)
       return;
+    last_step = record.step;
     timer.start();
+    if (interval > 0 && record.step % interval == 0)
+      guarded([&]() { write_regular(record); });
+    if (interpolator)
+      write_extras(record);
+    timer.stop();
+  }
+
+
+
+  void
+  FieldWriter::guarded(const std::function<void()> &write)
+  {
     try
       {
-        if (interval > 0 && record.step % interval == 0)
-          write_regular(record);
-        if (interpolator)
-          write_extras(record);
+        write();
       }
     catch (const ExceptionBase &e)
       {
@@ -278,7 +289,16 @@ namespace fgimpact
         vtu.reset();
         contact_vtu.reset();
       }
-    timer.stop();
+  }
+
+
+
+  bool
+  FieldWriter::all_writing() const
+  {
+    // Collective: a write that failed on one rank (its writer dropped)
+    // must not leave the others in the next snapshot's collective calls.
+    return Utilities::MPI::min(vtu ? 1u : 0u, communicator) == 1u;
   }
 
 
@@ -310,27 +330,46 @@ namespace fgimpact
   {
     interpolator->push(record);
     const bool regular = interval > 0 && record.step % interval == 0;
-    // Each requested time once, when the step that reaches it is done;
-    // one on this step's own time with a regular snapshot is that one.
-    for (; next_snapshot < snapshot_times.size() &&
-           snapshot_times[next_snapshot] <= interpolator->last_time();
+    // Each requested time once, at the first step that reaches it (to
+    // 1 ps: a time given in us meets its step despite round-off); one on
+    // this step's own time with a regular snapshot is that one.
+    const double tolerance = 1e-12; // s
+    for (;
+         next_snapshot < snapshot_times.size() &&
+         snapshot_times[next_snapshot] <= interpolator->last_time() + tolerance;
          ++next_snapshot)
       {
-        const double t = snapshot_times[next_snapshot];
-        if (t < interpolator->first_time() ||
-            (regular && std::abs(t - record.t) <= 1e-9 * record.t))
+        const double t =
+          std::min(snapshot_times[next_snapshot], interpolator->last_time());
+        if (t < interpolator->first_time() - tolerance ||
+            (regular && std::abs(t - record.t) <= tolerance))
           continue;
+        if (!all_writing())
+          return;
         // The name: the time in ns, 9 digits (solution_t000056300).
-        write_interpolated("t" +
-                             Utilities::int_to_string(static_cast<unsigned int>(
-                                                        std::llround(t * 1e9)),
-                                                      9),
-                           record.step,
-                           t);
+        guarded([&]() {
+          write_interpolated(
+            "t" + Utilities::int_to_string(
+                    static_cast<unsigned int>(std::llround(t * 1e9)), 9),
+            record.step,
+            std::max(t, interpolator->first_time()));
+        });
       }
-    if (results && results->new_peak() &&
-        results->peak_time() >= interpolator->first_time())
-      write_interpolated("peak", record.step, results->peak_time());
+    if (results && results->new_peak())
+      write_peak(record.step);
+  }
+
+
+
+  void
+  FieldWriter::write_peak(const unsigned int step)
+  {
+    const double t = results->peak_time();
+    if (t < interpolator->first_time() || t > interpolator->last_time() ||
+        !all_writing())
+      return;
+    guarded([&]() { write_interpolated("peak", step, t); });
+    peak_written = t;
   }
 
 
@@ -417,6 +456,7 @@ namespace fgimpact
     put_records(out, contact_vtu ? contact_vtu->sphere_records() : Records());
     put_records(out, contact_vtu ? contact_vtu->contact_records() : Records());
     out.put(next_snapshot);
+    out.put(peak_written);
     if (interpolator)
       interpolator->save(out);
   }
@@ -432,6 +472,7 @@ namespace fgimpact
     get_records(in, sphere_records);
     get_records(in, contact_records);
     in.get(next_snapshot);
+    in.get(peak_written);
     if (interpolator)
       interpolator->load(in);
   }
@@ -441,6 +482,11 @@ namespace fgimpact
   void
   FieldWriter::close_output()
   {
+    // A peak still rising at the last step (its time is that step's):
+    // its snapshot too, not an earlier, lower one's.
+    // (Every rank alike: write_peak() agrees on the writers first.)
+    if (results && results->peak_time() != peak_written)
+      write_peak(last_step);
     // Timed by the monitor, as every postprocessor's close_output().
     try
       {

@@ -112,6 +112,7 @@ namespace fgimpact
     const std::array<double, 2> centre = {
       {0.5 * geometry.length(), 0.5 * geometry.width()}};
     const int last_cut = geometry.is_cut(1) ? 1 : geometry.is_cut(0) ? 0 : -1;
+    split              = last_cut >= 0;
     for (int d = 0; d <= last_cut; ++d)
       if (geometry.is_cut(d))
         {
@@ -136,7 +137,7 @@ namespace fgimpact
   {
     if (!mirrored)
       return DataOut<3>::get_patches();
-    if (second.empty())
+    if (!split)
       return first;
     if (whole.empty())
       {

@@ -8,6 +8,7 @@
 #include <fgimpact/app/run_control.h>
 #include <fgimpact/output/output_files.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,27 @@
 
 namespace fgimpact
 {
+  void
+  add_pvd_entry(PvdEntries                           &entries,
+                const std::pair<double, std::string> &entry)
+  {
+    entries.erase(std::remove_if(entries.begin(),
+                                 entries.end(),
+                                 [&](const auto &e) {
+                                   return e.second == entry.second;
+                                 }),
+                  entries.end());
+    entries.insert(std::upper_bound(entries.begin(),
+                                    entries.end(),
+                                    entry,
+                                    [](const auto &a, const auto &b) {
+                                      return a.first < b.first;
+                                    }),
+                   entry);
+  }
+
+
+
   CsvWriter::CsvWriter(const std::string                              &filename,
                        const std::vector<std::pair<std::string, int>> &columns,
                        const std::uintmax_t resume_length)

@@ -8,22 +8,12 @@
 
 namespace fgimpact
 {
-  void
-  OutputParameters::declare_parameters(ParameterHandler &prm)
+  namespace
   {
-    prm.enter_subsection("Output");
+    /// Output/Snapshot times and Snapshot at peak force.
+    void
+    declare_snapshot_parameters(ParameterHandler &prm)
     {
-      prm.declare_entry("Directory",
-                        "output",
-                        Patterns::DirectoryName(),
-                        "Directory for history.csv, summary.txt, "
-                        "parameters.prm and the VTU/PVD files; created if "
-                        "missing.");
-      prm.declare_entry("VTU interval",
-                        "0",
-                        Patterns::Integer(0, 100000000),
-                        "Write VTU every this many time steps (and the "
-                        "initial state); 0 = no VTU output.");
       prm.declare_entry(
         "Snapshot times",
         "",
@@ -45,6 +35,28 @@ namespace fgimpact
         "as Snapshot times to time_of_peak_force_us of summary.txt (the "
         "vertex of the parabola through the largest sample and its two "
         "neighbours).");
+    }
+  } // namespace
+
+
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::DirectoryName(),
+                        "Directory for history.csv, summary.txt, "
+                        "parameters.prm and the VTU/PVD files; created if "
+                        "missing.");
+      prm.declare_entry("VTU interval",
+                        "0",
+                        Patterns::Integer(0, 100000000),
+                        "Write VTU every this many time steps (and the "
+                        "initial state); 0 = no VTU output.");
+      declare_snapshot_parameters(prm);
       prm.declare_entry("Log interval",
                         "50",
                         Patterns::Integer(0, 100000000),

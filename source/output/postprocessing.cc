@@ -7,6 +7,7 @@
 
 #include <fgimpact/app/run_control.h>
 #include <fgimpact/output/mirrored_data_out.h>
+#include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
 
 #include <algorithm>
@@ -238,20 +239,7 @@ namespace fgimpact
     // Only rank 0 keeps the PVD, and it lists complete snapshots only, in
     // time order (an extra snapshot falls between regular ones; one of the
     // same name, the peak's, is replaced).
-    times_and_names.erase(std::remove_if(times_and_names.begin(),
-                                         times_and_names.end(),
-                                         [this](const auto &entry) {
-                                           return entry.second ==
-                                                  pending_record.second;
-                                         }),
-                          times_and_names.end());
-    times_and_names.insert(std::upper_bound(times_and_names.begin(),
-                                            times_and_names.end(),
-                                            pending_record,
-                                            [](const auto &a, const auto &b) {
-                                              return a.first < b.first;
-                                            }),
-                           pending_record);
+    add_pvd_entry(times_and_names, pending_record);
     std::ostringstream pvd;
     DataOutBase::write_pvd_record(pvd, times_and_names);
     write_file_atomically(directory + "/solution.pvd", pvd.str());

@@ -98,50 +98,60 @@ namespace fgimpact
         }
       return {points, connectivity, offsets, types};
     }
+    /// The point data: every nonscalar range as one array, the other
+    /// components as scalars (deal.II's order: the ranges first).
+    std::vector<Array>
+    point_data_arrays(const std::vector<Patch>       &patches,
+                      const std::vector<std::string> &names,
+                      const NonscalarRanges          &nonscalar_ranges)
+    {
+      const unsigned int n_sets = names.size();
+      std::vector<Array> data;
+      std::vector<bool>  in_range(n_sets, false);
+      const auto         add = [&](const std::string &name,
+                           const unsigned int first,
+                           const unsigned int size) {
+        Array a{"Float32", name, size, {}};
+        for (const Patch &p : patches)
+          for (unsigned int j = 0; j < p.data.n_cols(); ++j)
+            for (unsigned int c = 0; c < size; ++c)
+              append(a.bytes, static_cast<float>(p.data(first + c, j)));
+        data.push_back(std::move(a));
+      };
+      for (const auto &range : nonscalar_ranges)
+        {
+          const unsigned int first = std::get<0>(range),
+                             last  = std::get<1>(range);
+          for (unsigned int k = first; k <= last; ++k)
+            in_range[k] = true;
+          // An unnamed range: its components' names joined by "__", as
+          // deal.II names it.
+          std::string name = std::get<2>(range);
+          if (name.empty())
+            for (unsigned int k = first; k <= last; ++k)
+              name += (k > first ? "__" : "") + names[k];
+          add(name, first, last - first + 1);
+        }
+      for (unsigned int k = 0; k < n_sets; ++k)
+        if (!in_range[k])
+          add(names[k], k, 1);
+      return data;
+    }
   } // namespace
 
 
 
   void
-  write_raw_vtu(
-    const std::vector<DataOutBase::Patch<3, 3>> &patches,
-    const std::vector<std::string>              &names,
-    const std::vector<
-      std::tuple<unsigned int,
-                 unsigned int,
-                 std::string,
-                 DataComponentInterpretation::DataComponentInterpretation>>
-                 &nonscalar_ranges,
-    const double  time,
-    const double  cycle,
-    std::ostream &out)
+  write_raw_vtu(const std::vector<DataOutBase::Patch<3, 3>> &patches,
+                const std::vector<std::string>              &names,
+                const NonscalarRanges                       &nonscalar_ranges,
+                const double                                 time,
+                const unsigned int                           cycle,
+                std::ostream                                &out)
   {
-    const unsigned int n_sets = names.size();
-    // The point data: every range as one array, the other components as
-    // scalars (deal.II's order: the ranges first, then the scalars).
-    std::vector<Array> data;
-    std::vector<bool>  in_range(n_sets, false);
-    const auto         add = [&](const std::string &name,
-                         const unsigned int first,
-                         const unsigned int size) {
-      Array a{"Float32", name, size, {}};
-      for (const Patch &p : patches)
-        for (unsigned int j = 0; j < p.data.n_cols(); ++j)
-          for (unsigned int c = 0; c < size; ++c)
-            append(a.bytes, static_cast<float>(p.data(first + c, j)));
-      data.push_back(std::move(a));
-    };
-    for (const auto &range : nonscalar_ranges)
-      {
-        const unsigned int first = std::get<0>(range),
-                           last  = std::get<1>(range);
-        for (unsigned int k = first; k <= last; ++k)
-          in_range[k] = true;
-        add(std::get<2>(range), first, last - first + 1);
-      }
-    for (unsigned int k = 0; k < n_sets; ++k)
-      if (!in_range[k])
-        add(names[k], k, 1);
+    const unsigned int       n_sets = names.size();
+    const std::vector<Array> data =
+      point_data_arrays(patches, names, nonscalar_ranges);
     const std::vector<Array> grid = grid_arrays(patches, n_sets);
 
     std::size_t n_points = 0, n_cells = 0;

@@ -29,7 +29,7 @@ namespace fgimpact
   double
   SnapshotInterpolator::first_time() const
   {
-    return n_frames >= 2 ? frames[3 - n_frames].t : 1.;
+    return n_frames >= 1 ? frames[3 - n_frames].t : 1.;
   }
 
 
@@ -37,7 +37,7 @@ namespace fgimpact
   double
   SnapshotInterpolator::last_time() const
   {
-    return n_frames >= 2 ? frames[2].t : 0.;
+    return n_frames >= 1 ? frames[2].t : 0.;
   }
 
 
@@ -45,9 +45,15 @@ namespace fgimpact
   void
   SnapshotInterpolator::interpolate(const double t, State &state) const
   {
-    AssertThrow(n_frames >= 2 && t >= first_time() && t <= last_time(),
+    AssertThrow(n_frames >= 1 && t >= first_time() && t <= last_time(),
                 ExcInternalError());
     const unsigned int first = 3 - n_frames;
+    // One step recorded (the initial state): t is its time.
+    if (n_frames == 1)
+      {
+        state = frames[2];
+        return;
+      }
     // The step [t_j, t_{j+1}] holding t, and Hermite's basis on it.
     const unsigned int j  = (n_frames == 3 && t <= frames[1].t) ? 0 : 1;
     const State       &p0 = frames[j], &p1 = frames[j + 1];

@@ -32,23 +32,6 @@ using namespace dealii;
 
 namespace
 {
-  /// The numbers of an ASCII DataArray: the one named `name`, or the
-  /// <Points> array if name is empty.
-  std::vector<double>
-  ascii_array(const std::string &text, const std::string &name)
-  {
-    const auto tag = name.empty() ?
-                       text.find("<DataArray", text.find("<Points>")) :
-                       text.find("Name=\"" + name + "\"");
-    AssertThrow(tag != std::string::npos, ExcMessage("no array " + name));
-    const auto          begin = text.find('>', tag) + 1;
-    const auto          end   = text.find("</DataArray>", begin);
-    std::istringstream  in(text.substr(begin, end - begin));
-    std::vector<double> values;
-    for (double x; in >> x;)
-      values.push_back(x);
-    return values;
-  }
 
   std::string
   file(const std::string &series, const unsigned int n)
@@ -103,8 +86,8 @@ main(int argc, char **argv)
   for (unsigned int n = 0; n <= 60; n += 10)
     {
       const std::string text = fgimpact_tests::file_text(file("sphere", n));
-      const auto        p    = ascii_array(text, "");
-      const auto        d    = ascii_array(text, "displacement_m");
+      const auto        p    = fgimpact_tests::ascii_array(text, "");
+      const auto        d = fgimpact_tests::ascii_array(text, "displacement_m");
       double            zmin = 1e9, zmax = -1e9;
       for (std::size_t k = 0; k < p.size(); k += 3)
         {
@@ -137,11 +120,12 @@ main(int argc, char **argv)
               sphere_ok ? "yes" : "NO");
 
   // (2) and (3) at 50 us, near the peak force.
-  const unsigned int n        = 50;
-  const std::string  text     = fgimpact_tests::file_text(file("contact", n));
-  const auto         nodes    = ascii_array(text, "");
-  const auto         d        = ascii_array(text, "displacement_m");
-  const auto         pressure = ascii_array(text, "contact_pressure_MPa");
+  const unsigned int n     = 50;
+  const std::string  text  = fgimpact_tests::file_text(file("contact", n));
+  const auto         nodes = fgimpact_tests::ascii_array(text, "");
+  const auto         d = fgimpact_tests::ascii_array(text, "displacement_m");
+  const auto         pressure =
+    fgimpact_tests::ascii_array(text, "contact_pressure_MPa");
   const auto plate_points = fgimpact_tests::read_points(file("solution", n));
   const auto plate_u =
     fgimpact_tests::read_array(file("solution", n), "displacement_m");

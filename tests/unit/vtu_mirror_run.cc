@@ -52,23 +52,6 @@ namespace
     return points;
   }
 
-  /// The numbers of an ASCII DataArray (the <Points> array if name is
-  /// empty).
-  std::vector<double>
-  ascii_array(const std::string &text, const std::string &name)
-  {
-    const auto tag = name.empty() ?
-                       text.find("<DataArray", text.find("<Points>")) :
-                       text.find("Name=\"" + name + "\"");
-    AssertThrow(tag != std::string::npos, ExcMessage("no array " + name));
-    const auto          begin = text.find('>', tag) + 1;
-    const auto          end   = text.find("</DataArray>", begin);
-    std::istringstream  in(text.substr(begin, end - begin));
-    std::vector<double> values;
-    for (double x; in >> x;)
-      values.push_back(x);
-    return values;
-  }
 
   /// The contact nodes: position -> (force, pressure, u_z).
   std::map<Key, std::array<double, 3>>
@@ -76,10 +59,10 @@ namespace
   {
     const std::string text =
       fgimpact_tests::file_text(directory + "/vtu/contact_00020.vtu");
-    const auto x = ascii_array(text, "");
-    const auto F = ascii_array(text, "nodal_force_N");
-    const auto p = ascii_array(text, "contact_pressure_MPa");
-    const auto d = ascii_array(text, "displacement_m");
+    const auto x = fgimpact_tests::ascii_array(text, "");
+    const auto F = fgimpact_tests::ascii_array(text, "nodal_force_N");
+    const auto p = fgimpact_tests::ascii_array(text, "contact_pressure_MPa");
+    const auto d = fgimpact_tests::ascii_array(text, "displacement_m");
     std::map<Key, std::array<double, 3>> nodes;
     for (std::size_t i = 0; i < F.size(); ++i)
       nodes[key(x[3 * i], x[3 * i + 1], x[3 * i + 2])] = {

@@ -89,15 +89,6 @@ namespace
     return sum;
   }
 
-  /// The first value of the ASCII cell data array `name` of a VTU file.
-  double
-  first_ascii_value(const std::string &file, const std::string &name)
-  {
-    const std::string text = fgimpact_tests::file_text(file);
-    const auto        tag  = text.find("Name=\"" + name + "\"");
-    AssertThrow(tag != std::string::npos, ExcMessage("no " + name));
-    return std::stod(text.substr(text.find('>', tag) + 1));
-  }
 } // namespace
 
 
@@ -134,8 +125,8 @@ main(int argc, char **argv)
   for (const double t : peak_times)
     worst_time = std::min(worst_time, std::abs(t - t_peak));
   const double F_peak = summary_value("peak_contact_force_N");
-  const double F_file =
-    first_ascii_value("out/vtu/sphere_peak.vtu", "contact_force_N");
+  const double F_file = fgimpact_tests::ascii_array(
+    fgimpact_tests::file_text("out/vtu/sphere_peak.vtu"), "contact_force_N")[0];
   const bool peak_ok =
     worst_time < 0.01 && std::abs(F_file - F_peak) < 1e-6 * F_peak;
   std::printf("peak snapshot at time_of_peak_force_us to %.1e us, its "
@@ -163,8 +154,10 @@ main(int argc, char **argv)
   const double plate_error = std::abs(-uz * 1e6 - W_ref) / W_max;
   const auto   w_ball      = history_column("impactor_displacement_um");
   const double w_ref       = cubic(w_ball, 37, 0.5);
-  const double w_file      = first_ascii_value("out/vtu/sphere_t000037500.vtu",
-                                          "impactor_displacement_um");
+  const double w_file =
+    fgimpact_tests::ascii_array(fgimpact_tests::file_text(
+                                  "out/vtu/sphere_t000037500.vtu"),
+                                "impactor_displacement_um")[0];
   const double ball_error =
     std::abs(w_file - w_ref) / *std::max_element(w_ball.begin(), w_ball.end());
   const bool interpolated_ok = plate_error < 2e-3 && ball_error < 1e-4;

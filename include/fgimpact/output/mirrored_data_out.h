@@ -49,7 +49,7 @@ namespace fgimpact
     unsigned int
     n_pieces() const
     {
-      return mirrored && !second.empty() ? 2 : 1;
+      return split ? 2 : 1;
     }
 
     /// The VTU flags of every piece (and of write_vtu()).
@@ -87,7 +87,10 @@ namespace fgimpact
     std::vector<DataOutBase::Patch<3, 3>>         first, second;
     mutable std::vector<DataOutBase::Patch<3, 3>> whole;
     bool                                          mirrored = false;
-    DataOutBase::VtkFlags                         vtk;
+    /// Whether mirror() reflected across a cut plane (two pieces, the
+    /// same on every rank, also on one without cells).
+    bool                  split = false;
+    DataOutBase::VtkFlags vtk;
   };
 } // namespace fgimpact
 

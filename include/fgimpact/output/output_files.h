@@ -15,6 +15,20 @@ namespace fgimpact
   /// written.
   using SummaryEntries = std::vector<std::pair<std::string, std::string>>;
 
+  /// A PVD file's entries: (time, file name).
+  using PvdEntries = std::vector<std::pair<double, std::string>>;
+
+  /**
+   * Add an entry to a PVD file's entries in time order, replacing an
+   * entry of the same file (the peak force's snapshot, when a higher peak
+   * comes); a snapshot between the regular ones falls in its place.
+   */
+  void
+  add_pvd_entry(PvdEntries                           &entries,
+                const std::pair<double, std::string> &entry);
+
+
+
   /**
    * A CSV file streamed row by row, with fixed decimals per column so that
    * reference outputs compare cleanly.  Rows are collected and handed to

@@ -294,6 +294,19 @@ namespace fgimpact
     void
     write_extras(const StepRecord &record);
 
+    /// The snapshot of the peak force at the results' peak time, if the
+    /// interpolator holds it.
+    void
+    write_peak(const unsigned int step);
+
+    /// Run a write; a failure is kept and drops this rank's writers.
+    void
+    guarded(const std::function<void()> &write);
+
+    /// Whether every rank still writes (collective).
+    bool
+    all_writing() const;
+
     /// One interpolated snapshot named `name` at time t (s).
     void
     write_interpolated(const std::string &name,
@@ -302,9 +315,12 @@ namespace fgimpact
 
     const unsigned int interval;
     /// Output/Snapshot times (s, ascending) and the next one to write.
-    const std::vector<double>             snapshot_times;
-    unsigned int                          next_snapshot = 0;
-    const ResultsAccumulator             *results;
+    const std::vector<double> snapshot_times;
+    unsigned int              next_snapshot = 0;
+    const ResultsAccumulator *results;
+    /// The time of the peak snapshot written (s; -1: none), the last step.
+    double                                peak_written = -1;
+    unsigned int                          last_step    = 0;
     std::unique_ptr<SnapshotInterpolator> interpolator;
     SnapshotInterpolator::State           interpolated;
     const MPI_Comm                        communicator;

@@ -12,6 +12,14 @@ namespace fgimpact
 {
   using namespace dealii;
 
+  /// DataOut's vector and tensor fields: (first component, last
+  /// component, name, kind).
+  using NonscalarRanges = std::vector<
+    std::tuple<unsigned int,
+               unsigned int,
+               std::string,
+               DataComponentInterpretation::DataComponentInterpretation>>;
+
   /**
    * Write patches as a VTU file with the same points, cells and data
    * arrays (Float32) as DataOutBase::write_vtu(), but as raw appended
@@ -27,18 +35,12 @@ namespace fgimpact
    * left out for VtkFlags' default time, the smallest double).
    */
   void
-  write_raw_vtu(
-    const std::vector<DataOutBase::Patch<3, 3>> &patches,
-    const std::vector<std::string>              &names,
-    const std::vector<
-      std::tuple<unsigned int,
-                 unsigned int,
-                 std::string,
-                 DataComponentInterpretation::DataComponentInterpretation>>
-                 &nonscalar_ranges,
-    const double  time,
-    const double  cycle,
-    std::ostream &out);
+  write_raw_vtu(const std::vector<DataOutBase::Patch<3, 3>> &patches,
+                const std::vector<std::string>              &names,
+                const NonscalarRanges                       &nonscalar_ranges,
+                const double                                 time,
+                const unsigned int                           cycle,
+                std::ostream                                &out);
 } // namespace fgimpact
 
 #endif

@@ -48,7 +48,8 @@ namespace fgimpact
     push(const StepRecord &record);
 
     /// The times (s) that can be interpolated now: [t_{k-1}, t_{k+1}]
-    /// (empty interval before three steps are recorded: t_first > t_last).
+    /// (from the oldest step kept; an empty interval, t_first > t_last,
+    /// before any step is recorded).
     double
     first_time() const;
     double
