@@ -215,6 +215,7 @@ namespace
           fs::create_directories(dir + "/checkpoint");
           fs::create_directories(dir + "/checkpoint.old");
           fs::create_directories(dir + "/mine");
+          fs::create_directories(dir + "/vtu");
           // An earlier run's files: removed.
           for (const auto &name : stale_names())
             write(dir + "/" + name, "stale\n");
