@@ -15,6 +15,20 @@ namespace fgimpact
 {
   namespace
   {
+    /// A snapshot the run never reaches would be missing without a word:
+    /// every Output/Snapshot times entry (s) within the End time (s).
+    void
+    check_snapshot_times(const std::vector<double> &times,
+                         const double               end_time)
+    {
+      for (const double t : times)
+        AssertThrow(t <= end_time * (1. + 1e-12),
+                    ExcMessage("Output/Snapshot times: " +
+                               Utilities::to_string(t * 1e6) +
+                               " us is after Time integration/End time (" +
+                               Utilities::to_string(end_time * 1e6) + " us)."));
+    }
+
     const char *
     support_name(const SideSupport support)
     {
@@ -288,13 +302,7 @@ namespace fgimpact
     AssertThrow(ti.time_step == 0 || ti.end_time / ti.time_step < 1e8,
                 ExcMessage("Time integration/End time divided by Time step "
                            "exceeds 1e8 steps."));
-    // A snapshot the run never reaches would be missing without a word.
-    for (const double t : output.snapshot_times)
-      AssertThrow(t <= ti.end_time * (1. + 1e-12),
-                  ExcMessage(
-                    "Output/Snapshot times: " + Utilities::to_string(t * 1e6) +
-                    " us is after Time integration/End time (" +
-                    Utilities::to_string(ti.end_time * 1e6) + " us)."));
+    check_snapshot_times(output.snapshot_times, ti.end_time);
     // Unconditional stability of Newmark: 2 beta >= gamma >= 1/2.
     AssertThrow(
       explicit_scheme || (2. * ti.newmark.beta >= ti.newmark.gamma - 1e-14 &&
