@@ -19,14 +19,15 @@ namespace fgimpact
     /// every Output/Snapshot times entry (s) within the End time (s).
     void
     check_snapshot_times(const std::vector<double> &times,
-                         const double               end_time)
+                         const double               end_time,
+                         const std::string         &end_time_name)
     {
       for (const double t : times)
-        AssertThrow(t <= end_time * (1. + 1e-12),
-                    ExcMessage("Output/Snapshot times: " +
-                               Utilities::to_string(t * 1e6) +
-                               " us is after Time integration/End time (" +
-                               Utilities::to_string(end_time * 1e6) + " us)."));
+        AssertThrow(
+          t <= end_time * (1. + 1e-12),
+          ExcMessage("Output/Snapshot times: " + Utilities::to_string(t * 1e6) +
+                     " us is after Time integration/" + end_time_name + " (" +
+                     Utilities::to_string(end_time * 1e6) + " us)."));
     }
 
     const char *
@@ -296,13 +297,16 @@ namespace fgimpact
     AssertThrow(ti.time_step > 0 || explicit_scheme,
                 ExcMessage("Time integration/Time step = 0 (automatic) is "
                            "only available with Scheme = explicit."));
+    // With End time = auto, end_time is the Maximum end time.
+    const std::string end_name =
+      ti.auto_end_time ? "Maximum end time" : "End time";
     AssertThrow(ti.end_time >= ti.time_step,
-                ExcMessage("Time integration/End time is shorter than one "
-                           "Time step."));
+                ExcMessage("Time integration/" + end_name +
+                           " is shorter than one Time step."));
     AssertThrow(ti.time_step == 0 || ti.end_time / ti.time_step < 1e8,
-                ExcMessage("Time integration/End time divided by Time step "
-                           "exceeds 1e8 steps."));
-    check_snapshot_times(output.snapshot_times, ti.end_time);
+                ExcMessage("Time integration/" + end_name +
+                           " divided by Time step exceeds 1e8 steps."));
+    check_snapshot_times(output.snapshot_times, ti.end_time, end_name);
     // Unconditional stability of Newmark: 2 beta >= gamma >= 1/2.
     AssertThrow(
       explicit_scheme || (2. * ti.newmark.beta >= ti.newmark.gamma - 1e-14 &&

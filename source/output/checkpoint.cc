@@ -426,15 +426,17 @@ namespace fgimpact
                            " MPI ranks; resume on the same number (now " +
                            std::to_string(n_ranks) + ")"));
     // Entries that do not change the computed history.
-    const std::vector<std::string> free_entries = {"Output/Directory",
-                                                   "Output/Log interval",
-                                                   "Output/Print timing",
-                                                   "Output/Overwrite",
-                                                   "Output/Checkpoint interval",
-                                                   "Time integration/End time"};
-    auto                           stored       = entries_of(header.parameters);
-    auto                           now          = entries_of(parameters_text);
-    std::string                    changed;
+    const std::vector<std::string> free_entries = {
+      "Output/Directory",
+      "Output/Log interval",
+      "Output/Print timing",
+      "Output/Overwrite",
+      "Output/Checkpoint interval",
+      "Time integration/End time",
+      "Time integration/Maximum end time"};
+    auto        stored = entries_of(header.parameters);
+    auto        now    = entries_of(parameters_text);
+    std::string changed;
     for (auto &entry : now)
       if (stored[entry.first] != entry.second &&
           std::find(free_entries.begin(), free_entries.end(), entry.first) ==

@@ -197,6 +197,9 @@ namespace fgimpact
       return "Problem type is not impact";
     if (p.contact_model.model != ContactModelParameters::Model::hertz_node)
       return "Contact/Model is not hertz node";
+    if (ti.auto_end_time)
+      return "Time integration/End time = auto (the convolution needs a "
+             "fixed time span)";
     if (ti.scheme != TimeStepper::Scheme::implicit_newmark)
       return "Time integration/Scheme is not implicit";
     if (ti.newmark.beta != 0.25 || ti.newmark.gamma != 0.5)

@@ -2,6 +2,7 @@
 
 #include <fgimpact/app/run_control.h>
 #include <fgimpact/app/simulator.h>
+#include <fgimpact/contact/compliance.h>
 #include <fgimpact/output/impact_summary.h>
 #include <fgimpact/time/impact_driver.h>
 
@@ -185,7 +186,10 @@ namespace fgimpact
     // checked with the parameters).
     AssertThrow(parameters.time_integration.end_time >= dt * (1. - 1e-9),
                 ExcMessage(
-                  "Time integration/End time = " +
+                  std::string("Time integration/") +
+                  (parameters.time_integration.auto_end_time ?
+                     "Maximum end time = " :
+                     "End time = ") +
                   std::to_string(parameters.time_integration.end_time * 1e6) +
                   " us is shorter than one time step (" +
                   std::to_string(dt * 1e6) + " us)."));
@@ -302,10 +306,12 @@ namespace fgimpact
           monitor->record(0, 0., *stepper, ball, contact_state);
         while (steps_done < n_steps && stop == 0)
           {
-            timestep = steps_done + 1;
-            do_timestep();
-            steps_done = timestep;
-            stop       = agreed_stop(comm, !monitor->output_failure().empty());
+            timestep            = steps_done + 1;
+            const bool finished = do_timestep();
+            steps_done          = timestep;
+            stop = agreed_stop(comm, !monitor->output_failure().empty());
+            if (finished)
+              break;
             if (stop == 0 && interval > 0 && steps_done % interval == 0 &&
                 steps_done < n_steps)
               stop = write_checkpoint(steps_done);
@@ -317,6 +323,8 @@ namespace fgimpact
             AssertThrow(write_checkpoint(steps_done) == 0,
                         ExcOutputFailure(monitor->output_failure()));
           });
+        if (stop == 0)
+          report_end_time(steps_done);
         monitor->close_output();
         if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
           stop = -1;
@@ -433,12 +441,65 @@ namespace fgimpact
 
 
 
-  void
+  bool
   ImpactDriver::do_timestep()
   {
     const double t = timestep * dt;
     coupler->advance(timestep, t, ball, contact_state);
     monitor->record(timestep, t, *stepper, ball, contact_state);
+    if (!parameters.time_integration.auto_end_time)
+      {
+        end_time_rule.record(t, contact_state.force);
+        return false;
+      }
+    return end_time_rule.left_for_good(t,
+                                       ball.w,
+                                       ball.v,
+                                       contact_state.force,
+                                       stepper->kinetic_energy() +
+                                         stepper->strain_energy(),
+                                       [this]() {
+                                         return static_compliance();
+                                       });
+  }
+
+
+
+  double
+  ImpactDriver::static_compliance() const
+  {
+    // One factorization of K, once, when the ball first seems to have
+    // left; at most 8 contact DoFs spread over the candidates' radii
+    // (a resolved contact: its compliance varies slowly over the patch).
+    EffectiveMatrixSolver solver(parameters.linear_solver);
+    solver.initialize(plate.stiffness_matrix(), &plate.get_dof_handler());
+    const auto       &dofs = contact->contact_dofs();
+    const std::size_t n    = std::min<std::size_t>(dofs.size(), 8);
+    std::vector<types::global_dof_index> sample;
+    for (std::size_t k = 0; k < n; ++k)
+      sample.push_back(dofs[n == 1 ? 0 : k * (dofs.size() - 1) / (n - 1)]);
+    FullMatrix<double> C;
+    compute_compliance(solver, plate, sample, C, nullptr);
+    double largest = 0;
+    for (unsigned int i = 0; i < C.m(); ++i)
+      largest = std::max(largest, C(i, i));
+    return largest;
+  }
+
+
+
+  void
+  ImpactDriver::report_end_time(const unsigned int steps_done) const
+  {
+    if (!parameters.time_integration.auto_end_time)
+      return;
+    if (steps_done < n_steps)
+      pcout << "  " << end_time_rule.reason() << '\n';
+    else
+      pcout << "  WARNING: End time = auto: the ball had not left the plate "
+               "for good by Time integration/Maximum end time ("
+            << parameters.time_integration.end_time * 1e6
+            << " us); the run stopped there; raise it to see the rest.\n";
   }
 
 
@@ -485,6 +546,9 @@ namespace fgimpact
     CheckpointReader contact_model_state =
       in->section("contact model", ContactModel::checkpoint_version);
     contact->load(contact_model_state);
+    CheckpointReader end_time_state =
+      in->section("end time rule", AutoEndTime::checkpoint_version);
+    end_time_rule.load(end_time_state);
     pcout << "  resumed from the checkpoint after "
           << time_step_label(in->step, in->step * dt) << '\n';
     return in;
@@ -511,6 +575,9 @@ namespace fgimpact
     out.section("contact model",
                 ContactModel::checkpoint_version,
                 [&](CheckpointWriter &s) { contact->save(s); });
+    out.section("end time rule",
+                AutoEndTime::checkpoint_version,
+                [&](CheckpointWriter &s) { end_time_rule.save(s); });
     monitor->save(out, step); // flushes history.csv
     const MPI_Comm comm = plate.get_mpi_communicator();
     if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)

@@ -4,6 +4,7 @@
 
 #include <deal.II/lac/solver_control.h>
 
+#include <fgimpact/base/patterns.h>
 #include <fgimpact/contact/compliance.h>
 #include <fgimpact/time/contact_coupler.h>
 #include <fgimpact/time/time_stepper.h>
@@ -73,10 +74,22 @@ namespace fgimpact
                         "Time step dt; 0 = automatic, the explicit scheme's "
                         "stability limit times the safety factor (explicit "
                         "only). Unit: s.");
-      prm.declare_entry("End time",
-                        "400e-6",
+      prm.declare_entry(
+        "End time",
+        "auto",
+        DoubleOrAuto(1e-12, 1e3),
+        "Simulated time span. auto = stop once the ball has left the plate "
+        "for good: it moves away and its distance exceeds 1.2 times the "
+        "largest rise the plate's energy allows under it, sqrt(2 E C) with "
+        "the plate's static compliance C at the contact, and a quarter of "
+        "the contact's duration has passed since it left; at the latest at "
+        "the Maximum end time. Unit: s.");
+      prm.declare_entry("Maximum end time",
+                        "2e-3",
                         Patterns::Double(1e-12, 1e3),
-                        "Simulated time span. Unit: s.");
+                        "End time = auto: the run stops here if the ball has "
+                        "not left for good by then (a warning says so). "
+                        "Unit: s.");
     }
     prm.leave_subsection();
 
@@ -110,7 +123,9 @@ namespace fgimpact
     newmark.beta  = prm.get_double("Newmark beta");
     newmark.gamma = prm.get_double("Newmark gamma");
     time_step     = prm.get_double("Time step");
-    end_time      = prm.get_double("End time");
+    auto_end_time = (prm.get("End time") == "auto");
+    end_time      = auto_end_time ? prm.get_double("Maximum end time") :
+                                    prm.get_double("End time");
     prm.leave_subsection();
 
     prm.enter_subsection("Newton");

@@ -12,6 +12,7 @@
 #include <fgimpact/output/checkpoint.h>
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/plate/plate_model.h>
+#include <fgimpact/time/auto_end_time.h>
 #include <fgimpact/time/contact_coupler.h>
 #include <fgimpact/time/time_stepper.h>
 
@@ -93,8 +94,20 @@ namespace fgimpact
     }
 
   private:
-    void
+    /// One step, recorded; true if End time = auto and the ball has left
+    /// for good (the run stops after it).
+    bool
     do_timestep();
+
+    /// The plate's largest static compliance e^T K^-1 e (m/N) over (a
+    /// sample of) the contact DoFs, for End time = auto.  Collective.
+    double
+    static_compliance() const;
+
+    /// End time = auto: one log line on why the run stopped, or a warning
+    /// that it ran to the Maximum end time.
+    void
+    report_end_time(const unsigned int steps_done) const;
 
     /// The time step against the End time (refused if longer) and against
     /// Hertz's contact duration (a log warning below 20 steps in it).
@@ -163,6 +176,7 @@ namespace fgimpact
 
     ImpactorState ball;
     ContactState  contact_state;
+    AutoEndTime   end_time_rule;
     double        dt       = 0;
     unsigned int  n_steps  = 0;
     unsigned int  timestep = 0;

@@ -52,7 +52,10 @@ namespace fgimpact
     {
       Scheme                        scheme        = Scheme::implicit_newmark;
       double                        time_step     = 1e-6;   // s, 0: auto
-      double                        end_time      = 400e-6; // s
+      /// End time = auto: the run stops when the ball has left for good
+      /// (AutoEndTime), at the latest at end_time = Maximum end time.
+      bool                          auto_end_time = true;
+      double                        end_time      = 2e-3; // s
       double                        safety_factor = 0.9;
       NewmarkIntegrator::Parameters newmark;
       NewtonControl                 newton;
