@@ -77,4 +77,26 @@ namespace fgimpact
           (*responses)[j].swap(c);
       }
   }
+
+
+
+  double
+  largest_static_compliance(
+    const PlateModel                           &plate,
+    const EffectiveMatrixSolver::Parameters    &solver_parameters,
+    const std::vector<types::global_dof_index> &dofs)
+  {
+    EffectiveMatrixSolver solver(solver_parameters);
+    solver.initialize(plate.stiffness_matrix(), &plate.get_dof_handler());
+    const std::size_t n = std::min<std::size_t>(dofs.size(), 8);
+    std::vector<types::global_dof_index> sample;
+    for (std::size_t k = 0; k < n; ++k)
+      sample.push_back(dofs[n == 1 ? 0 : k * (dofs.size() - 1) / (n - 1)]);
+    FullMatrix<double> C;
+    compute_compliance(solver, plate, sample, C, nullptr);
+    double largest = 0;
+    for (unsigned int i = 0; i < C.m(); ++i)
+      largest = std::max(largest, C(i, i));
+    return largest;
+  }
 } // namespace fgimpact

@@ -323,8 +323,7 @@ namespace fgimpact
             AssertThrow(write_checkpoint(steps_done) == 0,
                         ExcOutputFailure(monitor->output_failure()));
           });
-        if (stop == 0)
-          report_end_time(steps_done);
+        report_end_time(steps_done, stop);
         monitor->close_output();
         if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
           stop = -1;
@@ -452,46 +451,26 @@ namespace fgimpact
         end_time_rule.record(t, contact_state.force);
         return false;
       }
-    return end_time_rule.left_for_good(t,
-                                       ball.w,
-                                       ball.v,
-                                       contact_state.force,
-                                       stepper->kinetic_energy() +
-                                         stepper->strain_energy(),
-                                       [this]() {
-                                         return static_compliance();
-                                       });
-  }
-
-
-
-  double
-  ImpactDriver::static_compliance() const
-  {
-    // One factorization of K, once, when the ball first seems to have
-    // left; at most 8 contact DoFs spread over the candidates' radii
-    // (a resolved contact: its compliance varies slowly over the patch).
-    EffectiveMatrixSolver solver(parameters.linear_solver);
-    solver.initialize(plate.stiffness_matrix(), &plate.get_dof_handler());
-    const auto       &dofs = contact->contact_dofs();
-    const std::size_t n    = std::min<std::size_t>(dofs.size(), 8);
-    std::vector<types::global_dof_index> sample;
-    for (std::size_t k = 0; k < n; ++k)
-      sample.push_back(dofs[n == 1 ? 0 : k * (dofs.size() - 1) / (n - 1)]);
-    FullMatrix<double> C;
-    compute_compliance(solver, plate, sample, C, nullptr);
-    double largest = 0;
-    for (unsigned int i = 0; i < C.m(); ++i)
-      largest = std::max(largest, C(i, i));
-    return largest;
+    return end_time_rule.left_for_good(
+      t,
+      ball.w,
+      ball.v,
+      contact_state.force,
+      stepper->kinetic_energy() + stepper->strain_energy(),
+      [this]() {
+        return largest_static_compliance(plate,
+                                         parameters.linear_solver,
+                                         contact->contact_dofs());
+      });
   }
 
 
 
   void
-  ImpactDriver::report_end_time(const unsigned int steps_done) const
+  ImpactDriver::report_end_time(const unsigned int steps_done,
+                                const int          stop) const
   {
-    if (!parameters.time_integration.auto_end_time)
+    if (!parameters.time_integration.auto_end_time || stop != 0)
       return;
     if (steps_done < n_steps)
       pcout << "  " << end_time_rule.reason() << '\n';

@@ -28,6 +28,20 @@ namespace fgimpact
                      const std::vector<types::global_dof_index> &dofs,
                      FullMatrix<double>                         &C,
                      std::vector<TrilinosWrappers::MPI::Vector> *responses);
+
+  /**
+   * The plate's largest static compliance e_i^T K^{-1} e_i (m/N) over the
+   * contact DoFs, or over 8 of them spread over the list when it is longer
+   * (a resolved contact's candidates, sorted by their distance from the
+   * impact point: the compliance varies slowly over the patch); one
+   * factorization of K.  For Time integration/End time = auto.
+   * Collective.
+   */
+  double
+  largest_static_compliance(
+    const PlateModel                           &plate,
+    const EffectiveMatrixSolver::Parameters    &solver_parameters,
+    const std::vector<types::global_dof_index> &dofs);
 } // namespace fgimpact
 
 #endif

@@ -99,15 +99,11 @@ namespace fgimpact
     bool
     do_timestep();
 
-    /// The plate's largest static compliance e^T K^-1 e (m/N) over (a
-    /// sample of) the contact DoFs, for End time = auto.  Collective.
-    double
-    static_compliance() const;
-
-    /// End time = auto: one log line on why the run stopped, or a warning
-    /// that it ran to the Maximum end time.
+    /// End time = auto, unless a signal stopped the run (stop != 0): one
+    /// log line on why the run stopped, or a warning that it ran to the
+    /// Maximum end time.
     void
-    report_end_time(const unsigned int steps_done) const;
+    report_end_time(const unsigned int steps_done, const int stop) const;
 
     /// The time step against the End time (refused if longer) and against
     /// Hertz's contact duration (a log warning below 20 steps in it).
