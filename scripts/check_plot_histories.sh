@@ -2,7 +2,8 @@
 # Checks scripts/plot_histories.py (run by scripts/test.sh after ctest):
 # --help exits 0 and names every figure it writes; a bad command line
 # exits 2 with one error line; with matplotlib installed, it draws a small
-# run's figures in svg and pdf (file signatures checked) for a time window.
+# run's figures in svg and pdf (file signatures checked) for a time window,
+# and scripts/plot_convergence.py an Accuracy = converged run's figure.
 # Skips cleanly (exit 0, a note) without python3 or matplotlib (a machine that does not
 # install python3-matplotlib (CI does).  Usage: scripts/check_plot_histories.sh [BUILD_DIR]
 set -euo pipefail
@@ -65,4 +66,13 @@ for format in svg pdf; do
   done <"$work/list"
   check "draws the 10 figures as $format" test $ok = 1
 done
+
+# scripts/plot_convergence.py on a small Accuracy = converged run (hertz
+# midplane, 10 x 6 x 2, about 1 s).
+"$build/fgimpact" tests/run/default_small.prm -s "Output/Directory=$work/conv" \
+  -s "Contact/Model=hertz midplane" -s "Accuracy=converged" \
+  -s "Output/VTU interval=0" -s "Output/Log interval=0" \
+  -s "Output/Print timing=false" >/dev/null
+figure=$("$python" scripts/plot_convergence.py --format svg "$work/conv")
+check "plot_convergence.py draws convergence.svg" grep -q "<svg" "$figure"
 exit $failed

@@ -1,64 +1,57 @@
 #!/usr/bin/env bash
 # The contact force that converges, beside the paper's law:
 #
-#   scripts/contact_convergence.sh SCENE.prm [OUT_DIR] [TOLERANCE] [FIRST] [LAST]
+#   scripts/contact_convergence.sh SCENE.prm [OUT_DIR] [TOLERANCE]
 #
-# runs SCENE with Contact/Model = resolved sphere at Geometry/Contact
-# refinement levels FIRST, FIRST+1, ... (default 3 .. 7) until the peak
-# force changes by less than TOLERANCE (default 0.01 = 1 %), extrapolates
-# the peak force, contact duration and departure velocity (Richardson,
-# with the order observed on the last three levels when their changes
-# shrink), and runs the same scene with the paper's hertz node (the
-# scene's own mesh) and with hertz midplane (at the last level); prints a
-# table with each model's error against the extrapolated resolved values
-# and writes OUT_DIR/contact_convergence.csv and, if matplotlib is there,
-# OUT_DIR/contact_force.png with the three contact-force histories.
-# Run from the repository root (the .prm's includes are read from there).
+# A thin wrapper over the program: SCENE with Contact/Model = resolved
+# sphere and Accuracy = converged (Accuracy tolerance = TOLERANCE, default
+# 0.01: the program runs the contact refinement levels from the scene's
+# automatic one until the peak force, contact duration, departure
+# velocity, mid-plane deflection and indentation change by less than it,
+# then halves the time step once, and writes convergence.csv and an error
+# estimate per number in summary.txt), then the same scene with the
+# paper's hertz node (the scene's own mesh) and with hertz midplane (at the
+# converged level).  Prints a table with each model's error against the
+# converged resolved values and writes OUT_DIR/contact_convergence.csv
+# and, if matplotlib is there, OUT_DIR/contact_force.png with the three
+# contact-force histories.  Run from the repository root.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/fgimpact_lib.sh
 
-scene=${1:?usage: scripts/contact_convergence.sh SCENE.prm [OUT_DIR] [TOLERANCE] [FIRST] [LAST]}
+scene=${1:?usage: scripts/contact_convergence.sh SCENE.prm [OUT_DIR] [TOLERANCE]}
 out=${2:-output/contact_convergence/$(basename "$scene" .prm)}
 tolerance=${3:-0.01}
-first=${4:-3}
-last=${5:-7}
 exe=${FGIMPACT:-build/fgimpact}
 mkdir -p "$out"
-keys="peak_contact_force_N contact_duration_us departure_velocity_m_s"
 
-run() { # run NAME MODEL LEVELS
-  local dir=$out/$1
-  write_prm "$out/$1.prm" "$scene" "Contact/Model=$2" \
-    "Geometry/Contact refinement levels=$3" "Output/Directory=$dir" \
+run() { # run NAME [PATH=VALUE ...]
+  local name=$1 dir=$out/$1
+  shift
+  write_prm "$out/$name.prm" "$scene" "$@" "Output/Directory=$dir" \
     "Output/VTU interval=0" "Output/Log interval=0"
   local start=$SECONDS
-  "$exe" "$out/$1.prm" > "$out/$1.log" 2>&1 ||
-    { echo "fgimpact failed on $out/$1.prm (see $out/$1.log)" >&2; exit 1; }
-  printf '%-18s level %d: %s N, %s s, %s DoFs\n' "$2" "$3" \
+  "$exe" "$out/$name.prm" > "$out/$name.log" 2>&1 ||
+    { echo "fgimpact failed on $out/$name.prm (see $out/$name.log)" >&2; exit 1; }
+  printf '%-16s %s N, %s s, %s DoFs\n' "$name" \
     "$(summary_value "$dir" peak_contact_force_N)" $((SECONDS - start)) \
     "$(summary_value "$dir" n_dofs)"
 }
 
-levels=()
-previous=""
-for ((level = first; level <= last; ++level)); do
-  run "resolved_$level" "resolved sphere" "$level"
-  levels+=("$level")
-  force=$(summary_value "$out/resolved_$level" peak_contact_force_N)
-  if [ -n "$previous" ] &&
-    python3 -c "import sys; sys.exit(0 if abs($force/$previous-1) < $tolerance else 1)"; then
-    break
-  fi
-  previous=$force
-done
-top=${levels[-1]}
-run hertz_node "hertz node" 0
-run hertz_midplane "hertz midplane" "$top"
+run resolved "Contact/Model=resolved sphere" "Accuracy=converged" \
+  "Accuracy tolerance=$tolerance"
+top=$(summary_value "$out/resolved" converged_contact_refinement_levels)
+run hertz_node "Contact/Model=hertz node"
+run hertz_midplane "Contact/Model=hertz midplane" \
+  "Geometry/Contact refinement levels=$top"
 
-python3 - "$out" "$keys" "${levels[@]}" <<'PY'
-import math, sys
-out, keys, levels = sys.argv[1], sys.argv[2].split(), sys.argv[3:]
+python3 - "$out" <<'PY'
+import csv, sys
+out = sys.argv[1]
+keys = [("peak_contact_force_N", "peak_contact_force"),
+        ("contact_duration_us", "contact_duration"),
+        ("departure_velocity_m_s", "departure_velocity"),
+        ("max_midplane_deflection_um", "max_midplane_deflection")]
 
 def summary(name):
     values = {}
@@ -74,39 +67,26 @@ def number(s):
     except ValueError:
         return float("nan")
 
-resolved = [summary(f"resolved_{l}") for l in levels]
-rows = []
-for key in keys:
-    f = [number(r[key]) for r in resolved]
-    best, order, estimate = f[-1], float("nan"), f[-1]
-    if len(f) >= 3:
-        d1, d2 = f[-2] - f[-3], f[-1] - f[-2]
-        if d1 * d2 > 0 and abs(d1) > abs(d2):
-            order = math.log2(d1 / d2)
-            estimate = f[-1] + d2 / (2 ** order - 1)
-    error = abs(estimate - best)
-    if error == 0 and len(f) >= 2:
-        error = abs(f[-1] - f[-2])  # no order observed: the last change
-    rows.append((key, f, order, estimate, error))
-
-node, mid = summary("hertz_node"), summary("hertz_midplane")
-with open(f"{out}/contact_convergence.csv", "w") as csv:
-    csv.write("quantity," + ",".join(f"resolved_level_{l}" for l in levels) +
-              ",observed_order,resolved_extrapolated,estimated_error,"
-              "hertz_node,hertz_node_error_percent,hertz_midplane,"
-              "hertz_midplane_error_percent\n")
-    print(f"\n{'quantity':<24}" + "".join(f"{'level ' + l:>12}" for l in levels) +
-          f"{'order':>7}{'extrapolated':>14}{'+-':>9}{'hertz node':>12}{'err %':>8}"
-          f"{'midplane':>11}{'err %':>8}")
-    for key, f, order, estimate, error in rows:
-        n, m = number(node[key]), number(mid[key])
-        en, em = 100 * (n / estimate - 1), 100 * (m / estimate - 1)
-        print(f"{key:<24}" + "".join(f"{x:12.4f}" for x in f) +
-              f"{order:7.2f}{estimate:14.4f}{error:9.4f}{n:12.4f}{en:8.2f}"
-              f"{m:11.4f}{em:8.2f}")
-        csv.write(f"{key}," + ",".join(f"{x:.6g}" for x in f) +
-                  f",{order:.3f},{estimate:.6g},{error:.3g},{n:.6g},{en:.3f},"
-                  f"{m:.6g},{em:.3f}\n")
+levels = list(csv.DictReader(open(f"{out}/resolved/convergence.csv")))
+resolved, node, mid = summary("resolved"), summary("hertz_node"), summary("hertz_midplane")
+header = ("quantity," + ",".join(f"resolved_level_{r['contact_refinement_levels']}"
+                                 f"_dt_{r['time_step_us']}" for r in levels) +
+          ",resolved_converged,estimated_error,error_method,hertz_node,"
+          "hertz_node_error_percent,hertz_midplane,hertz_midplane_error_percent\n")
+with open(f"{out}/contact_convergence.csv", "w") as f:
+    f.write(header)
+    print(f"\n{'quantity':<28}{'resolved':>12}{'+-':>10}{'hertz node':>12}"
+          f"{'err %':>8}{'midplane':>11}{'err %':>8}   (error estimate method)")
+    for column, key in keys:
+        best = number(resolved[column])
+        error = best * number(resolved[f"{key}_error_estimate"])
+        n, m = number(node[column]), number(mid[column])
+        en, em = 100 * (n / best - 1), 100 * (m / best - 1)
+        how = resolved[f"{key}_error_method"]
+        print(f"{column:<28}{best:12.4f}{error:10.4f}{n:12.4f}{en:8.2f}"
+              f"{m:11.4f}{em:8.2f}   ({how})")
+        f.write(f"{column}," + ",".join(r[column] for r in levels) +
+                f",{best:.8g},{error:.3g},{how},{n:.8g},{en:.3f},{m:.8g},{em:.3f}\n")
 PY
 
 # The figure, if matplotlib is installed (Debian's python3-matplotlib).
@@ -117,15 +97,13 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 out, top = sys.argv[1], sys.argv[2]
 plt.figure(figsize=(6, 4))
-for name, label in ((f"resolved_{top}", f"resolved sphere, level {top}"),
+for name, label in (("resolved", f"resolved sphere, level {top}, converged"),
                     ("hertz_midplane", "hertz midplane"),
                     ("hertz_node", "hertz node (paper)")):
-    rows = list(csv.reader(open(f"{out}/{name}/history.csv")))
-    head = [h.strip() for h in rows[0]]
-    t, F = head.index("t_us"), head.index("contact_force_N")
-    plt.plot([float(r[t]) for r in rows[1:]], [float(r[F]) for r in rows[1:]],
-             label=label)
-plt.xlabel("t (us)"); plt.ylabel("contact force (N)"); plt.legend()
+    rows = list(csv.DictReader(open(f"{out}/{name}/history.csv")))
+    plt.plot([float(r["t_us"]) for r in rows],
+             [float(r["contact_force_N"]) for r in rows], label=label)
+plt.xlabel("t (µs)"); plt.ylabel("contact force (N)"); plt.legend()
 plt.tight_layout(); plt.savefig(f"{out}/contact_force.png", dpi=120)
 print(f"figure: {out}/contact_force.png")
 PY

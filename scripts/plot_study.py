@@ -2,7 +2,8 @@
 """Figures of a parameter study (fgimpact --study ...): the peak contact
 force, the largest mid-plane deflection and the contact duration against
 each varied entry of study.csv, one line per combination of the other
-varied entries.
+varied entries; with Accuracy = converged, each point with an error bar
+of its estimated error (study.csv's *_error_estimate, relative).
 
 Usage: /usr/bin/python3 scripts/plot_study.py OUTPUT/study.csv
            [--format png|pdf|svg] [--out DIR]
@@ -16,10 +17,15 @@ import os
 import re
 import sys
 
+# (column, axis label, the summary key of its relative error estimate,
+# present with Accuracy = converged: drawn as error bars).
 QUANTITIES = [
-    ("peak_contact_force_N", "peak contact force (N)"),
-    ("max_midplane_deflection_um", "max mid-plane deflection (µm)"),
-    ("contact_duration_us", "contact duration (µs)"),
+    ("peak_contact_force_N", "peak contact force (N)",
+     "peak_contact_force_error_estimate"),
+    ("max_midplane_deflection_um", "max mid-plane deflection (µm)",
+     "max_midplane_deflection_error_estimate"),
+    ("contact_duration_us", "contact duration (µs)",
+     "contact_duration_error_estimate"),
 ]
 
 
@@ -89,12 +95,17 @@ def main():
             series.setdefault(key, []).append(r)
         fig, axes = plt.subplots(1, len(QUANTITIES),
                                  figsize=(4.2 * len(QUANTITIES), 3.6))
-        for ax, (column, label) in zip(axes, QUANTITIES):
+        for ax, (column, label, error) in zip(axes, QUANTITIES):
             for key, members in series.items():
                 members = sorted(members, key=lambda r: number(r[entry]))
-                ax.plot([number(r[entry]) for r in members],
-                        [number(r.get(column, "nan")) for r in members],
-                        "o-", label=key or None)
+                x = [number(r[entry]) for r in members]
+                y = [number(r.get(column, "nan")) for r in members]
+                if error in header:
+                    bars = [abs(v) * number(r[error]) for v, r in zip(y, members)]
+                    ax.errorbar(x, y, yerr=bars, fmt="o-", capsize=3,
+                                label=key or None)
+                else:
+                    ax.plot(x, y, "o-", label=key or None)
             ax.set_xlabel(with_unit(entry))
             ax.set_ylabel(label)
             ax.grid(True, alpha=0.3)

@@ -37,7 +37,7 @@ namespace fgimpact
     prm.declare_entry(
       "Accuracy",
       "custom",
-      Patterns::Selection("custom|fast|standard|accurate"),
+      Patterns::Selection("custom|fast|standard|accurate|converged"),
       "Discretization preset. custom: Geometry/Subdivisions x, y, z and "
       "Time integration/Time step as given. The others overwrite those "
       "four entries (the written parameters.prm shows the effective "
@@ -56,7 +56,19 @@ namespace fgimpact
       "/ -0.3 %. accurate = 16 elements, dt = 1 us (43911 DoFs, about "
       "20 s): +0.31 / -0.26 / -0.10 / +0.04 %. Presets need Time "
       "integration/Scheme = implicit; the mesh applies to every Problem "
-      "type.");
+      "type. converged: an impact with Contact/Model = resolved sphere or "
+      "hertz midplane run at increasing Geometry/Contact refinement levels "
+      "(from the scene's automatic level) until the peak contact force, "
+      "contact duration, departure velocity, largest mid-plane deflection "
+      "and indentation change by less than the Accuracy tolerance, then "
+      "once at half the Time step; the mesh and step as given otherwise; "
+      "convergence.csv and an error estimate per number in summary.txt.");
+    prm.declare_entry("Accuracy tolerance",
+                      "0.01",
+                      Patterns::Double(1e-6, 0.5),
+                      "Accuracy = converged: the relative change between "
+                      "two contact refinement levels below which the "
+                      "sequence stops. Dimensionless (0.01 = 1 %).");
   }
 
 
@@ -65,9 +77,10 @@ namespace fgimpact
   AccuracyPreset::Parameters::apply(ParameterHandler &prm)
   {
     preset              = prm.get("Accuracy");
+    tolerance           = prm.get_double("Accuracy tolerance");
     file_subdivisions_x = file_subdivisions_y = file_subdivisions_z = 0;
     file_time_step                                                  = 0;
-    if (preset == "custom")
+    if (preset == "custom" || preset == "converged")
       return;
     const Setting &s =
       *std::find_if(settings().begin(),
@@ -123,7 +136,7 @@ namespace fgimpact
                                               const unsigned int ny,
                                               const unsigned int nz) const
   {
-    if (preset == "custom")
+    if (preset == "custom" || preset == "converged")
       return "";
     const Setting &s =
       *std::find_if(settings().begin(),

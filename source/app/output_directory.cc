@@ -73,7 +73,8 @@ namespace fgimpact
           name == "frequencies.csv" || name == "solution.pvd" ||
           name == "log.txt" || name == "input.prm" || name == "sphere.pvd" ||
           name == "contact.pvd" || name == "contact_pressure.csv" ||
-          name == "peak_fields.pvtu" || name == "study.csv")
+          name == "peak_fields.pvtu" || name == "study.csv" ||
+          name == "convergence.csv")
         return true;
       // peak_fields.R.vtu
       if (name.rfind("peak_fields.", 0) == 0 && ends_with(name, ".vtu") &&

@@ -30,6 +30,30 @@ namespace fgimpact
                      Utilities::to_string(end_time * 1e6) + " us)."));
     }
 
+    /// Accuracy = converged refines the contact: it needs an impact whose
+    /// contact converges under refinement, and the implicit scheme (its
+    /// time step is halved once).
+    void
+    check_converged_accuracy(const Parameters &p)
+    {
+      if (p.accuracy.preset != "converged")
+        return;
+      AssertThrow(p.problem_type == ProblemType::impact,
+                  ExcMessage("Accuracy = converged is for Problem type = "
+                             "impact; use Accuracy = custom."));
+      AssertThrow(p.contact_model.model !=
+                    ContactModelParameters::Model::hertz_node,
+                  ExcMessage("Accuracy = converged with Contact/Model = hertz "
+                             "node: its point force does not converge under "
+                             "refinement; use resolved sphere or hertz "
+                             "midplane."));
+      AssertThrow(p.time_integration.scheme ==
+                    TimeStepper::Scheme::implicit_newmark,
+                  ExcMessage("Accuracy = converged needs Time "
+                             "integration/Scheme = implicit (it halves the "
+                             "time step once)."));
+    }
+
     const char *
     support_name(const SideSupport support)
     {
@@ -357,6 +381,7 @@ namespace fgimpact
                   std::to_string(std::min(a, b)) + " m)."));
     validate_supports(*this);
     output.probe_points.validate(a, b, geometry.thickness);
+    check_converged_accuracy(*this);
   }
 
   std::vector<std::string>

@@ -360,6 +360,11 @@ namespace fgimpact
     CheckpointSettings checkpoint;
     try
       {
+        AssertThrow(options.resume_directory.empty() ||
+                      parameters.accuracy.preset != "converged",
+                    ExcMessage("--resume: an Accuracy = converged run is a "
+                               "sequence of runs and cannot be resumed; "
+                               "run it again."));
         checkpoint = checkpoint_settings(options, prm);
       }
     catch (...)

@@ -8,6 +8,7 @@
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
 #include <fgimpact/plate/symmetry.h>
+#include <fgimpact/study/converged_run.h>
 
 #include <cmath>
 #include <cstdio>
@@ -214,9 +215,22 @@ namespace fgimpact
 
 
 
+  Simulator::~Simulator() = default;
+
+
+
   void
   Simulator::setup()
   {
+    if (parameters.accuracy.preset == "converged")
+      {
+        converged = std::make_unique<ConvergedRun>(parameters,
+                                                   mpi_communicator,
+                                                   summary_file,
+                                                   observers);
+        converged->setup();
+        return;
+      }
     setup_plate();
     switch (parameters.problem_type)
       {
@@ -257,7 +271,8 @@ namespace fgimpact
                                                    geometry->thickness());
     scene = std::make_unique<Scene>(parameters, *material, geometry->share());
     // Refuse a run that cannot fit before the long set-up (the mesh).
-    const LocalRefinement refinement = contact_refinement();
+    const LocalRefinement refinement =
+      contact_refinement_of(parameters, *scene);
     resource_estimate = estimate_resources(parameters, refinement);
     check_memory(parameters, resource_estimate, mpi_communicator);
     plate = std::make_unique<PlateModel>(parameters.finite_element,
@@ -336,11 +351,11 @@ namespace fgimpact
 
 
   LocalRefinement
-  Simulator::contact_refinement() const
+  contact_refinement_of(const Parameters &parameters, const Scene &scene)
   {
     LocalRefinement refinement;
-    refinement.centre  = scene->impact_point();
-    const double a_max = scene->expected_contact_radius();
+    refinement.centre  = scene.impact_point();
+    const double a_max = scene.expected_contact_radius();
     refinement.levels =
       parameters.geometry.contact_refinement_auto ?
         automatic_contact_refinement_levels(parameters, a_max) :
@@ -378,15 +393,22 @@ namespace fgimpact
   void
   Simulator::run()
   {
-    if (!driver)
+    if (!driver && !converged)
       setup();
     try
       {
-        driver->run();
+        if (converged)
+          converged->run();
+        else
+          driver->run();
       }
     catch (const RunInterrupted &)
       {
-        throw; // its summary.txt says interrupted already
+        // Its summary.txt says interrupted already, unless a level of
+        // Accuracy = converged was running (its own directory's does).
+        if (converged && !converged->final_run_started())
+          write_failed_summary("interrupted");
+        throw;
       }
     catch (...)
       {
@@ -410,7 +432,7 @@ namespace fgimpact
       }
     catch (...)
       {}
-    if (!driver)
+    if (!driver && !(converged && converged->final_run_started()))
       {
         // Only the status: nothing else is known.
         SummaryWriter out;
@@ -424,6 +446,8 @@ namespace fgimpact
   const ImpactResults &
   Simulator::get_results() const
   {
+    if (converged)
+      return converged->results();
     const auto *impact = dynamic_cast<const ImpactDriver *>(driver.get());
     AssertThrow(impact != nullptr,
                 ExcMessage("Simulator::get_results(): not an impact run."));

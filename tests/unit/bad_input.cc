@@ -331,6 +331,18 @@ namespace
        "subsection Time integration\n set End time = auto\nend\n",
        1,
        "Maximum end time"},
+      {"Accuracy = converged with the paper's hertz node",
+       "set Accuracy = converged\n"
+       "subsection Contact\n set Model = hertz node\nend\n",
+       1,
+       "hertz node"},
+      {"Accuracy = converged with the explicit scheme",
+       "set Accuracy = converged\n"
+       "subsection Contact\n set Model = hertz midplane\nend\n"
+       "subsection Time integration\n set Scheme = explicit\n"
+       " set Time step = 0\nend\n",
+       1,
+       "Scheme = implicit"},
       {"End time neither auto nor a number",
        "subsection Time integration\n set End time = later\nend\n",
        1,

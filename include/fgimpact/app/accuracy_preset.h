@@ -45,6 +45,10 @@ namespace fgimpact
     struct Parameters
     {
       std::string preset = "custom";
+      /// Accuracy = converged: the relative change of the headline numbers
+      /// between two contact refinement levels at which the sequence stops
+      /// (ConvergedRun).
+      double tolerance = 0.01;
       /// What the file had before a preset other than custom overwrote
       /// it: Geometry/Subdivisions x, y, z and Time integration/Time step
       /// (s); 0 for custom.

@@ -33,6 +33,13 @@ namespace fgimpact
   automatic_contact_refinement_levels(const Parameters &parameters,
                                       const double      contact_radius);
 
+  /// Geometry/Contact refinement *: centre, radius (automatic: 1.5 times
+  /// the scene's expected contact radius) and levels (auto resolved).
+  LocalRefinement
+  contact_refinement_of(const Parameters &parameters, const Scene &scene);
+
+  class ConvergedRun;
+
   /**
    * The program: parameters -> plate model (geometry, material, mesh and
    * matrices, shared by all problem types) -> the driver of the problem
@@ -98,12 +105,9 @@ namespace fgimpact
       return summary_file;
     }
 
-  private:
-    /// Geometry/Contact refinement *: centre, radius (automatic from the
-    /// scene's expected contact radius) and levels.
-    LocalRefinement
-    contact_refinement() const;
+    ~Simulator();
 
+  private:
     /// Graded elements with sampled nodal values: a log warning if they
     /// misread the profile by more than 25 % in an element layer (a
     /// boundary layer, n -> 0+), naming the entries that fix it.
@@ -123,7 +127,10 @@ namespace fgimpact
     std::unique_ptr<ProblemDriver>              driver;
     std::vector<ImpactMonitor::RowObserver>     observers;
     CheckpointSettings                          checkpoint_settings;
-    mutable SummaryFile                         summary_file;
+    /// Accuracy = converged: the sequence of runs that replaces the
+    /// driver.
+    std::unique_ptr<ConvergedRun> converged;
+    mutable SummaryFile           summary_file;
   };
 } // namespace fgimpact
 

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The price of the converged answer (issue 24): whole-process wall time and
+# peak RSS, in one run of this script, of the default scene
+# (prm/default.prm, End time 400 us) with
+#   hertz-node       the paper's model on its own mesh (the reference);
+#   converged-1%     resolved sphere, Accuracy = converged, tolerance 0.01;
+#   converged-0.2%   the same at 0.002;
+#   level7-resolved  resolved sphere at 7 contact refinement levels;
+#   level7-node      hertz node on the same level-7 mesh (the plate alone);
+# N rounds, interleaved (the machine is shared: compare ratios within one
+# run); the medians, and each one's ratio to hertz-node.  Prints the
+# converged runs' peak force with its error estimate.
+# Usage: bench/converged_accuracy.sh [N]   (default 1; about 7 min a round)
+#        FGIMPACT=path/to/fgimpact to use another executable.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+. scripts/fgimpact_lib.sh
+exe=$(copy_executable "$(mktemp -d)")
+need_gnu_time
+n=${1:-1}
+root=$(mktemp -d)
+trap 'rm -rf "$root"' EXIT
+labels=(hertz-node converged-1% converged-0.2% level7-resolved level7-node)
+options=(
+  ""
+  "-s Contact/Model=resolved?sphere -s Accuracy=converged -s Accuracy?tolerance=0.01"
+  "-s Contact/Model=resolved?sphere -s Accuracy=converged -s Accuracy?tolerance=0.002"
+  "-s Contact/Model=resolved?sphere -s Geometry/Contact?refinement?levels=7"
+  "-s Geometry/Contact?refinement?levels=7"
+)
+for ((run = 0; run < n; ++run)); do
+  for k in "${!labels[@]}"; do
+    dir="$root/${labels[$k]}"
+    args=()
+    for word in ${options[$k]}; do args+=("${word//\?/ }"); done
+    /usr/bin/time -f "%e %M" -o "$root/time" "$exe" prm/default.prm \
+      -s "Output/Directory=$dir" -s "Output/Print timing=false" \
+      -s "Output/Log interval=0" -s "Output/VTU interval=0" \
+      "${args[@]}" >/dev/null
+    cat "$root/time" >>"$root/${labels[$k]//%/}.txt"
+    if [ -f "$dir/convergence.csv" ]; then
+      echo "${labels[$k]}: peak force $(summary_value "$dir" peak_contact_force_N) N," \
+        "estimate $(summary_value "$dir" peak_contact_force_error_estimate)," \
+        "levels $(cut -d, -f2 "$dir/convergence.csv" | tail -n +2 | tr '\n' ' ')"
+    fi
+  done
+done
+median() { sort -n | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
+reference=$(cut -d' ' -f1 "$root/hertz-node.txt" | median)
+reference_rss=$(cut -d' ' -f2 "$root/hertz-node.txt" | median)
+echo "| run | whole process (s, median of $n) | / hertz-node | peak RSS (MB) | / hertz-node |"
+echo "|---|---|---|---|---|"
+for label in "${labels[@]}"; do
+  wall=$(cut -d' ' -f1 "$root/${label//%/}.txt" | median)
+  rss=$(cut -d' ' -f2 "$root/${label//%/}.txt" | median)
+  awk -v l="$label" -v w="$wall" -v r="$rss" -v w0="$reference" -v r0="$reference_rss" \
+    'BEGIN {printf "| %s | %.2f | %.1f | %.0f | %.2f |\n", l, w, w / w0, r / 1024, r / r0}'
+done

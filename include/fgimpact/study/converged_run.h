@@ -1,0 +1,142 @@
+#ifndef fgimpact_converged_run_h
+#define fgimpact_converged_run_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
+
+#include <fgimpact/app/parameters.h>
+#include <fgimpact/output/monitor.h>
+#include <fgimpact/output/output_files.h>
+#include <fgimpact/output/results.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  class Simulator;
+
+  /**
+   * Accuracy = converged: the impact run repeated at increasing contact
+   * refinement levels until its headline numbers settle, then checked
+   * once in time, with an error estimate for each number.
+   *
+   *  1. Levels L0, L0 + 1, ... (L0 = the automatic level of the scene),
+   *     each a plain run at the given time step into
+   *     Output/Directory/convergence/level_L (history.csv, summary.txt; no
+   *     VTU, no checkpoints), until every quantity() changes by less than
+   *     Accuracy tolerance (relative) from the level before.  A next level
+   *     that does not fit the memory stops the run with one line naming
+   *     the tolerance and the memory.
+   *  2. The finest level at half the time step, with the user's outputs,
+   *     into Output/Directory: the run whose files the user reads.
+   *  3. convergence.csv (one row per run) and, appended to summary.txt,
+   *     for each quantity its relative error estimate: from the levels,
+   *     Richardson with the observed order p where the last three values
+   *     are monotone with shrinking changes (error |d2| / (2^p - 1)),
+   *     otherwise the last change |d2|; plus the time step's,
+   *     |q(dt/2) - q(dt)| / 3 (Richardson for the second-order Newmark
+   *     rule); and which method gave it.
+   */
+  class ConvergedRun
+  {
+  public:
+    /// One quantity whose convergence is checked: its summary.txt key
+    /// (without the unit), column name with the unit, and scale to it.
+    struct Quantity
+    {
+      const char *key;
+      const char *column;
+      double      scale;
+      double (*value)(const ImpactResults &);
+    };
+
+    static const std::vector<Quantity> &
+    quantities();
+
+    /// One run of the sequence.
+    struct Level
+    {
+      unsigned int  levels    = 0;
+      double        time_step = 0; // s
+      ImpactResults results;
+      double        wall_time = 0; // s, set-up and run
+    };
+
+    /// `summary`: the summary.txt of Output/Directory, which gets the
+    /// estimates; `observers` watch the final run's history rows.
+    ConvergedRun(const Parameters                              &parameters,
+                 const MPI_Comm                                 communicator,
+                 SummaryFile                                   &summary,
+                 const std::vector<ImpactMonitor::RowObserver> &observers);
+    ~ConvergedRun();
+
+    /// The first level's set-up: checks the input; writes nothing.
+    void
+    setup();
+
+    /// The sequence, the time step check, the final run, convergence.csv
+    /// and the estimates in summary.txt.
+    void
+    run();
+
+    /// The final run's results.
+    const ImpactResults &
+    results() const;
+
+    /// Whether the final run (into Output/Directory) has begun: it then
+    /// writes summary.txt itself, also when it fails.
+    bool
+    final_run_started() const
+    {
+      return final_started;
+    }
+
+    /// The estimate of one quantity (relative) and how it was made, from
+    /// the values at successive levels (same time step) and at half the
+    /// time step on the finest level.
+    static std::pair<double, std::string>
+    estimate(const std::vector<double> &at_levels, const double at_half_step);
+
+  private:
+    /// The parameters of a level run (final: the user's outputs into
+    /// Output/Directory at half the time step).
+    Parameters
+    parameters_of(const unsigned int levels, const bool final) const;
+
+    /// Run `simulator` (set up) with its directory prepared; its row.
+    Level
+    run_one(Simulator &simulator, const Parameters &p);
+
+    /// The largest relative change of a quantity between the last two
+    /// levels, and its key.
+    std::pair<double, std::string>
+    largest_change() const;
+
+    /// Stop with one line if level `levels` does not fit the memory.
+    void
+    check_fits(const unsigned int levels) const;
+
+    void
+    write_outputs(const Level &final_run);
+
+    const Parameters                              parameters;
+    const MPI_Comm                                communicator;
+    SummaryFile                                  &summary;
+    const std::vector<ImpactMonitor::RowObserver> observers;
+    ConditionalOStream                            pcout;
+    unsigned int                                  first_levels     = 0;
+    double                                        first_setup_time = 0; // s
+    std::unique_ptr<Simulator>                    first;
+    std::vector<Level>                            sequence;
+    ImpactResults                                 final_results;
+    /// The final run's summary.txt, to which the estimates are appended.
+    SummaryEntries summary_entries;
+    bool           final_started = false;
+  };
+} // namespace fgimpact
+
+#endif

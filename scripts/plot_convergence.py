@@ -1,0 +1,81 @@
+#!/usr/bin/python3
+"""The convergence of an Accuracy = converged run: each headline number of
+convergence.csv against the element size under the ball (one point per
+contact refinement level at the input's time step, the final run at half
+the step marked apart), with the final value and its estimated error band
+from summary.txt.
+
+Usage: /usr/bin/python3 scripts/plot_convergence.py OUTPUT_DIR
+           [--format png|pdf|svg]
+Writes OUTPUT_DIR/figures/convergence.<format>.  Needs matplotlib
+(Debian's /usr/bin/python3 with python3-matplotlib)."""
+
+import argparse
+import csv
+import os
+import sys
+
+# (convergence.csv column, axis label, summary.txt key prefix)
+QUANTITIES = [
+    ("peak_contact_force_N", "peak contact force (N)", "peak_contact_force"),
+    ("contact_duration_us", "contact duration (µs)", "contact_duration"),
+    ("departure_velocity_m_s", "departure velocity (m/s)", "departure_velocity"),
+    ("max_midplane_deflection_um", "max mid-plane deflection (µm)",
+     "max_midplane_deflection"),
+    ("max_indentation_um", "max indentation (µm)", "max_indentation"),
+]
+
+
+def summary(directory):
+    values = {}
+    with open(os.path.join(directory, "summary.txt")) as f:
+        for line in f:
+            if " = " in line and not line.startswith("#"):
+                key, value = line.split(" = ", 1)
+                values[key.strip()] = value.strip()
+    return values
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("directory", help="Output/Directory of the run")
+    parser.add_argument("--format", default="png", choices=["png", "pdf", "svg"])
+    args = parser.parse_args()
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        sys.exit("plot_convergence.py: matplotlib is missing (use /usr/bin/python3)")
+    with open(os.path.join(args.directory, "convergence.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    final, levels = rows[-1], rows[:-1]
+    s = summary(args.directory)
+    fig, axes = plt.subplots(1, len(QUANTITIES), figsize=(3.6 * len(QUANTITIES), 3.4))
+    for ax, (column, label, key) in zip(axes, QUANTITIES):
+        h = [float(r["element_size_under_ball_mm"]) for r in levels]
+        ax.plot(h, [float(r[column]) for r in levels], "o-",
+                label=f"levels, dt = {levels[0]['time_step_us']} µs")
+        value = float(final[column])
+        ax.plot([float(final["element_size_under_ball_mm"])], [value], "s",
+                label=f"final, dt = {final['time_step_us']} µs")
+        error = abs(value) * float(s.get(f"{key}_error_estimate", "nan"))
+        ax.axhspan(value - error, value + error, alpha=0.2,
+                   label=f"estimated error ({s.get(key + '_error_method', '?')})")
+        ax.set_xscale("log", base=2)
+        ax.set_xlabel("element size under the ball (mm)")
+        ax.set_ylabel(label)
+        ax.grid(True, alpha=0.3)
+    axes[0].legend(fontsize=6)
+    fig.suptitle(f"Accuracy = converged, tolerance {float(s['accuracy_tolerance']):.2%}: "
+                 f"{args.directory}", fontsize=9)
+    fig.tight_layout()
+    out = os.path.join(args.directory, "figures")
+    os.makedirs(out, exist_ok=True)
+    name = os.path.join(out, f"convergence.{args.format}")
+    fig.savefig(name, dpi=150)
+    print(name)
+
+
+if __name__ == "__main__":
+    main()

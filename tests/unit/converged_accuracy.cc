@@ -1,0 +1,209 @@
+// Accuracy = converged (ConvergedRun):
+//  (1) the error estimate on sequences with a known limit: q_L = q* +
+//      c 2^(-p L) (p = 1.5) gives the exact error (Richardson with the
+//      observed order recovers p); half the time step adds |q(dt/2) -
+//      q(dt)| / 3; a sequence whose changes grow falls back to the last
+//      change;
+//  (2) a whole run (hertz midplane, 10 x 6 x 2 plate, tolerance 0.1 %),
+//      read back from its files: convergence.csv's rows against each
+//      level's convergence/level_L/summary.txt and the final summary.txt;
+//      the sequence stops at the first level whose largest change is below
+//      the tolerance; the summary's *_error_estimate keys against the
+//      estimate recomputed here from convergence.csv;
+//  (3) the estimates against the actual error: the final numbers against
+//      a separate run two levels finer at half the final time step; every
+//      actual error below 3 times its estimate + 1e-5.
+
+#include <deal.II/base/mpi.h>
+
+#include <fgimpact/study/converged_run.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <test_tools.h>
+
+using namespace fgimpact;
+
+namespace
+{
+  std::map<std::string, std::string>
+  read_summary(const std::string &file)
+  {
+    std::map<std::string, std::string> values;
+    std::ifstream                      in(file);
+    for (std::string line; std::getline(in, line);)
+      if (const auto at = line.find(" = ");
+          line[0] != '#' && at != std::string::npos)
+        values[line.substr(0, at)] = line.substr(at + 3);
+    return values;
+  }
+
+  /// convergence.csv: the header's names and the rows.
+  std::pair<std::vector<std::string>, std::vector<std::vector<double>>>
+  read_csv(const std::string &file)
+  {
+    std::ifstream in(file);
+    std::string   line;
+    std::getline(in, line);
+    const auto header = Utilities::split_string_list(line, ',');
+    std::vector<std::vector<double>> rows;
+    while (std::getline(in, line))
+      {
+        std::vector<double> row;
+        for (const auto &item : Utilities::split_string_list(line, ','))
+          row.push_back(std::stod(item));
+        rows.push_back(row);
+      }
+    return {header, rows};
+  }
+
+  bool
+  part_one()
+  {
+    const double        q_star = 100., c = 3., p = 1.5;
+    std::vector<double> q;
+    for (unsigned int L = 0; L < 4; ++L)
+      q.push_back(q_star + c * std::pow(2., -p * L));
+    const auto [e1, how1] = ConvergedRun::estimate(q, q.back());
+    const double exact    = std::abs(q.back() - q_star) / q.back();
+    const double delta    = 0.05;
+    const auto [e2, how2] = ConvergedRun::estimate(q, q.back() + delta);
+    const double expected2 =
+      (exact * q.back() + delta / 3.) / (q.back() + delta);
+    const std::vector<double> growing = {100., 100.1, 99.8};
+    const auto [e3, how3]             = ConvergedRun::estimate(growing, 99.8);
+    const double rel1                 = std::abs(e1 / exact - 1.);
+    const double rel2                 = std::abs(e2 / expected2 - 1.);
+    const double rel3                 = std::abs(e3 / (0.3 / 99.8) - 1.);
+    std::printf("(1) power law, p = 1.5: estimate / exact error - 1 = %.1e "
+                "(%s); with dt/2: %.1e; growing changes: %.1e (%s)\n",
+                rel1,
+                how1.c_str(),
+                rel2,
+                rel3,
+                how3.c_str());
+    return rel1 < 1e-10 && rel2 < 1e-10 && rel3 < 1e-12 &&
+           how1 == "richardson p=1.50 + dt/2" && how3 == "last change + dt/2";
+  }
+
+  const std::string scene =
+    "subsection Geometry\n set Subdivisions x = 10\n set Subdivisions y = 6\n"
+    " set Subdivisions z = 2\nend\n"
+    "subsection Contact\n set Model = hertz midplane\nend\n"
+    "subsection Output\n set Directory = out\n set VTU interval = 0\n"
+    " set Log interval = 0\n set Print timing = false\nend\n";
+} // namespace
+
+
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                             ok = part_one();
+
+  // (2) The whole run, read back from its files.
+  const double tolerance = 1e-3;
+  fgimpact_tests::remove_output("out");
+  fgimpact_tests::run_quietly("",
+                              scene + "set Accuracy = converged\n"
+                                      "set Accuracy tolerance = 0.001\n");
+  const auto [header, rows] = read_csv("out/convergence.csv");
+  const auto &quantities    = ConvergedRun::quantities();
+  const auto  column        = [&](const std::string &name) {
+    return std::find(header.begin(), header.end(), name) - header.begin();
+  };
+  double readback = 0;
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    {
+      const bool        final = (i + 1 == rows.size());
+      const std::string file =
+        final ? "out/summary.txt" :
+                "out/convergence/level_" +
+                  std::to_string(static_cast<int>(rows[i][1])) + "/summary.txt";
+      const auto summary = read_summary(file);
+      for (const auto &q : quantities)
+        readback = std::max(readback,
+                            std::abs(rows[i][column(q.column)] -
+                                     std::stod(summary.at(q.column))) /
+                              std::abs(rows[i][column(q.column)]));
+    }
+  // The largest relative change between successive levels (same dt).
+  const auto change = [&](const std::size_t i) {
+    double largest = 0;
+    for (const auto &q : quantities)
+      largest = std::max(largest,
+                         std::abs(rows[i][column(q.column)] -
+                                  rows[i - 1][column(q.column)]) /
+                           std::abs(rows[i][column(q.column)]));
+    return largest;
+  };
+  const std::size_t n_levels    = rows.size() - 1;
+  bool              stops_first = change(n_levels - 1) < tolerance;
+  for (std::size_t i = 1; i + 1 < n_levels; ++i)
+    stops_first = stops_first && change(i) >= tolerance;
+  // The estimates, recomputed from the CSV.
+  const auto summary  = read_summary("out/summary.txt");
+  double     estimate = 0;
+  for (const auto &q : quantities)
+    {
+      std::vector<double> v;
+      for (std::size_t i = 0; i < n_levels; ++i)
+        v.push_back(rows[i][column(q.column)]);
+      const double      half = rows.back()[column(q.column)];
+      const std::size_t k    = v.size() - 1;
+      const double      d1 = v[k - 1] - v[k - 2], d2 = v[k] - v[k - 1];
+      double            e = std::abs(d2);
+      if (d1 * d2 > 0 && std::abs(d2) < std::abs(d1))
+        e = std::abs(d2) / (std::abs(d1 / d2) - 1.); // 2^p = d1/d2
+      e = (e + std::abs(half - v[k]) / 3.) / std::abs(half);
+      const double given =
+        std::stod(summary.at(std::string(q.key) + "_error_estimate"));
+      estimate = std::max(estimate, std::abs(given - e) / e);
+    }
+  std::printf("(2) %zu levels (%d to %d), then dt/2; convergence.csv "
+              "against the summary.txt files: %.1e; stops at the first "
+              "level with a change below %.1f %%: %s; the estimates "
+              "recomputed from the CSV: %.1e\n",
+              n_levels,
+              static_cast<int>(rows[0][1]),
+              static_cast<int>(rows[n_levels - 1][1]),
+              readback,
+              100. * tolerance,
+              stops_first ? "yes" : "NO",
+              estimate);
+  ok = ok && readback < 1e-6 && stops_first && estimate < 1e-5;
+
+  // (3) Against a run two levels finer at half the final step.
+  const int    finest = static_cast<int>(rows.back()[1]);
+  const double dt     = rows.back()[2] * 1e-6;
+  fgimpact_tests::remove_output("out");
+  const ImpactResults reference =
+    fgimpact_tests::run_quietly(
+      "",
+      scene + "subsection Geometry\n set Contact refinement levels = " +
+        std::to_string(finest + 2) +
+        "\nend\nsubsection Time integration\n set Time step = " +
+        Utilities::to_string(dt / 2.) + "\nend\n")
+      .results;
+  for (const auto &q : quantities)
+    {
+      const double actual =
+        std::abs(rows.back()[column(q.column)] - q.scale * q.value(reference)) /
+        std::abs(q.scale * q.value(reference));
+      const double given =
+        std::stod(summary.at(std::string(q.key) + "_error_estimate"));
+      const bool within = actual < 3. * given + 1e-5;
+      std::printf("(3) %-24s estimate %.2e, actual error %.2e: %s\n",
+                  q.key,
+                  given,
+                  actual,
+                  within ? "within 3 x estimate + 1e-5" : "NOT WITHIN");
+      ok = ok && within;
+    }
+  std::printf("%s\n", ok ? "all checks passed" : "FAILED");
+}
