@@ -25,7 +25,8 @@ Writes into DIR (created if missing), EXT = the --format:
   sigma_yy.EXT             sigma_yy at the mid-plane centre (MPa)  Fig. 5a
   sigma_zz.EXT             sigma_zz at the mid-plane centre (MPa)  Fig. 5b
   energy.EXT               impactor, plate kinetic, strain, contact and
-                           total energy (J) vs t (us)
+                           total energy (J) vs t (us), and the plastic
+                           work when history.csv has plastic_dissipation_J
   force_indentation.EXT    contact force F (N) vs indentation (um): the
                            ball's displacement minus the plate's deflection
                            under it (every contact model), in contact (F > 0)
@@ -322,7 +323,11 @@ ENERGIES = [("energy_impactor_J", "impactor"),
             ("energy_plate_kinetic_J", "plate kinetic"),
             ("energy_strain_J", "strain"),
             ("energy_contact_J", "contact"),
-            ("energy_total_J", "total")]
+            ("energy_total_J", "total"),
+            # Drawn only when history.csv has it (a plastic plate, issue
+            # 23): the work dissipated by plasticity.
+            ("plastic_dissipation_J", "plastic work")]
+OPTIONAL_ENERGIES = {"plastic_dissipation_J"}
 LINESTYLES = ["-", "--", ":", "-."]
 
 
@@ -331,6 +336,8 @@ def plot_energy(out, title, runs, histories, options):
     fig, ax = plt.subplots(figsize=(7.5, 4.8))
     for k, ((label, run_dir), history) in enumerate(zip(runs, histories)):
         for c, (name, what) in enumerate(ENERGIES):
+            if name in OPTIONAL_ENERGIES and name not in history:
+                continue
             ax.plot(history["t_us"], column(history, name, run_dir),
                     color="C%d" % c, linestyle=LINESTYLES[k % 4],
                     linewidth=1.6 if what == "total" else 1.2,
