@@ -75,4 +75,29 @@ done
   -s "Output/Print timing=false" >/dev/null
 figure=$("$python" scripts/plot_convergence.py --format svg "$work/conv")
 check "plot_convergence.py draws convergence.svg" grep -q "<svg" "$figure"
+
+# Plain CSV (issue 25): Python's csv.DictReader, without options, gives the
+# documented column names (no space after the separator) in every CSV the
+# program writes: history.csv, probes.csv, convergence.csv, study.csv.
+"$build/fgimpact" tests/run/default_small.prm -s "Output/Directory=$work/study" \
+  -s "Output/VTU interval=0" -s "Output/Log interval=0" \
+  -s "Output/Print timing=false" --study "Impactor/Initial velocity=1,2" >/dev/null
+dict_reader() { # FILE KEY...: every key read back by csv.DictReader, values numbers
+  "$python" - "$@" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1], newline="")))
+ok = rows and all(k in rows[0] for k in sys.argv[2:]) and \
+    all(not k.startswith(" ") for k in rows[0]) and \
+    all(float(r[k]) == float(r[k]) for r in rows for k in sys.argv[2:])
+sys.exit(0 if ok else 1)
+PY
+}
+check "csv.DictReader reads history.csv's keys" \
+  dict_reader "$work/run/history.csv" t_us contact_force_N indentation_um
+check "csv.DictReader reads probes.csv's keys" \
+  dict_reader "$work/run/probes.csv" t_us
+check "csv.DictReader reads convergence.csv's keys" \
+  dict_reader "$work/conv/convergence.csv" contact_refinement_levels peak_contact_force_N
+check "csv.DictReader reads study.csv's keys" \
+  dict_reader "$work/study/study.csv" "Impactor/Initial velocity" peak_contact_force_N
 exit $failed
