@@ -12,7 +12,8 @@ namespace fgimpact
                          const PlateModel                           &plate,
                          const std::vector<types::global_dof_index> &dofs,
                          FullMatrix<double>                         &C,
-                         std::vector<TrilinosWrappers::MPI::Vector> *responses)
+                         std::vector<TrilinosWrappers::MPI::Vector> *responses,
+                         const std::size_t n_responses)
     {
       const unsigned int  m     = dofs.size();
       const std::size_t   n     = plate.locally_owned_dofs().n_elements();
@@ -31,7 +32,7 @@ namespace fgimpact
               const double *column = X.data() + c * n;
               for (unsigned int i = 0; i < m; ++i)
                 C(i, j0 + c) = column[dofs[i]];
-              if (responses != nullptr)
+              if (responses != nullptr && j0 + c < n_responses)
                 {
                   auto &r = (*responses)[j0 + c];
                   plate.initialize_vector(r);
@@ -49,33 +50,51 @@ namespace fgimpact
                      const PlateModel                           &plate,
                      const std::vector<types::global_dof_index> &dofs,
                      FullMatrix<double>                         &C,
-                     std::vector<TrilinosWrappers::MPI::Vector> *responses)
+                     std::vector<TrilinosWrappers::MPI::Vector> *responses,
+                     const std::size_t                           n_responses)
   {
     const unsigned int m = dofs.size();
     C.reinit(m, m);
     if (responses != nullptr)
-      responses->resize(m);
+      {
+        // Empty vectors for the responses not kept (a grown set's old
+        // ones go).
+        responses->clear();
+        responses->resize(m);
+      }
     if (solver.can_solve_many())
       {
-        compliance_by_blocks(solver, plate, dofs, C, responses);
+        compliance_by_blocks(solver, plate, dofs, C, responses, n_responses);
         return;
       }
-    TrilinosWrappers::MPI::Vector g, c;
+    TrilinosWrappers::MPI::Vector c;
     for (unsigned int j = 0; j < m; ++j)
       {
-        plate.initialize_vector(g);
-        plate.initialize_vector(c);
-        // Only the owner of the contact DoF writes.
-        if (g.locally_owned_elements().is_element(dofs[j]))
-          g(dofs[j]) = 1.;
-        g.compress(VectorOperation::insert);
-        solver.solve(c, g);
+        compute_response(solver, plate, dofs[j], c);
         const Vector<double> column = plate.dof_values(c, dofs);
         for (unsigned int i = 0; i < m; ++i)
           C(i, j) = column[i];
-        if (responses != nullptr)
+        if (responses != nullptr && j < n_responses)
           (*responses)[j].swap(c);
       }
+  }
+
+
+
+  void
+  compute_response(EffectiveMatrixSolver         &solver,
+                   const PlateModel              &plate,
+                   const types::global_dof_index  dof,
+                   TrilinosWrappers::MPI::Vector &c)
+  {
+    TrilinosWrappers::MPI::Vector g;
+    plate.initialize_vector(g);
+    plate.initialize_vector(c);
+    // Only the owner of the contact DoF writes.
+    if (g.locally_owned_elements().is_element(dof))
+      g(dof) = 1.;
+    g.compress(VectorOperation::insert);
+    solver.solve(c, g);
   }
 
 

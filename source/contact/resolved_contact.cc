@@ -54,6 +54,17 @@ namespace fgimpact
 
 
 
+  std::size_t
+  ResolvedSphereContact::n_likely_active() const
+  {
+    // radii is sorted (collect_candidates()).
+    const auto end =
+      std::upper_bound(radii.begin(), radii.end(), candidate_radius / 1.5);
+    return std::max<std::size_t>(1, end - radii.begin());
+  }
+
+
+
   void
   ResolvedSphereContact::save(CheckpointWriter &out) const
   {

@@ -18,16 +18,27 @@ namespace fgimpact
    * Newmark step, or K of a static problem) at the contact DoFs: for the
    * unit loads g_j the responses c_j = A^{-1} g_j (m solves with the
    * factorized A) and the dense Delassus matrix C_ij = g_i^T c_j (m/N),
-   * symmetric positive definite.  The responses are kept if asked for
-   * (one vector per DoF: the back-substitution u -= sum lambda_j c_j
-   * costs no solve).  Collective.
+   * symmetric positive definite.  The responses of the first
+   * n_responses DoFs are kept if asked for (one vector per DoF: the
+   * back-substitution u -= sum lambda_j c_j costs no solve); the others
+   * are left empty (size 0).  Collective.
    */
   void
-  compute_compliance(EffectiveMatrixSolver                      &solver,
-                     const PlateModel                           &plate,
-                     const std::vector<types::global_dof_index> &dofs,
-                     FullMatrix<double>                         &C,
-                     std::vector<TrilinosWrappers::MPI::Vector> *responses);
+  compute_compliance(
+    EffectiveMatrixSolver                      &solver,
+    const PlateModel                           &plate,
+    const std::vector<types::global_dof_index> &dofs,
+    FullMatrix<double>                         &C,
+    std::vector<TrilinosWrappers::MPI::Vector> *responses,
+    const std::size_t n_responses = static_cast<std::size_t>(-1));
+
+  /// The response c = A^{-1} g of one unit load at `dof` (the solver
+  /// factorized A).  Collective.
+  void
+  compute_response(EffectiveMatrixSolver         &solver,
+                   const PlateModel              &plate,
+                   const types::global_dof_index  dof,
+                   TrilinosWrappers::MPI::Vector &c);
 
   /**
    * The plate's largest static compliance e_i^T K^{-1} e_i (m/N) over the

@@ -165,6 +165,16 @@ namespace fgimpact
       return {};
     }
 
+    /// The contact DoFs are ordered so that the contact is expected to
+    /// reach only the first n_likely_active() of them (a resolved
+    /// contact's candidates by their distance from the impact point): a
+    /// time stepper stores the unit responses of these and computes any
+    /// other on demand.
+    virtual std::size_t
+    n_likely_active() const
+    {
+      return contact_dofs().size();
+    }
     /// DoFs to be given no mass (the modified mass method; empty: the
     /// consistent mass matrix unchanged).
     virtual std::vector<types::global_dof_index>

@@ -111,6 +111,12 @@ namespace fgimpact
       return areas;
     }
 
+    /// The candidates within 2/3 of the candidate radius: the automatic
+    /// radius is 1.5 times the expected contact radius (plus two of the
+    /// smallest elements).
+    std::size_t
+    n_likely_active() const override;
+
     std::vector<types::global_dof_index>
     massless_dofs() const override
     {
