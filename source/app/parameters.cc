@@ -30,6 +30,23 @@ namespace fgimpact
                      Utilities::to_string(end_time * 1e6) + " us)."));
     }
 
+    /// The span against the step and the snapshots; with End time = auto,
+    /// end_time is the Maximum end time (s).
+    void
+    check_time_span(const TimeStepper::Parameters &ti,
+                    const std::vector<double>     &snapshot_times)
+    {
+      const std::string end_name =
+        ti.auto_end_time ? "Maximum end time" : "End time";
+      AssertThrow(ti.end_time >= ti.time_step,
+                  ExcMessage("Time integration/" + end_name +
+                             " is shorter than one Time step."));
+      AssertThrow(ti.time_step == 0 || ti.end_time / ti.time_step < 1e8,
+                  ExcMessage("Time integration/" + end_name +
+                             " divided by Time step exceeds 1e8 steps."));
+      check_snapshot_times(snapshot_times, ti.end_time, end_name);
+    }
+
     /// Accuracy = converged refines the contact: it needs an impact whose
     /// contact converges under refinement, and the implicit scheme (its
     /// time step is halved once).
@@ -321,16 +338,7 @@ namespace fgimpact
     AssertThrow(ti.time_step > 0 || explicit_scheme,
                 ExcMessage("Time integration/Time step = 0 (automatic) is "
                            "only available with Scheme = explicit."));
-    // With End time = auto, end_time is the Maximum end time.
-    const std::string end_name =
-      ti.auto_end_time ? "Maximum end time" : "End time";
-    AssertThrow(ti.end_time >= ti.time_step,
-                ExcMessage("Time integration/" + end_name +
-                           " is shorter than one Time step."));
-    AssertThrow(ti.time_step == 0 || ti.end_time / ti.time_step < 1e8,
-                ExcMessage("Time integration/" + end_name +
-                           " divided by Time step exceeds 1e8 steps."));
-    check_snapshot_times(output.snapshot_times, ti.end_time, end_name);
+    check_time_span(ti, output.snapshot_times);
     // Unconditional stability of Newmark: 2 beta >= gamma >= 1/2.
     AssertThrow(
       explicit_scheme || (2. * ti.newmark.beta >= ti.newmark.gamma - 1e-14 &&
