@@ -327,7 +327,9 @@ namespace fgimpact
              in.impact_point,
              p.candidate_radius > 0. ?
                p.candidate_radius :
-               1.5 * in.expected_radius + 2. * in.plate.smallest_cell_size(),
+               ResolvedSphereContact::candidate_radius_factor *
+                   in.expected_radius +
+                 2. * in.plate.smallest_cell_size(),
              create_sphere_profile(in.sphere_radius, p.paraboloid_gap),
              in.reference_modulus,
              p.modified_mass);

@@ -59,7 +59,9 @@ namespace fgimpact
   {
     // radii is sorted (collect_candidates()).
     const auto end =
-      std::upper_bound(radii.begin(), radii.end(), candidate_radius / 1.5);
+      std::upper_bound(radii.begin(),
+                       radii.end(),
+                       candidate_radius / candidate_radius_factor);
     return std::max<std::size_t>(1, end - radii.begin());
   }
 

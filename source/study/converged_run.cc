@@ -21,6 +21,18 @@ namespace fgimpact
     /// Geometry/Contact refinement levels' upper bound (its pattern).
     constexpr unsigned int max_levels = 12;
 
+    /// The scene of parameters p without the mesh (cheap): its expected
+    /// contact radius and impact point.
+    Scene
+    scene_of(const Parameters &p)
+    {
+      const SymmetricPart              part = resolve_symmetry(p);
+      const PlateGeometry              geometry(p.geometry, part.cut);
+      const FunctionallyGradedMaterial material(p.material,
+                                                geometry.thickness());
+      return Scene(p, material, geometry.share());
+    }
+
     std::string
     percent(const double relative)
     {
@@ -84,14 +96,8 @@ namespace fgimpact
   {
     // The scene's automatic level: its set-up checks the input (the mesh
     // included) before anything is written.
-    const SymmetricPart              part = resolve_symmetry(parameters);
-    const PlateGeometry              geometry(parameters.geometry, part.cut);
-    const FunctionallyGradedMaterial material(parameters.material,
-                                              geometry.thickness());
-    const Scene scene(parameters, material, geometry.share());
-    first_levels =
-      automatic_contact_refinement_levels(parameters,
-                                          scene.expected_contact_radius());
+    first_levels = automatic_contact_refinement_levels(
+      parameters, scene_of(parameters).expected_contact_radius());
     const Parameters p = parameters_of(first_levels, false);
     Timer            timer;
     first = std::make_unique<Simulator>(p, communicator);
@@ -175,15 +181,12 @@ namespace fgimpact
                            "levels stops at " +
                            std::to_string(max_levels) +
                            "; raise Accuracy tolerance."));
-    const Parameters                 p    = parameters_of(levels, false);
-    const SymmetricPart              part = resolve_symmetry(p);
-    const PlateGeometry              geometry(p.geometry, part.cut);
-    const FunctionallyGradedMaterial material(p.material, geometry.thickness());
-    const Scene                      scene(p, material, geometry.share());
+    const Parameters p = parameters_of(levels, false);
     try
       {
         check_memory(p,
-                     estimate_resources(p, contact_refinement_of(p, scene)),
+                     estimate_resources(p,
+                                        contact_refinement_of(p, scene_of(p))),
                      communicator);
       }
     catch (const ExceptionBase &e)

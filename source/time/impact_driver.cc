@@ -323,7 +323,7 @@ namespace fgimpact
             AssertThrow(write_checkpoint(steps_done) == 0,
                         ExcOutputFailure(monitor->output_failure()));
           });
-        report_end_time(steps_done, stop);
+        report_end_time(stop);
         monitor->close_output();
         if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
           stop = -1;
@@ -467,12 +467,12 @@ namespace fgimpact
 
 
   void
-  ImpactDriver::report_end_time(const unsigned int steps_done,
-                                const int          stop) const
+  ImpactDriver::report_end_time(const int stop) const
   {
     if (!parameters.time_integration.auto_end_time || stop != 0)
       return;
-    if (steps_done < n_steps)
+    // (The rule may fire at the last step too.)
+    if (end_time_rule.has_stopped())
       pcout << "  " << end_time_rule.reason() << '\n';
     else
       pcout << "  WARNING: End time = auto: the ball had not left the plate "

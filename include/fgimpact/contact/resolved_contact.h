@@ -48,6 +48,11 @@ namespace fgimpact
   class ResolvedSphereContact : public ContactModel
   {
   public:
+    /// The automatic candidate radius is this factor times the expected
+    /// contact radius (plus two of the smallest elements); the candidates
+    /// within 1/factor of the candidate radius are the likely active ones.
+    static constexpr double candidate_radius_factor = 1.5;
+
     /// Collective.  surface: the gap function (the sphere's exact
     /// profile or the paraboloid, create_sphere_profile()); the candidate
     /// set grows up to its extent().  Throws if no candidate is found,
@@ -111,9 +116,9 @@ namespace fgimpact
       return areas;
     }
 
-    /// The candidates within 2/3 of the candidate radius: the automatic
-    /// radius is 1.5 times the expected contact radius (plus two of the
-    /// smallest elements).
+    /// The candidates within 1/candidate_radius_factor (2/3) of the
+    /// candidate radius: the automatic radius is that factor times the
+    /// expected contact radius (plus two of the smallest elements).
     std::size_t
     n_likely_active() const override;
 

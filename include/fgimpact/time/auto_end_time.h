@@ -69,19 +69,11 @@ namespace fgimpact
     std::string
     reason() const;
 
-    /// The static compliance used (m/N; 0 if not yet asked for).
-    double
-    static_compliance() const
+    /// Whether left_for_good() has returned true.
+    bool
+    has_stopped() const
     {
-      return C;
-    }
-
-    /// The largest rise sqrt(2 E C) (m) the plate's energy allowed at the
-    /// last comparison.
-    double
-    largest_plate_rise() const
-    {
-      return rise;
+      return stop_time > 0;
     }
 
     static constexpr std::uint32_t checkpoint_version = 1;

@@ -103,7 +103,7 @@ namespace fgimpact
     /// log line on why the run stopped, or a warning that it ran to the
     /// Maximum end time.
     void
-    report_end_time(const unsigned int steps_done, const int stop) const;
+    report_end_time(const int stop) const;
 
     /// The time step against the End time (refused if longer) and against
     /// Hertz's contact duration (a log warning below 20 steps in it).
