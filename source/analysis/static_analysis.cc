@@ -156,8 +156,12 @@ namespace fgimpact
       indenter.candidate_radius > 0. ? indenter.candidate_radius :
                                        1.5 * std::sqrt(R * delta),
       create_sphere_profile(R, indenter.paraboloid_gap),
-      top_face_modulus(plate.get_material(), plate.get_geometry().thickness()));
-    // The sphere is displacement-driven: w = delta, no ball compliance.
+      top_face_modulus(plate.get_material(), plate.get_geometry().thickness()),
+      /*massless_candidates=*/false,
+      indenter.modulus);
+    // The sphere is displacement-driven: w = delta (its centre's
+    // approach), no rigid-body compliance; an elastic sphere's surface
+    // compliance is in the contact's LCP.
     // A contact that reaches the candidate set's edge grows the set.
     FullMatrix<double> C;
     ContactState       state;

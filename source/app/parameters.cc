@@ -355,19 +355,6 @@ namespace fgimpact
                 ExcMessage("Contact/Model = resolved sphere needs Time "
                            "integration/Scheme = implicit: its contact is "
                            "rigid, which no explicit step is stable for."));
-    // The resolved contact's ball is rigid: an elastic one would be
-    // ignored without a word (its compliance lowers the default scene's
-    // peak force by 13.6 % with the Hertz law).
-    AssertThrow(!(uses_resolved_contact() && impactor.elastic),
-                ExcMessage(
-                  "Impactor/Material = elastic is not available with " +
-                  std::string(problem_type == ProblemType::impact ?
-                                "Contact/Model = resolved sphere" :
-                                "Static/Load = sphere") +
-                  ": its ball is rigid (the elastic ball is not built yet); "
-                  "set Impactor/Material = rigid, or use Contact/Model = "
-                  "hertz node or hertz midplane, whose Hertz law takes the "
-                  "ball's modulus."));
     AssertThrow(output.directory.find_first_not_of(" \t") != std::string::npos,
                 ExcMessage("Output/Directory is empty."));
     // parameters.prm must read back as the run was: '#' starts a comment

@@ -18,7 +18,11 @@ namespace fgimpact
     if (parameters.problem_type == ProblemType::static_load &&
         parameters.static_analysis.load == StaticAnalysis::Load::sphere)
       return std::sqrt(R * parameters.static_analysis.indentation);
-    return hertz_impact_contact_radius(top_face_modulus(material, thickness),
+    // Hertz's E* of plate and ball (a softer ball: a larger contact).
+    const double Q =
+      combined_indentation_modulus(top_face_modulus(material, thickness),
+                                   impactor.indentation_modulus());
+    return hertz_impact_contact_radius(Q,
                                        R,
                                        impactor.mass(),
                                        impactor.initial_velocity());

@@ -123,6 +123,7 @@ namespace fgimpact
         indenter.radius           = scene.impactor().radius();
         indenter.candidate_radius = parameters.contact_model.candidate_radius;
         indenter.paraboloid_gap   = parameters.contact_model.paraboloid_gap;
+        indenter.modulus          = scene.impactor().indentation_modulus();
         StaticAnalysis analysis(parameters.static_analysis,
                                 parameters.linear_solver,
                                 plate,

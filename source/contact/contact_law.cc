@@ -217,6 +217,21 @@ namespace fgimpact
 
 
   double
+  hertz_impact_duration(const double K, const double m, const double V0)
+  {
+    const double alpha_max = std::pow(1.25 * m * V0 * V0 / K, 0.4);
+    return 2.943 * alpha_max / V0;
+  }
+
+
+  double
+  combined_indentation_modulus(const double Q_plate, const double Q_ball)
+  {
+    return std::isfinite(Q_ball) ? 1. / (1. / Q_plate + 1. / Q_ball) : Q_plate;
+  }
+
+
+  double
   top_face_modulus(const FunctionallyGradedMaterial &material,
                    const double                      thickness)
   {

@@ -280,6 +280,7 @@ namespace fgimpact
       Point<2>                      impact_point;
       double                        expected_radius;
       double                        reference_modulus;
+      double                        ball_modulus;
     };
 
     using ContactModelFactory =
@@ -315,10 +316,11 @@ namespace fgimpact
          }},
         {"resolved sphere",
          Model::resolved_sphere,
-         "a rigid sphere in frictionless unilateral contact with every top "
+         "a sphere in frictionless unilateral contact with every top "
          "node near the impact point (no contact law; converges with "
          "Geometry/Contact refinement levels, whose default auto resolves "
-         "the contact radius; rigid ball only; implicit scheme only).",
+         "the contact radius; an elastic Impactor/Material adds the ball's "
+         "Boussinesq surface compliance; implicit scheme only).",
          [](const ContactModelInputs &in) -> std::unique_ptr<ContactModel> {
            const ContactModelParameters &p = in.parameters;
            return std::make_unique<ResolvedSphereContact>(
@@ -332,7 +334,8 @@ namespace fgimpact
                  2. * in.plate.smallest_cell_size(),
              create_sphere_profile(in.sphere_radius, p.paraboloid_gap),
              in.reference_modulus,
-             p.modified_mass);
+             p.modified_mass,
+             in.ball_modulus);
          }}};
       return registry;
     }
@@ -408,7 +411,8 @@ namespace fgimpact
                        const double                  sphere_radius,
                        const Point<2>               &impact_point,
                        const double                  expected_radius,
-                       const double                  reference_modulus)
+                       const double                  reference_modulus,
+                       const double                  ball_modulus)
   {
     return contact_model_registry().factory(parameters.model)(
       {parameters,
@@ -417,6 +421,7 @@ namespace fgimpact
        sphere_radius,
        impact_point,
        expected_radius,
-       reference_modulus});
+       reference_modulus,
+       ball_modulus});
   }
 } // namespace fgimpact

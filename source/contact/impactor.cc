@@ -1,6 +1,7 @@
 #include <fgimpact/contact/impactor.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace fgimpact
@@ -108,6 +109,47 @@ namespace fgimpact
       return std::numeric_limits<double>::infinity();
     return parameters.youngs_modulus /
            (1. - parameters.poissons_ratio * parameters.poissons_ratio);
+  }
+
+
+
+  double
+  Impactor::lowest_vibration_period() const
+  {
+    if (!parameters.elastic)
+      return 0.;
+    const double R   = parameters.radius;
+    const double rho = mass() / (4. / 3. * M_PI * R * R * R);
+    const double c_s = std::sqrt(parameters.youngs_modulus /
+                                 (2. * (1. + parameters.poissons_ratio) * rho));
+    return 2. * M_PI * R / (2.64 * c_s);
+  }
+
+
+
+  std::string
+  Impactor::vibration_report(const double T_contact) const
+  {
+    // Hertz's elastic ball is quasi-static: its own vibration must be much
+    // faster than the contact (Johnson, Contact Mechanics, section 11.4).
+    const double T_ball = lowest_vibration_period();
+    if (T_ball == 0.)
+      return "";
+    const bool slow = T_ball > 0.2 * T_contact;
+    char       text[400];
+    std::snprintf(text,
+                  sizeof(text),
+                  "%selastic ball: lowest vibration period %.3g us, %.1f %% "
+                  "of Hertz's contact duration %.4g us%s",
+                  slow ? "WARNING: " : "",
+                  T_ball * 1e6,
+                  100. * T_ball / T_contact,
+                  T_contact * 1e6,
+                  slow ? " (above 20 %: the ball's waves matter; Impactor/"
+                         "Radius or the impact is too short for Hertz's "
+                         "quasi-static ball)" :
+                         "");
+    return text;
   }
 
 

@@ -6,6 +6,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <fgimpact/contact/complementarity.h>
+#include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/resolved_contact.h>
 #include <fgimpact/output/results.h>
 
@@ -26,14 +27,18 @@ namespace fgimpact
     const Point<2>                               &impact_point,
     const double                                  candidate_radius,
     const std::shared_ptr<const ImpactorProfile> &surface,
-    const double                                  reference_modulus,
-    const bool                                    massless_candidates)
+    const double                                  plate_modulus,
+    const bool                                    massless_candidates,
+    const double                                  ball_modulus)
     : plate(plate)
     , impact_point(impact_point)
     , R(sphere_radius)
     , surface(surface)
-    , reference_modulus(reference_modulus)
+    // Hertz's E* of plate and ball (Pa).
+    , reference_modulus(
+        combined_indentation_modulus(plate_modulus, ball_modulus))
     , massless_candidates(massless_candidates)
+    , ball_modulus(ball_modulus)
     , candidate_radius(std::min(candidate_radius, surface->extent()))
     , share(plate.get_geometry().share())
   {
@@ -107,6 +112,66 @@ namespace fgimpact
     multiplicity.resize(points.size());
     for (unsigned int j = 0; j < points.size(); ++j)
       multiplicity[j] = plate.get_geometry().multiplicity(points[j]);
+    compute_ball_compliance();
+  }
+
+
+
+  void
+  ResolvedSphereContact::compute_ball_compliance()
+  {
+    ball_matrix.reinit(0, 0);
+    if (!std::isfinite(ball_modulus))
+      return;
+    // Boussinesq: a force F on a half-space of modulus Q = E/(1 - nu^2)
+    // moves its surface by F/(pi Q d) at distance d; a uniform pressure on
+    // a disc of radius rho moves its centre by 2 F/(pi Q rho).  The ball's
+    // surface near the contact is such a half-space (a << R).  A candidate
+    // of a symmetric part stands for multiplicity_j nodes of the whole
+    // plate, its mirror images, each carrying lambda_j / (share m_j) on a
+    // tributary area A_j / (share m_j).
+    const auto  &geometry  = plate.get_geometry();
+    const double centre[2] = {0.5 * geometry.length(), 0.5 * geometry.width()};
+    const double tolerance = 1e-9 * geometry.length();
+    const unsigned int m   = points.size();
+    ball_matrix.reinit(m, m);
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        std::vector<Point<2>> images{Point<2>(points[j][0], points[j][1])};
+        for (unsigned int d = 0; d < 2; ++d)
+          if (geometry.is_cut(d) &&
+              std::abs(points[j][d] - centre[d]) > tolerance)
+            for (unsigned int k = 0, n = images.size(); k < n; ++k)
+              {
+                Point<2> image = images[k];
+                image[d]       = 2. * centre[d] - image[d];
+                images.push_back(image);
+              }
+        const double whole = 1. / (share * multiplicity[j]);
+        const double rho   = std::sqrt(whole * areas[j] / numbers::PI);
+        for (unsigned int i = 0; i < m; ++i)
+          {
+            const Point<2> x(points[i][0], points[i][1]);
+            double         sum = 0;
+            for (const auto &image : images)
+              {
+                const double d = x.distance(image);
+                sum += (d > tolerance ? 1. / d : 2. / rho);
+              }
+            ball_matrix(i, j) = whole * sum / (numbers::PI * ball_modulus);
+          }
+      }
+  }
+
+
+
+  double
+  ResolvedSphereContact::potential(const ContactState &state) const
+  {
+    if (ball_matrix.m() == 0 || state.forces.size() != ball_matrix.m())
+      return 0.;
+    const Vector<double> lambda(state.forces.begin(), state.forces.end());
+    return 0.5 * ball_matrix.matrix_norm_square(lambda);
   }
 
 
@@ -226,6 +291,8 @@ namespace fgimpact
         for (unsigned int j = 0; j < m; ++j)
           A(i, j) += c_b;
       }
+    if (ball_matrix.m() == m)
+      A.add(1., ball_matrix);
     Vector<double>      lambda;
     const LcpStatistics statistics = solve_lcp(A, q, lambda, active);
     // Not solved: the time stepper reports the step (as for Newton).
@@ -308,8 +375,9 @@ namespace fgimpact
   ResolvedSphereContact::description() const
   {
     std::ostringstream s;
-    s << "resolved rigid sphere, R = " << R * 1e3 << " mm, " << surface->name()
-      << " gap, " << dofs.size() << " candidate nodes within " << reach() * 1e3
+    s << "resolved " << (ball_matrix.m() > 0 ? "elastic" : "rigid")
+      << " sphere, R = " << R * 1e3 << " mm, " << surface->name() << " gap, "
+      << dofs.size() << " candidate nodes within " << reach() * 1e3
       << " mm (nearest neighbour " << smallest_spacing * 1e3 << " mm)";
     return s.str();
   }

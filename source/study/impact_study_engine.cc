@@ -41,7 +41,8 @@ namespace fgimpact
                                   scene.impactor().radius(),
                                   scene.impact_point_in_plane(),
                                   scene.expected_contact_radius(),
-                                  scene.top_face_modulus());
+                                  scene.top_face_modulus(),
+                                  scene.impactor().indentation_modulus());
     }
 
 

@@ -110,12 +110,17 @@ namespace fgimpact
                                    impactor.radius(),
                                    scene.impact_point_in_plane(),
                                    scene.expected_contact_radius(),
-                                   scene.top_face_modulus());
+                                   scene.top_face_modulus(),
+                                   impactor.indentation_modulus());
     pcout << "  impactor mass " << impactor.mass()
           << " kg, V0 = " << impactor.initial_velocity() << " m/s; "
           << contact->description() << '\n';
     if (!contact->warning().empty())
       pcout << "  " << contact->warning() << '\n';
+    // An elastic ball: its vibration against the contact duration.
+    if (!impactor.vibration_report(hertz_contact_duration()).empty())
+      pcout << "  " << impactor.vibration_report(hertz_contact_duration())
+            << '\n';
 
     results = setup_results(plate, scene, *contact, total_timer.wall_time());
 
@@ -179,6 +184,16 @@ namespace fgimpact
 
 
 
+  double
+  ImpactDriver::hertz_contact_duration() const
+  {
+    return hertz_impact_duration(contact_law.force(1.),
+                                 impactor.mass(),
+                                 impactor.initial_velocity());
+  }
+
+
+
   void
   ImpactDriver::check_time_step() const
   {
@@ -193,14 +208,9 @@ namespace fgimpact
                   std::to_string(parameters.time_integration.end_time * 1e6) +
                   " us is shorter than one time step (" +
                   std::to_string(dt * 1e6) + " us)."));
-    // Can dt resolve the contact?  Hertz's duration on a rigid half-space,
-    // T = 2.943 alpha_max / V0 with alpha_max = (5 m V0^2 / (4 K))^(2/5),
-    // is a lower bound of the plate's (99 us against 126 us in the default
-    // scene): fewer than 20 steps in it is a coarse time history.
-    const double m = impactor.mass(), V0 = impactor.initial_velocity();
-    const double alpha_max =
-      std::pow(1.25 * m * V0 * V0 / contact_law.force(1.), 0.4);
-    const double T_hertz = 2.943 * alpha_max / V0;
+    // Can dt resolve the contact?  Fewer than 20 steps in Hertz's duration
+    // is a coarse time history.
+    const double T_hertz = hertz_contact_duration();
     if (dt > T_hertz / 20.)
       {
         char text[400];

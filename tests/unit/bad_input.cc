@@ -479,12 +479,7 @@ namespace
        "subsection Modal\n set Number of modes = 200\nend\n"
        "subsection Output\n set Print timing = false\nend\n",
        2,
-       "Modal/Number of modes"},
-      {"Impactor/Material = elastic with the resolved sphere",
-       "subsection Contact\n set Model = resolved sphere\nend\n"
-       "subsection Impactor\n set Material = elastic\nend\n",
-       1,
-       "Impactor/Material"}};
+       "Modal/Number of modes"}};
   }
 
 

@@ -10,6 +10,7 @@
 #include <fgimpact/plate/linear_solver.h>
 #include <fgimpact/plate/plate_model.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -17,12 +18,14 @@ namespace fgimpact
 {
   using namespace dealii;
 
-  /// The rigid sphere of Static/Load = sphere.
+  /// The sphere of Static/Load = sphere.
   struct SphereIndenter
   {
     double radius           = 0.015; // R, m
     double candidate_radius = 0;     // m, 0: 1.5 sqrt(R delta)
     bool   paraboloid_gap   = false;
+    /// E_i/(1 - nu_i^2) of an elastic sphere (Pa); infinite: rigid.
+    double modulus = std::numeric_limits<double>::infinity();
   };
 
   /**

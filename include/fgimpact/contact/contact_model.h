@@ -249,7 +249,9 @@ namespace fgimpact
    * The factory: the model named in the parameters.  expected_radius (m)
    * is the half-space estimate of the largest contact radius
    * (hertz_impact_contact_radius()), reference_modulus (Pa) the top
-   * face's E/(1 - nu^2).  Collective.
+   * face's E/(1 - nu^2), ball_modulus (Pa) the impactor's E_i/(1 - nu_i^2)
+   * (Impactor::indentation_modulus(), infinite for a rigid ball; the
+   * Hertz models take it from their law).  Collective.
    */
   std::unique_ptr<ContactModel>
   create_contact_model(const ContactModelParameters &parameters,
@@ -258,7 +260,8 @@ namespace fgimpact
                        const double                  sphere_radius,
                        const Point<2>               &impact_point,
                        const double                  expected_radius,
-                       const double                  reference_modulus);
+                       const double                  reference_modulus,
+                       const double                  ball_modulus);
 
 
 

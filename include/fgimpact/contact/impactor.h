@@ -4,6 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <string>
+
 namespace fgimpact
 {
   using namespace dealii;
@@ -55,6 +57,21 @@ namespace fgimpact
     /// infinite for a rigid impactor (Eq. 2.7).
     double
     indentation_modulus() const;
+
+    /// The period of an elastic ball's lowest vibration excited by a
+    /// normal impact (s): Lamb's spheroidal mode 0S2, omega R / c_s = 2.64
+    /// (nu = 0.25; it moves by about 1 % over nu = 0.2-0.35), c_s the shear
+    /// wave speed with the density m / (4/3 pi R^3).  Hertz's quasi-static
+    /// ball needs it well below the contact duration.  0 for a rigid ball.
+    double
+    lowest_vibration_period() const;
+
+    /// For an elastic ball, one log line: its lowest vibration period
+    /// against the contact duration T_contact (s), a warning above 20 %
+    /// (a quasi-static ball then overestimates its stiffness); empty for a
+    /// rigid ball.
+    std::string
+    vibration_report(const double T_contact) const;
 
     /// Impact point on the top face (x, y) in m, given the plate size.
     Point<2>

@@ -10,6 +10,7 @@
 #include <fgimpact/contact/impactor_profile.h>
 #include <fgimpact/plate/plate_model.h>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -18,9 +19,9 @@ namespace fgimpact
   using namespace dealii;
 
   /**
-   * A rigid sphere (radius R) in frictionless unilateral contact with the
-   * top face: no contact law, the graded 3D elasticity under the ball is
-   * the contact stiffness.  The candidates are the z DoFs of the top-face
+   * A sphere (radius R, rigid or elastic) in frictionless unilateral contact
+   * with the top face: no contact law, the graded 3D elasticity under the ball
+   * is the contact stiffness.  The candidates are the z DoFs of the top-face
    * support points within the candidate radius r_c of the impact point
    * (hanging nodes excluded), sorted by their distance r_j from it, so the
    * first is the node at the impact point.
@@ -33,9 +34,11 @@ namespace fgimpact
    * (w the ball's displacement, positive down; u_j the plate's z
    * displacement, positive up; phi_j the sphere's height above its lowest
    * point, or the paraboloid r_j^2/(2R)).  With the Delassus matrix C
-   * (m/N) and the ball's compliance c_b, an implicit step is the LCP
+   * (m/N), the ball's rigid-body compliance c_b and, for an elastic ball,
+   * its surface compliance H (m/N, ball_compliance()), an implicit step is
+   * the LCP
    *
-   *   g = q + (C + c_b 1 1^T) lambda,  q_j = phi_j - w_free - u_free_j,
+   *   g = q + (C + c_b 1 1^T + H) lambda,  q_j = phi_j - w_free - u_free_j,
    *   lambda >= 0, g >= 0, lambda^T g = 0,
    *
    * solved by solve_lcp() warm-started from the last step's active set.
@@ -55,15 +58,19 @@ namespace fgimpact
 
     /// Collective.  surface: the gap function (the sphere's exact
     /// profile or the paraboloid, create_sphere_profile()); the candidate
-    /// set grows up to its extent().  Throws if no candidate is found,
-    /// naming Contact/Candidate radius.
-    ResolvedSphereContact(const PlateModel &plate,
-                          const double      sphere_radius,
-                          const Point<2>   &impact_point,
-                          const double      candidate_radius,
-                          const std::shared_ptr<const ImpactorProfile> &surface,
-                          const double reference_modulus,
-                          const bool   massless_candidates = false);
+    /// set grows up to its extent().  reference_modulus: the top face's
+    /// Q = E/(1 - nu^2) (Pa); ball_modulus: the ball's Q_i (Pa), infinite
+    /// for a rigid ball.  Throws if no candidate is found, naming
+    /// Contact/Candidate radius.
+    ResolvedSphereContact(
+      const PlateModel                             &plate,
+      const double                                  sphere_radius,
+      const Point<2>                               &impact_point,
+      const double                                  candidate_radius,
+      const std::shared_ptr<const ImpactorProfile> &surface,
+      const double                                  reference_modulus,
+      const bool                                    massless_candidates = false,
+      const double ball_modulus = std::numeric_limits<double>::infinity());
 
     const std::vector<types::global_dof_index> &
     contact_dofs() const override
@@ -85,12 +92,10 @@ namespace fgimpact
                       const double          w,
                       ContactState         &state) const override;
 
-    /// A rigid unilateral contact stores no energy.
+    /// A rigid unilateral contact stores no energy; an elastic ball the
+    /// strain energy of its surface, lambda^T H lambda / 2 (J, the part's).
     double
-    potential(const ContactState &) const override
-    {
-      return 0.;
-    }
+    potential(const ContactState &state) const override;
 
     double
     stiffness_bound(const double mass, const double V0) const override;
@@ -161,6 +166,20 @@ namespace fgimpact
       return areas;
     }
 
+    /// The elastic ball's surface compliance H (m/N; empty for a rigid
+    /// ball): H_ij is the ball's surface displacement (inward, along z) at
+    /// candidate i under a unit force at candidate j and at its mirror
+    /// images (a symmetric part), from Boussinesq's half-space solution,
+    /// 1/(pi Q_i d), and for the candidate's own patch the centre
+    /// displacement of a uniform pressure on a disc of its tributary area,
+    /// 2/(pi Q_i rho).  Exact in the limit of a contact radius small
+    /// against R (Hertz's assumption); doc/contact.md.
+    const FullMatrix<double> &
+    ball_compliance() const
+    {
+      return ball_matrix;
+    }
+
     /// The largest r_j (m): the candidate set reaches this far.
     double
     reach() const
@@ -180,6 +199,9 @@ namespace fgimpact
                        const double      candidate_radius);
     void
     compute_areas(const PlateModel &plate);
+    /// ball_matrix for the current candidates (nothing for a rigid ball).
+    void
+    compute_ball_compliance();
 
     const PlateModel                            &plate;
     const Point<2>                               impact_point;
@@ -187,6 +209,8 @@ namespace fgimpact
     const std::shared_ptr<const ImpactorProfile> surface;
     const double                                 reference_modulus; // Pa
     const bool                                   massless_candidates;
+    const double                                 ball_modulus;     // Q_i, Pa
+    FullMatrix<double>                           ball_matrix;      // H, m/N
     double                                       candidate_radius; // m
     std::vector<types::global_dof_index>         dofs;
     std::vector<double>                          radii, areas, profile;

@@ -105,6 +105,11 @@ namespace fgimpact
     void
     report_end_time(const int stop) const;
 
+    /// hertz_impact_duration() with the contact law's stiffness: a lower
+    /// bound of the plate's contact duration (s).
+    double
+    hertz_contact_duration() const;
+
     /// The time step against the End time (refused if longer) and against
     /// Hertz's contact duration (a log warning below 20 steps in it).
     void
