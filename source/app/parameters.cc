@@ -281,6 +281,7 @@ namespace fgimpact
     StaticAnalysis::Parameters::declare_parameters(prm);
     ModalAnalysis::Parameters::declare_parameters(prm);
     FunctionallyGradedMaterial::Parameters::declare_parameters(prm);
+    GradedStrength::Parameters::declare_parameters(prm);
     HertzContactLaw::Parameters::declare_parameters(prm);
     ContactModelParameters::declare_parameters(prm);
     Impactor::Parameters::declare_parameters(prm);
@@ -304,6 +305,7 @@ namespace fgimpact
 
     geometry.parse_parameters(prm);
     material.parse_parameters(prm);
+    strength.parse_parameters(prm);
     finite_element.parse_parameters(prm);
     contact.parse_parameters(prm);
     contact_model.parse_parameters(prm);

@@ -81,16 +81,19 @@ namespace fgimpact
       IsotropicProperties
       properties(const double zeta) const override
       {
+        return homogenize(constituents, metal_fraction(zeta), homogenization);
+      }
+
+      double
+      metal_fraction(const double zeta) const override
+      {
         // pow(0, 0) = 1 in C++: n = 0 is pure metal, as Eq. 2.1 requires
         // (for the sigmoid law, a uniform 50/50 mixture).
-        double Vm;
         if (!sigmoid)
-          Vm = std::pow(zeta, index);
-        else if (zeta <= 0.5)
-          Vm = 0.5 * std::pow(2. * zeta, index);
-        else
-          Vm = 1. - 0.5 * std::pow(2. * (1. - zeta), index);
-        return homogenize(constituents, Vm, homogenization);
+          return std::pow(zeta, index);
+        if (zeta <= 0.5)
+          return 0.5 * std::pow(2. * zeta, index);
+        return 1. - 0.5 * std::pow(2. * (1. - zeta), index);
       }
 
       bool

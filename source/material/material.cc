@@ -295,6 +295,22 @@ namespace fgimpact
 
 
   double
+  FunctionallyGradedMaterial::metal_volume_fraction(const double z) const
+  {
+    const double zeta = std::clamp(z / h, 0., 1.);
+    const double Vm   = law->metal_fraction(zeta);
+    if (std::isfinite(Vm))
+      return Vm;
+    const double Em = parameters.metal_youngs_modulus,
+                 Ec = parameters.ceramic_youngs_modulus;
+    if (Em == Ec)
+      return 1.;
+    return std::clamp((law->properties(zeta).E - Ec) / (Em - Ec), 0., 1.);
+  }
+
+
+
+  double
   FunctionallyGradedMaterial::total_metal_volume_fraction() const
   {
     return law->total_metal_volume_fraction();

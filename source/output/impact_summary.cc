@@ -116,6 +116,65 @@ namespace fgimpact
 
 
 
+  std::string
+  validity_text(const ImpactResults &r)
+  {
+    // The rigid ball's stiffening that matters: 5 % in E* is 2 % in the
+    // peak force (F_max ~ E*^(2/5)).
+    constexpr double rigid_ball_limit = 0.05;
+    if (!std::isfinite(r.yield_peak.ratio) &&
+        !std::isfinite(r.tension_peak.ratio) &&
+        !std::isfinite(r.rigid_ball_modulus_excess))
+      return "not checked";
+    std::string breaks, holds;
+    const auto  add = [](std::string &list, const std::string &item) {
+      list += (list.empty() ? "" : ", ") + item;
+    };
+    char text[300];
+    if (std::isfinite(r.yield_peak.ratio))
+      {
+        std::snprintf(text,
+                      sizeof(text),
+                      "elastic metal (von Mises %.2f x the yield strength%s)",
+                      r.yield_peak.ratio,
+                      r.yield_peak.ratio > 1. ?
+                        ": plasticity is not modelled yet" :
+                        "");
+        add(r.yield_peak.ratio > 1. ? breaks : holds, text);
+      }
+    if (std::isfinite(r.tension_peak.ratio))
+      {
+        std::snprintf(text,
+                      sizeof(text),
+                      "intact ceramic (largest principal stress %.2f x the "
+                      "tensile strength%s)",
+                      r.tension_peak.ratio,
+                      r.tension_peak.ratio > 1. ? ": cracking is not modelled" :
+                                                  "");
+        add(r.tension_peak.ratio > 1. ? breaks : holds, text);
+      }
+    if (std::isfinite(r.rigid_ball_modulus_excess) &&
+        r.rigid_ball_modulus_excess > 0.)
+      {
+        const bool broken = r.rigid_ball_modulus_excess > rigid_ball_limit;
+        std::snprintf(text,
+                      sizeof(text),
+                      "rigid ball (E* %.1f %% above the elastic ball's%s)",
+                      100. * r.rigid_ball_modulus_excess,
+                      broken ? ": set Impactor/Material = elastic" : "");
+        add(broken ? breaks : holds, text);
+      }
+    bool small_strains = true;
+    for (const auto &w : r.warnings)
+      small_strains =
+        small_strains && w.find("small-strain") == std::string::npos;
+    add(small_strains ? holds : breaks, "small strains");
+    return "breaks: " + (breaks.empty() ? std::string("none") : breaks) +
+           "; holds: " + (holds.empty() ? std::string("none") : holds);
+  }
+
+
+
   namespace
   {
     using R = ImpactResults;
@@ -275,6 +334,63 @@ namespace fgimpact
 
 
 
+    /// The validity report's numbers of one peak: ratio, stress and
+    /// strength (MPa), where (mm) and when (us).
+    template <StrengthPeak ImpactResults::*peak>
+    std::vector<SummaryKey>
+    strength_keys(const char *const names[7])
+    {
+      return {
+        number(names[0], 4, [](const R &r) { return (r.*peak).ratio; }),
+        number(names[1], 2, [](const R &r) { return (r.*peak).stress * 1e-6; }),
+        number(names[2],
+               2,
+               [](const R &r) { return (r.*peak).strength * 1e-6; }),
+        number(names[3],
+               3,
+               [](const R &r) { return (r.*peak).point[0] * 1e3; }),
+        number(names[4],
+               3,
+               [](const R &r) { return (r.*peak).point[1] * 1e3; }),
+        number(names[5],
+               3,
+               [](const R &r) { return (r.*peak).point[2] * 1e3; }),
+        number(names[6], 3, [](const R &r) { return (r.*peak).time * 1e6; })};
+    }
+
+    /// The validity report (validity_report.h).
+    std::vector<SummaryKey>
+    validity_keys()
+    {
+      static const char *const yield[7]   = {"max_von_mises_over_yield",
+                                             "von_mises_at_peak_MPa",
+                                             "yield_strength_at_peak_MPa",
+                                             "von_mises_peak_x_mm",
+                                             "von_mises_peak_y_mm",
+                                             "von_mises_peak_z_mm",
+                                             "von_mises_peak_time_us"};
+      static const char *const tension[7] = {
+        "max_principal_over_tensile_strength",
+        "principal_at_peak_MPa",
+        "tensile_strength_at_peak_MPa",
+        "principal_peak_x_mm",
+        "principal_peak_y_mm",
+        "principal_peak_z_mm",
+        "principal_peak_time_us"};
+      std::vector<SummaryKey> keys = strength_keys<&R::yield_peak>(yield);
+      for (const auto &key : strength_keys<&R::tension_peak>(tension))
+        keys.push_back(key);
+      keys.push_back(number("rigid_ball_modulus_excess", 4, [](const R &r) {
+        return r.rigid_ball_modulus_excess;
+      }));
+      keys.push_back(text("validity", [](const R &r, const C &) {
+        return validity_text(r);
+      }));
+      return keys;
+    }
+
+
+
     /// The problem's size, the solvers' effort, checks and timings.
     std::vector<SummaryKey>
     run_keys()
@@ -335,7 +451,7 @@ namespace fgimpact
     // In the file's order.
     static const std::vector<SummaryKey> keys = [] {
       std::vector<SummaryKey> all = model_keys();
-      for (const auto &group : {result_keys(), run_keys()})
+      for (const auto &group : {result_keys(), validity_keys(), run_keys()})
         all.insert(all.end(), group.begin(), group.end());
       return all;
     }();

@@ -124,6 +124,14 @@ namespace fgimpact
     {
       return std::numeric_limits<double>::quiet_NaN();
     }
+
+    /// The metal volume fraction V_m at zeta for a law that grades one;
+    /// NaN for the others.
+    virtual double
+    metal_fraction(const double /*zeta*/) const
+    {
+      return std::numeric_limits<double>::quiet_NaN();
+    }
   };
 
   /// The factory (the registry in gradation.cc): `profile` is read only

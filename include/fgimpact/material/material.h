@@ -136,6 +136,13 @@ namespace fgimpact
     double
     total_metal_volume_fraction() const;
 
+    /// The metal volume fraction V_m at height z (m): the gradation's for
+    /// the power law and the sigmoid; for the laws without phases
+    /// (exponential, tabulated) the fraction whose rule of mixtures gives
+    /// E(z), (E - E_c) / (E_m - E_c) clipped to [0, 1] (1 if E_m = E_c).
+    double
+    metal_volume_fraction(const double z) const;
+
     /// Whether the gradation grades a metal volume fraction (power law,
     /// sigmoid), so that the two phases' properties apply.
     bool

@@ -53,6 +53,16 @@ namespace fgimpact
   std::vector<std::string>
   resolution_warnings(const ImpactResults &r, const bool contact_area);
 
+  /**
+   * The validity report in one line: "breaks: ...; holds: ..." over the
+   * elastic metal (von Mises against the graded yield strength), the
+   * intact ceramic (principal stress against the tensile strength), the
+   * rigid ball (E* more than 5 % above the elastic ball's) and the small
+   * strains (resolution_warnings()); "not checked" if none was checked.
+   */
+  std::string
+  validity_text(const ImpactResults &r);
+
   /// What a summary key may need besides the results.
   struct SummaryContext
   {

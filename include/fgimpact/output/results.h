@@ -1,6 +1,9 @@
 #ifndef fgimpact_results_h
 #define fgimpact_results_h
 
+#include <fgimpact/material/strength.h>
+
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -78,6 +81,26 @@ namespace fgimpact
     /// (one line each, naming what to change).
     ModelDescription         model;
     std::vector<std::string> warnings;
+
+    /// The validity report (ValidityMonitor): the largest von Mises stress
+    /// over the graded yield strength in the metal-rich part, and the
+    /// largest principal stress over the tensile strength in the
+    /// ceramic-rich part, where and when; ratio NaN when not checked (a
+    /// strength of 0, or no such part).
+    StrengthPeak yield_peak   = unchecked_peak();
+    StrengthPeak tension_peak = unchecked_peak();
+    /// How much a rigid ball raises Hertz's E* above the elastic ball's
+    /// of Impactor/Young's modulus (relative; 0 for an elastic ball, NaN
+    /// when not reported).
+    double rigid_ball_modulus_excess = std::numeric_limits<double>::quiet_NaN();
+
+    static StrengthPeak
+    unchecked_peak()
+    {
+      StrengthPeak peak;
+      peak.ratio = std::numeric_limits<double>::quiet_NaN();
+      return peak;
+    }
   };
 } // namespace fgimpact
 

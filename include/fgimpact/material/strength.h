@@ -1,0 +1,85 @@
+#ifndef fgimpact_strength_h
+#define fgimpact_strength_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <fgimpact/material/material.h>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /// The largest ratio of a stress to its strength found so far, with
+  /// where (m) and when (s) it occurred.
+  struct StrengthPeak
+  {
+    double   ratio    = 0; // stress / strength
+    double   stress   = 0; // Pa
+    double   strength = 0; // Pa
+    Point<3> point;        // m
+    double   time = 0;     // s
+  };
+
+  /**
+   * The strengths of the two phases (Material/Metal yield strength,
+   * Ceramic tensile strength, TTO q), and the graded strengths that the
+   * validity report compares the elastic stresses with:
+   *
+   *  - the metal-rich part (V_m >= 1/2) yields at the Tamura-Tomota-Ozawa
+   *    (TTO) rule of mixtures, the ceramic phase elastic,
+   *      Y(V_m) = Y_m [V_m + (q + E_m)/(q + E_c) E_c/E_m (1 - V_m)],
+   *    q = (sigma_c - sigma_m)/(eps_c - eps_m) the stress transfer between
+   *    the phases (q -> infinity: equal strains; q = 0: equal stresses;
+   *    Jin, Paulino & Dodds, Eng. Fract. Mech. 70 (2003) 1885);
+   *  - the ceramic-rich part (V_m < 1/2) breaks in tension at the linear
+   *    rule of mixtures of the ceramic's tensile strength and the metal's
+   *    yield strength, S_t = (1 - V_m) S_c + V_m Y_m (an estimate: brittle
+   *    failure of a mixture has no established rule).
+   *
+   * A strength of 0 switches its check off.  Units: Pa.
+   */
+  class GradedStrength
+  {
+  public:
+    struct Parameters
+    {
+      double metal_yield_strength     = 275e6;
+      double ceramic_tensile_strength = 260e6;
+      double tto_q                    = 4.5e9;
+
+      /// The entries, in the Material subsection.
+      static void
+      declare_parameters(ParameterHandler &prm);
+      void
+      parse_parameters(ParameterHandler &prm);
+    };
+
+    GradedStrength(const Parameters                 &parameters,
+                   const FunctionallyGradedMaterial &material);
+
+    /// Whether the point at height z (m) is metal-rich, V_m >= 1/2.
+    bool
+    metal_rich(const double z) const;
+
+    /// Y(V_m(z)) of the TTO rule (Pa); 0 if the check is off.
+    double
+    yield_strength(const double z) const;
+
+    /// S_t(V_m(z)) (Pa); 0 if the check is off.
+    double
+    tensile_strength(const double z) const;
+
+    const Parameters &
+    get_parameters() const
+    {
+      return parameters;
+    }
+
+  private:
+    const Parameters                  parameters;
+    const FunctionallyGradedMaterial &material;
+  };
+} // namespace fgimpact
+
+#endif

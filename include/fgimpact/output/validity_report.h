@@ -1,0 +1,113 @@
+#ifndef fgimpact_validity_report_h
+#define fgimpact_validity_report_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/point.h>
+
+#include <fgimpact/material/strength.h>
+#include <fgimpact/output/postprocessor.h>
+#include <fgimpact/output/results.h>
+#include <fgimpact/plate/strength_check.h>
+
+#include <memory>
+#include <string>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * The stresses of Hertz's half-space contact at peak pressure p0, per
+   * p0 (Johnson, Contact Mechanics, Eqs. 3.45 and 3.44): the largest von
+   * Mises stress, on the axis at depth `depth` (per contact radius a),
+   * and the radial tension at the contact's edge on the surface,
+   * (1 - 2 nu)/3.
+   */
+  struct HertzStressPeaks
+  {
+    double von_mises;
+    double depth;
+    double edge_tension;
+  };
+
+  HertzStressPeaks
+  hertz_stress_peaks(const double nu);
+
+  /// What the validity report needs of the scene.
+  struct ValiditySetup
+  {
+    GradedStrength::Parameters strength;
+    /// The impact point on the top face (m) and the ball's radius (m).
+    Point<3> impact_point;
+    double   sphere_radius = 0;
+    /// A Hertz model's point force: the FE stress within excluded_radius
+    /// (m) of the load is skipped and Hertz's closed form at the peak
+    /// force stands for it.
+    bool   point_force     = false;
+    double excluded_radius = 0;
+    /// A rigid ball, and the elastic ball's E_i/(1 - nu_i^2) that
+    /// Impactor/Young's modulus and Poisson's ratio give (Pa).
+    bool   rigid_ball   = true;
+    double ball_modulus = 0;
+  };
+
+  /**
+   * The validity report of an impact run: the elastic stresses against
+   * the graded strengths at every step (StrengthCheck), Hertz's closed
+   * form under a point force, and the rigid ball's stiffening.  At the end
+   * it fills ImpactResults::yield_peak, tension_peak and
+   * rigid_ball_modulus_excess, adds a warning per broken assumption, and
+   * prints one line saying which assumptions hold and which break.  Its
+   * peaks are part of a checkpoint.
+   */
+  class ValidityMonitor : public Postprocessor
+  {
+  public:
+    ValidityMonitor(const PlateModel         &plate,
+                    const ValiditySetup      &setup,
+                    ImpactResults            &results,
+                    const ConditionalOStream &pcout);
+
+    std::string
+    name() const override
+    {
+      return "validity";
+    }
+
+    void
+    execute(const StepRecord &record) override;
+
+    /// The peaks over all ranks (collective).
+    void
+    save(CheckpointWriter &out, const unsigned int step) override;
+    void
+    load(CheckpointReader &in) override;
+
+    /// Collect the peaks over the ranks (collective).
+    void
+    close_output() override;
+
+    void
+    finish(const ImpactorState &ball) override;
+
+  private:
+    /// Hertz's closed form at the peak force, in place of the FE stress
+    /// near a point force.
+    void
+    add_hertz_contact_stress();
+
+    /// The one-line report and the warnings.
+    void
+    report();
+
+    const PlateModel              &plate;
+    const ValiditySetup            setup;
+    const GradedStrength           strength;
+    std::unique_ptr<StrengthCheck> check;
+    ImpactResults                 &results;
+    const ConditionalOStream      &pcout;
+    StrengthPeak                   yield_peak, tension_peak;
+  };
+} // namespace fgimpact
+
+#endif

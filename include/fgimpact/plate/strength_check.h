@@ -1,0 +1,132 @@
+#ifndef fgimpact_strength_check_h
+#define fgimpact_strength_check_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <fgimpact/material/strength.h>
+#include <fgimpact/plate/plate_model.h>
+
+#include <Epetra_Import.h>
+#include <array>
+#include <memory>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * The elastic stresses against the graded strengths (GradedStrength),
+   * at every step: the von Mises stress over the TTO yield strength in the
+   * metal-rich part and the largest principal stress over the tensile
+   * strength in the ceramic-rich part, at the scalar support points of
+   * every locally owned cell (the vertices for Q1, where a brick's
+   * strain is largest), each cell's own stress (not averaged: the
+   * largest of the discontinuous field).  The largest ratio of each is
+   * kept with its point and time.
+   *
+   * The cells with a vertex within `excluded_radius` of `excluded_centre`
+   * are skipped: the Hertz models load one node with a point force, whose
+   * stress has no limit (it grows as 1/r^2 under refinement); there the
+   * caller puts Hertz's closed form instead.
+   *
+   * Every cell is a brick (PropertyInterpolator's assumption too): the
+   * shape gradients at the points depend only on its extents, so one table
+   * per extent serves all cells of that size.
+   */
+  class StrengthCheck
+  {
+  public:
+    StrengthCheck(const PlateModel     &plate,
+                  const GradedStrength &strength,
+                  const Point<3>       &excluded_centre,
+                  const double          excluded_radius);
+
+    /// The stresses of the displacement u (m, constraints distributed,
+    /// locally owned) at time t (s).  Not collective.
+    void
+    evaluate(const TrilinosWrappers::MPI::Vector &u, const double t);
+
+    /// The peaks over all ranks so far (collective); ratio NaN if no
+    /// point of that part is checked (no such part, or its strength 0).
+    StrengthPeak
+    metal_peak() const;
+    StrengthPeak
+    ceramic_peak() const;
+
+    /// Start from peaks found before (a resumed run).
+    void
+    set_peaks(const StrengthPeak &metal, const StrengthPeak &ceramic);
+
+  private:
+    /// The cell data for the cells that are checked.
+    void
+    setup(const Point<3> &excluded_centre, const double excluded_radius);
+
+    /// Whether cell c (its displacements cell_u, [s * 3 + component])
+    /// cannot beat the peaks: for Q1, its strain at the centre (exact, the
+    /// rigid rotation removed) plus a bound of the trilinear variation;
+    /// otherwise |grad u| <= |D| gradient_bound.
+    bool
+    can_skip(const unsigned int c, const std::vector<double> &cell_u) const;
+
+    /// One checked point (Lame constants and strength from E (Pa), nu).
+    void
+    add_point(const Point<3> &x, const double E, const double nu);
+
+    /// The point k's stress from its displacement gradient G at time t.
+    void
+    check_point(const unsigned int k, const double G[3][3], const double t);
+
+    StrengthPeak
+    global_peak(const StrengthPeak &local, const unsigned int n_local) const;
+
+    const PlateModel     &plate;
+    const GradedStrength &strength;
+    unsigned int          n_points = 0;
+    /// The scalar element's support points (= its shape functions).
+    unsigned int n_scalar = 0;
+    /// Shape gradients of the scalar element per cell extent:
+    /// [table][(q * n_scalar + s) * 3 + d].
+    std::vector<std::vector<double>> gradients;
+    /// Per table: max over the points of |(sum_s |dN_s/dx_d|)_d|, so that
+    /// |grad u| <= |D| of the cell, D_c = max_s |u_sc - mean_s u_sc|
+    /// (the shape functions sum to 1).
+    std::vector<double> gradient_bound;
+    /// Per table: the cell's extents (m).
+    std::vector<std::array<double, 3>> extents;
+    /// Per checked cell, over its points (strength included, so the
+    /// factors bound ratios): the von Mises stress per |dev eps| of the
+    /// metal-rich points; of the ceramic-rich points sigma_1 per
+    /// |tr eps|, per |dev eps|, and per |eps|.  A cell whose bound cannot
+    /// beat the peaks is skipped (can_skip()).
+    struct CellFactors
+    {
+      double metal = 0, ceramic_trace = 0, ceramic_deviator = 0,
+             ceramic_norm = 0;
+    };
+    std::vector<CellFactors> factors;
+    /// Per checked cell: its table, and the local indices in u_ghosted of
+    /// its DoFs in the order [s * 3 + component].
+    std::vector<unsigned int> table;
+    std::vector<int>          local_index;
+    /// Per checked cell and point: Lame's lambda and 2 mu (Pa), 1/strength
+    /// (1/Pa, 0 if the check is off), whether metal-rich, the point (m).
+    std::vector<double>   lambda, two_mu, inverse_strength;
+    std::vector<bool>     metal;
+    std::vector<Point<3>> points;
+
+    TrilinosWrappers::MPI::Vector u_ghosted;
+    /// The owned-to-ghosted import, built once (deal.II's assignment
+    /// builds one per call, which cost more than the check itself).
+    std::unique_ptr<Epetra_Import> importer;
+    StrengthPeak                   metal_local, ceramic_local;
+    /// The points checked on this rank, per part.
+    unsigned int n_metal = 0, n_ceramic = 0;
+  };
+} // namespace fgimpact
+
+#endif

@@ -1,0 +1,365 @@
+// The elastic stresses against the graded strengths at every step
+// (strength_check.h).
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <fgimpact/material/constitutive_law.h>
+#include <fgimpact/plate/strength_check.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace fgimpact
+{
+  StrengthCheck::StrengthCheck(const PlateModel     &plate,
+                               const GradedStrength &strength,
+                               const Point<3>       &excluded_centre,
+                               const double          excluded_radius)
+    : plate(plate)
+    , strength(strength)
+  {
+    u_ghosted.reinit(plate.locally_owned_dofs(),
+                     plate.locally_relevant_dofs(),
+                     plate.get_mpi_communicator());
+    setup(excluded_centre, excluded_radius);
+  }
+
+
+
+  void
+  StrengthCheck::setup(const Point<3> &excluded_centre,
+                       const double    excluded_radius)
+  {
+    const auto                &fe        = plate.get_fe();
+    const FiniteElement<3>    &scalar_fe = fe.base_element(0);
+    const Quadrature<3>        support(scalar_fe.get_unit_support_points());
+    FEValues<3>                fe_values(plate.get_mapping(),
+                          fe,
+                          support,
+                          update_gradients | update_quadrature_points);
+    const PropertyInterpolator properties(scalar_fe,
+                                          support.get_points(),
+                                          plate.get_material());
+    const unsigned int         n_dofs = fe.n_dofs_per_cell();
+    n_points = n_scalar = support.size();
+
+    const auto &map = u_ghosted.trilinos_vector().Map();
+    std::map<std::array<double, 3>, unsigned int> tables;
+    std::vector<types::global_dof_index>          dofs(n_dofs);
+    std::vector<double>                           E, nu, rho;
+    std::vector<int>                              cell_index(n_dofs);
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          bool excluded = false;
+          for (const unsigned int v : cell->vertex_indices())
+            excluded = excluded || cell->vertex(v).distance(excluded_centre) <
+                                     excluded_radius;
+          if (excluded)
+            continue;
+          fe_values.reinit(cell);
+          const std::array<double, 3> extent = {{cell->extent_in_direction(0),
+                                                 cell->extent_in_direction(1),
+                                                 cell->extent_in_direction(2)}};
+          const auto [it, added] = tables.emplace(extent, gradients.size());
+          cell->get_dof_indices(dofs);
+          if (added)
+            {
+              gradients.emplace_back(n_points * n_scalar * 3);
+              gradient_bound.push_back(0.);
+              extents.push_back(extent);
+            }
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              const auto [c, s]     = fe.system_to_component_index(i);
+              cell_index[s * 3 + c] = map.LID(
+                static_cast<TrilinosWrappers::types::int_type>(dofs[i]));
+              if (added)
+                for (unsigned int q = 0; q < n_points; ++q)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    gradients.back()[(q * n_scalar + s) * 3 + d] =
+                      fe_values.shape_grad_component(i, q, c)[d];
+            }
+          table.push_back(it->second);
+          local_index.insert(local_index.end(),
+                             cell_index.begin(),
+                             cell_index.end());
+          properties.values(cell, E, nu, rho);
+          factors.emplace_back();
+          for (unsigned int q = 0; q < n_points; ++q)
+            add_point(fe_values.quadrature_point(q), E[q], nu[q]);
+        }
+    for (unsigned int t = 0; t < gradients.size(); ++t)
+      for (unsigned int q = 0; q < n_points; ++q)
+        {
+          double A[3] = {};
+          for (unsigned int s = 0; s < n_scalar; ++s)
+            for (unsigned int d = 0; d < 3; ++d)
+              A[d] += std::abs(gradients[t][(q * n_scalar + s) * 3 + d]);
+          gradient_bound[t] =
+            std::max(gradient_bound[t],
+                     std::sqrt(A[0] * A[0] + A[1] * A[1] + A[2] * A[2]));
+        }
+  }
+
+
+
+  void
+  StrengthCheck::add_point(const Point<3> &x, const double E, const double nu)
+  {
+    const bool   is_metal = strength.metal_rich(x[2]);
+    const double S        = is_metal ?
+                              (strength.get_parameters().metal_yield_strength > 0. ?
+                                 strength.yield_strength(x[2]) :
+                                 0.) :
+                              strength.tensile_strength(x[2]);
+    lambda.push_back(HookeLaw::lambda(E, nu));
+    two_mu.push_back(2. * HookeLaw::mu(E, nu));
+    inverse_strength.push_back(S > 0. ? 1. / S : 0.);
+    // von Mises = 2 mu sqrt(3/2) |dev eps|; sigma_1 = lambda tr eps +
+    // 2 mu eps_1 <= (lambda + 2 mu/3) |tr eps| + 2 mu sqrt(2/3) |dev eps|
+    // <= (sqrt(3) |lambda| + 2 mu) |eps|.
+    const double invS = inverse_strength.back(), l = std::abs(lambda.back()),
+                 m2 = two_mu.back();
+    CellFactors &f  = factors.back();
+    if (is_metal)
+      f.metal = std::max(f.metal, m2 * std::sqrt(1.5) * invS);
+    else
+      {
+        f.ceramic_trace = std::max(f.ceramic_trace, (l + m2 / 3.) * invS);
+        f.ceramic_deviator =
+          std::max(f.ceramic_deviator, m2 * std::sqrt(2. / 3.) * invS);
+        f.ceramic_norm =
+          std::max(f.ceramic_norm, (std::sqrt(3.) * l + m2) * invS);
+      }
+    metal.push_back(is_metal);
+    points.push_back(x);
+    if (S > 0.)
+      ++(is_metal ? n_metal : n_ceramic);
+  }
+
+
+
+  void
+  StrengthCheck::evaluate(const TrilinosWrappers::MPI::Vector &u,
+                          const double                         t)
+  {
+    if (!importer)
+      importer =
+        std::make_unique<Epetra_Import>(u_ghosted.trilinos_vector().Map(),
+                                        u.trilinos_vector().Map());
+    const int error = u_ghosted.trilinos_vector().Import(u.trilinos_vector(),
+                                                         *importer,
+                                                         Insert);
+    AssertThrow(error == 0, ExcTrilinosError(error));
+    const double *const values = u_ghosted.trilinos_vector()[0];
+    const unsigned int  n_dofs = 3 * n_scalar;
+    std::vector<double> cell_u(n_dofs);
+    for (unsigned int c = 0; c < table.size(); ++c)
+      {
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          cell_u[i] = values[local_index[c * n_dofs + i]];
+        if (can_skip(c, cell_u))
+          continue;
+        const double *const grad = gradients[table[c]].data();
+        for (unsigned int q = 0; q < n_points; ++q)
+          {
+            const unsigned int k = c * n_points + q;
+            if (inverse_strength[k] == 0.)
+              continue;
+            // G_cd = sum_s u_sc dN_s/dx_d.
+            double G[3][3] = {};
+            for (unsigned int s = 0; s < n_scalar; ++s)
+              {
+                const double *const g  = grad + (q * n_scalar + s) * 3;
+                const double *const us = cell_u.data() + 3 * s;
+                for (unsigned int a = 0; a < 3; ++a)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    G[a][d] += us[a] * g[d];
+              }
+            check_point(k, G, t);
+          }
+      }
+  }
+
+
+
+  bool
+  StrengthCheck::can_skip(const unsigned int         c,
+                          const std::vector<double> &cell_u) const
+  {
+    const CellFactors &f = factors[c];
+    if (n_scalar != 8)
+      {
+        // Any Lagrange element: |grad u| <= |D| gradient_bound with
+        // D_a = max_s |u_sa - mean_s u_sa| (the shape functions sum to 1).
+        double D2 = 0;
+        for (unsigned int a = 0; a < 3; ++a)
+          {
+            double mean = 0, D = 0;
+            for (unsigned int s = 0; s < n_scalar; ++s)
+              mean += cell_u[3 * s + a] / n_scalar;
+            for (unsigned int s = 0; s < n_scalar; ++s)
+              D = std::max(D, std::abs(cell_u[3 * s + a] - mean));
+            D2 += D * D;
+          }
+        const double bound = std::sqrt(D2) * gradient_bound[table[c]];
+        return bound * f.metal <= metal_local.ratio &&
+               bound * f.ceramic_norm <= ceramic_local.ratio;
+      }
+    // Q1 on a brick, unit coordinates x^ in [-1, 1]^3, vertex v = i + 2j +
+    // 4k at (2i - 1, 2j - 1, 2k - 1): u = sum of c_m monomials, so
+    // du/dx = 2/dx (c_x + c_xy y^ + c_xz z^ + c_xyz y^ z^), whose centre
+    // value is exact and whose variation is at most 2/dx (|c_xy| + |c_xz|
+    // + |c_xyz|); likewise in y and z.
+    const auto &h = extents[table[c]];
+    double      G[3][3], variation2 = 0;
+    for (unsigned int a = 0; a < 3; ++a)
+      {
+        double m[7] = {}; // x, y, z, xy, xz, yz, xyz
+        for (unsigned int v = 0; v < 8; ++v)
+          {
+            const double sx = (v & 1) ? 1. : -1., sy = (v & 2) ? 1. : -1.,
+                         sz = (v & 4) ? 1. : -1., u = cell_u[3 * v + a] / 8.;
+            m[0] += sx * u;
+            m[1] += sy * u;
+            m[2] += sz * u;
+            m[3] += sx * sy * u;
+            m[4] += sx * sz * u;
+            m[5] += sy * sz * u;
+            m[6] += sx * sy * sz * u;
+          }
+        const double var[3] = {std::abs(m[3]) + std::abs(m[4]) + std::abs(m[6]),
+                               std::abs(m[3]) + std::abs(m[5]) + std::abs(m[6]),
+                               std::abs(m[4]) + std::abs(m[5]) +
+                                 std::abs(m[6])};
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            G[a][d] = 2. / h[d] * m[d];
+            variation2 += std::pow(2. / h[d] * var[d], 2);
+          }
+      }
+    const double tr   = G[0][0] + G[1][1] + G[2][2];
+    double       dev2 = 0;
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+        dev2 +=
+          std::pow(0.5 * (G[a][b] + G[b][a]) - (a == b ? tr / 3. : 0.), 2);
+    // |eps(x) - eps_c| <= |grad u(x) - grad u_c| <= sqrt(variation2), and
+    // |tr| changes by at most sqrt(3) times that.
+    const double V   = std::sqrt(variation2);
+    const double dev = std::sqrt(dev2) + V;
+    return f.metal * dev <= metal_local.ratio &&
+           f.ceramic_trace * (std::abs(tr) + std::sqrt(3.) * V) +
+               f.ceramic_deviator * dev <=
+             ceramic_local.ratio;
+  }
+
+
+
+  void
+  StrengthCheck::check_point(const unsigned int k,
+                             const double       G[3][3],
+                             const double       t)
+  {
+    // sigma = lambda tr(eps) 1 + 2 mu eps: von Mises = 2 mu sqrt(3/2)
+    // |dev eps|, and sigma_1 = lambda tr(eps) + 2 mu eps_1 with
+    // eps_1 <= tr/3 + sqrt(2/3) |dev eps|: the eigenvalues only where that
+    // bound can beat the peak.
+    const double tr  = G[0][0] + G[1][1] + G[2][2];
+    const double e01 = 0.5 * (G[0][1] + G[1][0]),
+                 e02 = 0.5 * (G[0][2] + G[2][0]),
+                 e12 = 0.5 * (G[1][2] + G[2][1]);
+    const double d0 = G[0][0] - tr / 3., d1 = G[1][1] - tr / 3.,
+                 d2    = G[2][2] - tr / 3.;
+    const double  dev  = std::sqrt(d0 * d0 + d1 * d1 + d2 * d2 +
+                                 2. * (e01 * e01 + e02 * e02 + e12 * e12));
+    StrengthPeak &peak = metal[k] ? metal_local : ceramic_local;
+    double        stress;
+    if (metal[k])
+      stress = two_mu[k] * std::sqrt(1.5) * dev;
+    else
+      {
+        const double mean = lambda[k] * tr + two_mu[k] * tr / 3.;
+        if ((mean + two_mu[k] * std::sqrt(2. / 3.) * dev) *
+              inverse_strength[k] <=
+            peak.ratio)
+          return;
+        SymmetricTensor<2, 3> eps;
+        eps[0][0] = G[0][0];
+        eps[1][1] = G[1][1];
+        eps[2][2] = G[2][2];
+        eps[0][1] = e01;
+        eps[0][2] = e02;
+        eps[1][2] = e12;
+        stress    = lambda[k] * tr + two_mu[k] * eigenvalues(eps)[0];
+      }
+    const double ratio = stress * inverse_strength[k];
+    if (ratio > peak.ratio)
+      peak = {ratio, stress, 1. / inverse_strength[k], points[k], t};
+  }
+
+
+
+  StrengthPeak
+  StrengthCheck::global_peak(const StrengthPeak &local,
+                             const unsigned int  n_local) const
+  {
+    const MPI_Comm comm = plate.get_mpi_communicator();
+    if (Utilities::MPI::sum(n_local, comm) == 0)
+      {
+        StrengthPeak none;
+        none.ratio = std::numeric_limits<double>::quiet_NaN();
+        return none;
+      }
+    struct
+    {
+      double ratio;
+      int    rank;
+    } in{local.ratio, static_cast<int>(Utilities::MPI::this_mpi_process(comm))},
+      out{};
+    MPI_Allreduce(&in, &out, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm);
+    std::array<double, 7> data = {{local.ratio,
+                                   local.stress,
+                                   local.strength,
+                                   local.point[0],
+                                   local.point[1],
+                                   local.point[2],
+                                   local.time}};
+    MPI_Bcast(data.data(), 7, MPI_DOUBLE, out.rank, comm);
+    return {
+      data[0], data[1], data[2], Point<3>(data[3], data[4], data[5]), data[6]};
+  }
+
+
+
+  StrengthPeak
+  StrengthCheck::metal_peak() const
+  {
+    return global_peak(metal_local, n_metal);
+  }
+
+
+
+  StrengthPeak
+  StrengthCheck::ceramic_peak() const
+  {
+    return global_peak(ceramic_local, n_ceramic);
+  }
+
+
+
+  void
+  StrengthCheck::set_peaks(const StrengthPeak &metal,
+                           const StrengthPeak &ceramic)
+  {
+    metal_local   = metal;
+    ceramic_local = ceramic;
+  }
+} // namespace fgimpact
