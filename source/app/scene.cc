@@ -4,6 +4,7 @@
 #include <fgimpact/app/scene.h>
 #include <fgimpact/contact/contact_law.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace fgimpact
@@ -42,5 +43,29 @@ namespace fgimpact
     contact_radius = fgimpact::expected_contact_radius(parameters, material, h);
     modulus        = fgimpact::top_face_modulus(material, h);
     part_share     = share;
+  }
+
+
+
+  ValiditySetup
+  validity_setup(const Parameters    &parameters,
+                 const Scene         &scene,
+                 const ContactModel  &contact,
+                 const ImpactResults &results)
+  {
+    const Impactor::Parameters &ball = scene.impactor().get_parameters();
+    ValiditySetup               setup;
+    setup.strength        = parameters.strength;
+    setup.impact_point    = scene.impact_point();
+    setup.sphere_radius   = ball.radius;
+    setup.point_force     = !contact.reports_contact_area();
+    setup.excluded_radius = std::max(2. * results.model.element_size_under_ball,
+                                     3. * scene.expected_contact_radius());
+    setup.rigid_ball      = !ball.elastic;
+    // The elastic ball that Impactor/Young's modulus and Poisson's ratio
+    // describe, also when the run's ball is rigid.
+    setup.ball_modulus =
+      ball.youngs_modulus / (1. - ball.poissons_ratio * ball.poissons_ratio);
+    return setup;
   }
 } // namespace fgimpact

@@ -128,7 +128,7 @@ namespace fgimpact
       return "not checked";
     std::string breaks, holds;
     const auto  add = [](std::string &list, const std::string &item) {
-      list += (list.empty() ? "" : ", ") + item;
+      list += (list.empty() ? "" : "; ") + item;
     };
     char text[300];
     if (std::isfinite(r.yield_peak.ratio))
@@ -169,8 +169,13 @@ namespace fgimpact
       small_strains =
         small_strains && w.find("small-strain") == std::string::npos;
     add(small_strains ? holds : breaks, "small strains");
+    // No commas: study.csv holds this text as it is.
     return "breaks: " + (breaks.empty() ? std::string("none") : breaks) +
-           "; holds: " + (holds.empty() ? std::string("none") : holds);
+           " | holds: " + (holds.empty() ? std::string("none") : holds) +
+           (r.stress_fields_checked ?
+              "" :
+              " | stress fields not scanned (a study case by convolution: "
+              "--study-case K or Study/Method = time loop scans them)");
   }
 
 

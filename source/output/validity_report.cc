@@ -58,7 +58,10 @@ namespace fgimpact
   ValidityMonitor::execute(const StepRecord &record)
   {
     if (record.fields)
-      check->evaluate(record.fields->displacement(), record.t);
+      {
+        check->evaluate(record.fields->displacement(), record.t);
+        fields_seen = true;
+      }
   }
 
 
@@ -92,6 +95,9 @@ namespace fgimpact
   {
     yield_peak   = check->metal_peak();
     tension_peak = check->ceramic_peak();
+    // No fields (the study's convolution engine): nothing was scanned.
+    if (!fields_seen)
+      yield_peak = tension_peak = StrengthPeak::unchecked();
   }
 
 
@@ -138,8 +144,9 @@ namespace fgimpact
   {
     if (setup.point_force)
       add_hertz_contact_stress();
-    results.yield_peak   = yield_peak;
-    results.tension_peak = tension_peak;
+    results.yield_peak            = yield_peak;
+    results.tension_peak          = tension_peak;
+    results.stress_fields_checked = fields_seen;
     // Hertz: 1/E* = 1/Q_plate + 1/Q_ball, so a rigid ball raises E* by
     // Q_plate / Q_ball over the elastic one.
     const double h  = plate.get_geometry().thickness();

@@ -314,9 +314,7 @@ namespace fgimpact
     const MPI_Comm comm = plate.get_mpi_communicator();
     if (Utilities::MPI::sum(n_local, comm) == 0)
       {
-        StrengthPeak none;
-        none.ratio = std::numeric_limits<double>::quiet_NaN();
-        return none;
+        return StrengthPeak::unchecked();
       }
     struct
     {

@@ -6,6 +6,7 @@
 #include <fgimpact/contact/contact_model.h>
 #include <fgimpact/contact/impactor.h>
 #include <fgimpact/output/impact_summary.h>
+#include <fgimpact/output/validity_report.h>
 #include <fgimpact/plate/plate_fields.h>
 #include <fgimpact/plate/probes.h>
 #include <fgimpact/study/impact_study_engine.h>
@@ -372,10 +373,16 @@ namespace fgimpact
     // No probes.csv: its probes need the fields (--study-case K writes it).
     OutputParameters output = p.output;
     output.probe_points.points.clear();
-    ImpactMonitor monitor(
+    const ConditionalOStream pcout(std::cout,
+                                   Utilities::MPI::this_mpi_process(
+                                     plate.get_mpi_communicator()) == 0);
+    ImpactMonitor            monitor(
       output, plate, *contact, m, V0, dt, n_steps, results, summary);
     for (const auto &observer : observers)
       monitor.add_row_observer(observer);
+    // Without fields: Hertz's closed form and the rigid ball only.
+    monitor.add(std::make_unique<ValidityMonitor>(
+      plate, validity_setup(p, scene, *contact, results), results, pcout));
     monitor.start();
     ImpactorState ball;
     ball.v = V0;

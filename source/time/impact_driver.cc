@@ -385,22 +385,11 @@ namespace fgimpact
     for (const auto &observer : observers)
       monitor->add_row_observer(observer);
     monitor->add_field_output(scene.impact_point(), impactor.radius());
-    // The validity report.  A Hertz model's point force: its FE stress is
-    // skipped within two elements and three contact radii of the load.
-    ValiditySetup validity;
-    validity.strength      = parameters.strength;
-    validity.impact_point  = scene.impact_point();
-    validity.sphere_radius = impactor.radius();
-    validity.point_force   = !contact->reports_contact_area();
-    validity.excluded_radius =
-      std::max(2. * results.model.element_size_under_ball,
-               3. * scene.expected_contact_radius());
-    validity.rigid_ball = !impactor.get_parameters().elastic;
-    validity.ball_modulus =
-      impactor.get_parameters().youngs_modulus /
-      (1. - std::pow(impactor.get_parameters().poissons_ratio, 2));
-    monitor->add(
-      std::make_unique<ValidityMonitor>(plate, validity, results, pcout));
+    monitor->add(std::make_unique<ValidityMonitor>(
+      plate,
+      validity_setup(parameters, scene, *contact, results),
+      results,
+      pcout));
     monitor->start(resume);
     // Rank 0 alone has opened history.csv (and probes.csv): every rank
     // learns whether that worked before the first collective output.

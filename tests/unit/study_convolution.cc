@@ -10,7 +10,9 @@
 // the executable calls it, writes case_NNN/ whose summary.txt equals the
 // separate run's (every key but the timings; the two round-off measures
 // impulse_identity_error and max_relative_energy_drift, already relative,
-// within 1e-9 absolute), and study.csv rows equal the separate summaries.
+// within 1e-9 absolute), and study.csv rows equal the separate summaries;
+// the validity report's ceramic check, which needs the stress fields, is
+// `none` there and its verdict says so (field_check()).
 
 #include <deal.II/base/mpi.h>
 
@@ -59,6 +61,28 @@ namespace
     p.parse_parameters(prm);
     p.validate();
     return p;
+  }
+
+  /// The validity report's keys that need the stress fields, which the
+  /// convolution has not: the ceramic's tension (the bending of the
+  /// bottom face) and the verdict in words.  (The metal's check of the
+  /// hertz node is Hertz's closed form at the peak force in both.)
+  bool
+  field_check(const std::string &key)
+  {
+    return key.rfind("principal_", 0) == 0 ||
+           key == "max_principal_over_tensile_strength" ||
+           key == "tensile_strength_at_peak_MPa" || key == "validity";
+  }
+
+  /// What the convolution writes instead: none, and the verdict says
+  /// the fields were not scanned.
+  bool
+  convolution_field_check(const std::string &key, const std::string &value)
+  {
+    if (key == "validity")
+      return value.find("stress fields not scanned") != std::string::npos;
+    return value == "none";
   }
 
   /// "key = value" of a summary.txt, timings left out.
@@ -239,7 +263,10 @@ main(int argc, char **argv)
       const auto   got   = summary_of(std::string(directory) + "/summary.txt");
       unsigned int equal = 0;
       for (const auto &[key, value] : expected)
-        equal += (got.count(key) && same(key, got.at(key), value));
+        equal +=
+          (got.count(key) &&
+           (field_check(key) ? convolution_field_check(key, got.at(key)) :
+                               same(key, got.at(key), value)));
       std::getline(csv, line);
       const auto   cells     = split_csv(line);
       unsigned int csv_equal = 0, csv_keys = 0;
@@ -247,7 +274,9 @@ main(int argc, char **argv)
         if (expected.count(header[c]))
           {
             ++csv_keys;
-            csv_equal += same(header[c], expected.at(header[c]), cells[c]);
+            csv_equal += field_check(header[c]) ?
+                           convolution_field_check(header[c], cells[c]) :
+                           same(header[c], expected.at(header[c]), cells[c]);
           }
       std::printf("  case %u: summary.txt keys equal %u of %zu; study.csv row "
                   "(V0 %s, rho_i %s) values equal %u of %u\n",

@@ -6,6 +6,7 @@
 #include <fgimpact/app/parameters.h>
 #include <fgimpact/contact/impactor.h>
 #include <fgimpact/material/material.h>
+#include <fgimpact/output/validity_report.h>
 
 namespace fgimpact
 {
@@ -88,6 +89,19 @@ namespace fgimpact
     double         modulus;
     double         part_share;
   };
+  /**
+   * The validity report's set-up for a run of this scene (ImpactDriver and
+   * the study's engine alike): the strengths, the impact point, the ball,
+   * and for a Hertz model's point force (no contact area) the FE stress
+   * skipped within two elements (results.model.element_size_under_ball)
+   * and three expected contact radii of the load.
+   */
+  ValiditySetup
+  validity_setup(const Parameters    &parameters,
+                 const Scene         &scene,
+                 const ContactModel  &contact,
+                 const ImpactResults &results);
+
 } // namespace fgimpact
 
 #endif

@@ -6,6 +6,8 @@
 
 #include <fgimpact/material/material.h>
 
+#include <limits>
+
 namespace fgimpact
 {
   using namespace dealii;
@@ -19,6 +21,14 @@ namespace fgimpact
     double   strength = 0; // Pa
     Point<3> point;        // m
     double   time = 0;     // s
+
+    /// Not checked: every number NaN (summary.txt writes none).
+    static StrengthPeak
+    unchecked()
+    {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      return {nan, nan, nan, Point<3>(nan, nan, nan), nan};
+    }
   };
 
   /**

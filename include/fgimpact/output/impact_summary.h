@@ -54,11 +54,13 @@ namespace fgimpact
   resolution_warnings(const ImpactResults &r, const bool contact_area);
 
   /**
-   * The validity report in one line: "breaks: ...; holds: ..." over the
+   * The validity report in one line (no commas: study.csv holds it),
+   * "breaks: a; b | holds: c; d", over the
    * elastic metal (von Mises against the graded yield strength), the
    * intact ceramic (principal stress against the tensile strength), the
    * rigid ball (E* more than 5 % above the elastic ball's) and the small
-   * strains (resolution_warnings()); "not checked" if none was checked.
+   * strains (resolution_warnings()), then " | stress fields not scanned
+   * (...)" for a study case by convolution; "not checked" if none was.
    */
   std::string
   validity_text(const ImpactResults &r);

@@ -87,20 +87,15 @@ namespace fgimpact
     /// largest principal stress over the tensile strength in the
     /// ceramic-rich part, where and when; ratio NaN when not checked (a
     /// strength of 0, or no such part).
-    StrengthPeak yield_peak   = unchecked_peak();
-    StrengthPeak tension_peak = unchecked_peak();
+    StrengthPeak yield_peak   = StrengthPeak::unchecked();
+    StrengthPeak tension_peak = StrengthPeak::unchecked();
     /// How much a rigid ball raises Hertz's E* above the elastic ball's
     /// of Impactor/Young's modulus (relative; 0 for an elastic ball, NaN
     /// when not reported).
     double rigid_ball_modulus_excess = std::numeric_limits<double>::quiet_NaN();
-
-    static StrengthPeak
-    unchecked_peak()
-    {
-      StrengthPeak peak;
-      peak.ratio = std::numeric_limits<double>::quiet_NaN();
-      return peak;
-    }
+    /// Whether the stress fields were scanned (false for the study's
+    /// convolution engine, which has none: only Hertz's closed form).
+    bool stress_fields_checked = false;
   };
 } // namespace fgimpact
 

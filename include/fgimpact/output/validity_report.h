@@ -33,7 +33,8 @@ namespace fgimpact
   HertzStressPeaks
   hertz_stress_peaks(const double nu);
 
-  /// What the validity report needs of the scene.
+  /// What the validity report needs of the scene (validity_setup() in
+  /// app/scene.h builds it from the parameters).
   struct ValiditySetup
   {
     GradedStrength::Parameters strength;
@@ -107,6 +108,9 @@ namespace fgimpact
     ImpactResults                 &results;
     const ConditionalOStream      &pcout;
     StrengthPeak                   yield_peak, tension_peak;
+    /// Whether any step brought the fields (not in the study's
+    /// convolution engine).
+    bool fields_seen = false;
   };
 } // namespace fgimpact
 
