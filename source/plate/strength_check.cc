@@ -300,9 +300,29 @@ namespace fgimpact
         eps[1][2] = e12;
         stress    = lambda[k] * tr + two_mu[k] * eigenvalues(eps)[0];
       }
-    const double ratio = stress * inverse_strength[k];
-    if (ratio > peak.ratio)
-      peak = {ratio, stress, 1. / inverse_strength[k], points[k], t};
+    const double       ratio = stress * inverse_strength[k];
+    const StrengthPeak candidate{
+      ratio, stress, 1. / inverse_strength[k], points[k], t};
+    if (precedes(candidate, peak))
+      peak = candidate;
+  }
+
+
+
+  bool
+  StrengthCheck::precedes(const StrengthPeak &a, const StrengthPeak &b)
+  {
+    // Mirror-image points of a symmetric scene tie to round-off: within a
+    // relative 1e-12 the smaller (x, y, z), then the earlier time, wins,
+    // whatever the order of the cells and ranks.
+    const double tolerance =
+      1e-12 * std::max(std::abs(a.ratio), std::abs(b.ratio));
+    if (std::abs(a.ratio - b.ratio) > tolerance)
+      return a.ratio > b.ratio;
+    for (unsigned int d = 0; d < 3; ++d)
+      if (std::abs(a.point[d] - b.point[d]) > 1e-12)
+        return a.point[d] < b.point[d];
+    return a.time < b.time;
   }
 
 
@@ -316,23 +336,14 @@ namespace fgimpact
       {
         return StrengthPeak::unchecked();
       }
-    struct
-    {
-      double ratio;
-      int    rank;
-    } in{local.ratio, static_cast<int>(Utilities::MPI::this_mpi_process(comm))},
-      out{};
-    MPI_Allreduce(&in, &out, 1, MPI_DOUBLE_INT, MPI_MAXLOC, comm);
-    std::array<double, 7> data = {{local.ratio,
-                                   local.stress,
-                                   local.strength,
-                                   local.point[0],
-                                   local.point[1],
-                                   local.point[2],
-                                   local.time}};
-    MPI_Bcast(data.data(), 7, MPI_DOUBLE, out.rank, comm);
-    return {
-      data[0], data[1], data[2], Point<3>(data[3], data[4], data[5]), data[6]};
+    // Every rank's peak, then the same choice on every rank (so the
+    // point does not depend on the partition).
+    const auto   all  = Utilities::MPI::all_gather(comm, local);
+    StrengthPeak best = all[0];
+    for (const auto &peak : all)
+      if (precedes(peak, best))
+        best = peak;
+    return best;
   }
 
 

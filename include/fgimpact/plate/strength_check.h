@@ -84,6 +84,12 @@ namespace fgimpact
     StrengthPeak
     global_peak(const StrengthPeak &local, const unsigned int n_local) const;
 
+    /// Whether peak a is to be kept over b: the larger ratio; a tie
+    /// (mirror images, relative 1e-12) goes to the smaller (x, y, z), then
+    /// the earlier time.
+    static bool
+    precedes(const StrengthPeak &a, const StrengthPeak &b);
+
     const PlateModel     &plate;
     const GradedStrength &strength;
     unsigned int          n_points = 0;
