@@ -203,10 +203,36 @@ namespace fgimpact
   void
   ConvergedRun::run()
   {
+    try
+      {
+        run_sequence();
+      }
+    catch (const RunInterrupted &e)
+      {
+        // A level's own message offers --resume of its directory, which
+        // would finish that one run, not the sequence: say what to do.
+        throw RunInterrupted(
+          e.signal,
+          "Accuracy = converged interrupted by signal " +
+            std::to_string(e.signal) +
+            " in the run at contact refinement level " +
+            std::to_string(running_levels) +
+            (final_started ? " (the final run at half the time step)" : "") +
+            ": the sequence of levels cannot be resumed (--resume refuses "
+            "Accuracy = converged); run the same command again.");
+      }
+  }
+
+
+
+  void
+  ConvergedRun::run_sequence()
+  {
     const double tolerance = parameters.accuracy.tolerance;
     pcout << "Accuracy = converged (tolerance " << percent(tolerance)
           << "): contact refinement levels from " << first_levels << " into "
           << parameters.output.directory << "/convergence/\n";
+    running_levels = first_levels;
     sequence.push_back(run_one(*first, parameters_of(first_levels, false)));
     sequence.back().wall_time += first_setup_time;
     first.reset();
@@ -215,6 +241,7 @@ namespace fgimpact
          ++levels)
       {
         check_fits(levels);
+        running_levels     = levels;
         const Parameters p = parameters_of(levels, false);
         Timer            timer;
         Simulator        simulator(p, communicator);
@@ -233,6 +260,7 @@ namespace fgimpact
           << " at half the time step (" << p.time_integration.time_step * 1e6
           << " us), the final run, into " << parameters.output.directory
           << '\n';
+    running_levels = sequence.back().levels;
     Timer     timer;
     Simulator simulator(p, communicator);
     for (const auto &observer : observers)

@@ -8,7 +8,8 @@
 // step.  Last, the screen output piped into a program that exits early
 // (SIGPIPE): the run completes and its files are whole; a study stopped
 // in a case, and the case resumed with the command it printed; a
-// convolution study stopped while it prepares.
+// convolution study stopped while it prepares; Accuracy = converged stopped
+// in a level's run (one line, no --resume of the level).
 
 #include <algorithm>
 #include <chrono>
@@ -386,6 +387,51 @@ namespace
   }
 
   /**
+   * Accuracy = converged stopped by SIGTERM in a level's run: exit code
+   * 143 and one line that names the level and says to run the command
+   * again, without the level's --resume hint (which would finish that
+   * level alone; --resume refuses the converged mode).
+   */
+  bool
+  converged_stopped()
+  {
+    const std::string dir = "converged_out";
+    fs::remove_all(dir);
+    {
+      std::ofstream prm("converged.prm");
+      prm << "set Accuracy = converged\n"
+             "subsection Contact\n set Model = resolved sphere\nend\n"
+             "subsection Time integration\n set End time = 0.002\nend\n"
+             "subsection Output\n set Directory = "
+          << dir
+          << "\n set VTU interval = 0\n set Log interval = 0\n"
+             " set Print timing = false\nend\n";
+    }
+    const pid_t pid = start("converged.prm", "converged", false);
+    for (unsigned int i = 0; i < 3000 && !fs::exists(dir + "/convergence"); ++i)
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    kill(pid, SIGTERM);
+    int status = 0;
+    waitpid(pid, &status, 0);
+    const bool        stopped = WIFEXITED(status) && WEXITSTATUS(status) == 143;
+    const std::string err     = read("converged.stderr");
+    const bool        named =
+      err.find("Accuracy = converged interrupted by signal 15 in the run at "
+               "contact refinement level") != std::string::npos &&
+      err.find("run the same command again") != std::string::npos &&
+      err.find("--resume " + dir) == std::string::npos &&
+      std::count(err.begin(), err.end(), '\n') == 1;
+    std::printf("SIGTERM in a level of Accuracy = converged: exit code 143 "
+                "%s, one line naming the level and no --resume of it %s\n",
+                stopped ? "yes" : "NO",
+                named ? "yes" : "NO");
+    if (!(stopped && named))
+      std::printf("  status %d, stderr: %s\n", status, err.c_str());
+    return stopped && named;
+  }
+
+  /**
    * The screen output piped into `head -c 300`, which exits after 300
    * bytes: the run must not die of SIGPIPE; it completes, with exit code
    * 0, summary.txt completed, every row of history.csv and log.txt to
@@ -440,6 +486,7 @@ main()
   const bool pipe        = piped_into_head();
   const bool study       = study_resumed();
   const bool convolution = convolution_study_stopped();
+  const bool converged   = converged_stopped();
   // A mesh whose set-up takes about a second (whole plate), and signals
   // at several moments of it; static and modal runs of it.
   const std::string big =
@@ -454,8 +501,8 @@ main()
     interrupt_early("static", "set Problem type = static\n" + big, 0) && early;
   early = interrupt_early("modal", "set Problem type = modal\n" + plate, 100) &&
           early;
-  const bool ok =
-    term && intr && hup && mpi && pipe && study && convolution && early;
+  const bool ok = term && intr && hup && mpi && pipe && study && convolution &&
+                  converged && early;
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
   return ok ? 0 : 1;
 }

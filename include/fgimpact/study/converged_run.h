@@ -79,7 +79,8 @@ namespace fgimpact
     setup();
 
     /// The sequence, the time step check, the final run, convergence.csv
-    /// and the estimates in summary.txt.
+    /// and the estimates in summary.txt.  A signal stops it with one line
+    /// naming the level (RunInterrupted; the sequence is not resumable).
     void
     run();
 
@@ -107,6 +108,10 @@ namespace fgimpact
     Parameters
     parameters_of(const unsigned int levels, const bool final) const;
 
+    /// run() without the translation of a signal's message.
+    void
+    run_sequence();
+
     /// Run `simulator` (set up) with its directory prepared; its row.
     Level
     run_one(Simulator &simulator, const Parameters &p);
@@ -128,11 +133,13 @@ namespace fgimpact
     SummaryFile                                  &summary;
     const std::vector<ImpactMonitor::RowObserver> observers;
     ConditionalOStream                            pcout;
-    unsigned int                                  first_levels     = 0;
-    double                                        first_setup_time = 0; // s
-    std::unique_ptr<Simulator>                    first;
-    std::vector<Level>                            sequence;
-    ImpactResults                                 final_results;
+    unsigned int                                  first_levels = 0;
+    /// The contact refinement levels of the run under way.
+    unsigned int               running_levels   = 0;
+    double                     first_setup_time = 0; // s
+    std::unique_ptr<Simulator> first;
+    std::vector<Level>         sequence;
+    ImpactResults              final_results;
     /// The final run's summary.txt, to which the estimates are appended.
     SummaryEntries summary_entries;
     bool           final_started = false;
