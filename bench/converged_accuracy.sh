@@ -31,13 +31,8 @@ options=(
 for ((run = 0; run < n; ++run)); do
   for k in "${!labels[@]}"; do
     dir="$root/${labels[$k]}"
-    args=()
-    for word in ${options[$k]}; do args+=("${word//\?/ }"); done
-    /usr/bin/time -f "%e %M" -o "$root/time" "$exe" prm/default.prm \
-      -s "Output/Directory=$dir" -s "Output/Print timing=false" \
-      -s "Output/Log interval=0" -s "Output/VTU interval=0" \
-      "${args[@]}" >/dev/null
-    cat "$root/time" >>"$root/${labels[$k]//%/}.txt"
+    timed_default_run "$exe" "$dir" "$root/${labels[$k]//%/}.txt" \
+      "${options[$k]}" -s "Output/VTU interval=0"
     if [ -f "$dir/convergence.csv" ]; then
       echo "${labels[$k]}: peak force $(summary_value "$dir" peak_contact_force_N) N," \
         "estimate $(summary_value "$dir" peak_contact_force_error_estimate)," \
@@ -45,7 +40,6 @@ for ((run = 0; run < n; ++run)); do
     fi
   done
 done
-median() { sort -n | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
 reference=$(cut -d' ' -f1 "$root/hertz-node.txt" | median)
 reference_rss=$(cut -d' ' -f2 "$root/hertz-node.txt" | median)
 echo "| run | whole process (s, median of $n) | / hertz-node | peak RSS (MB) | / hertz-node |"

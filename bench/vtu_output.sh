@@ -26,15 +26,10 @@ options=(
 for ((run = 0; run < n; ++run)); do
   for k in "${!labels[@]}"; do
     dir="$root/${labels[$k]}"
-    args=()
-    for word in ${options[$k]}; do args+=("${word//\?/ }"); done
-    /usr/bin/time -f "%e %M" -o "$root/time" "$exe" prm/default.prm \
-      -s "Output/Directory=$dir" -s "Output/Print timing=false" \
-      -s "Output/Log interval=0" "${args[@]}" >/dev/null
-    echo "$(cat "$root/time") $(du -sk "$dir" | cut -f1)" >>"$root/${labels[$k]}.txt"
+    timed_default_run "$exe" "$dir" "$root/time" "${options[$k]}"
+    echo "$(tail -n 1 "$root/time") $(du -sk "$dir" | cut -f1)" >>"$root/${labels[$k]}.txt"
   done
 done
-median() { sort -n | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
 echo "| output | whole run (s, median of $n) | peak RSS (MB) | directory (MB) |"
 echo "|---|---|---|---|"
 for label in "${labels[@]}"; do

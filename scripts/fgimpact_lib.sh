@@ -113,6 +113,25 @@ need_gnu_time() {
   $sudo apt-get install -y --no-install-recommends time
 }
 
+# One run of EXE on prm/default.prm into DIR, timed by GNU time: appends
+# "wall_s peak_KB" to FILE.  OPTIONS: one string of "-s Entry=value"
+# words, '?' standing for a space inside a word; further arguments go to
+# the program as they are.  Quiet (no timing, log or screen output).
+timed_default_run() {
+  local exe=$1 dir=$2 file=$3 options=$4 word
+  shift 4
+  local args=()
+  for word in $options; do args+=("${word//\?/ }"); done
+  /usr/bin/time -f "%e %M" -o "$file.time" "$exe" prm/default.prm \
+    -s "Output/Directory=$dir" -s "Output/Print timing=false" \
+    -s "Output/Log interval=0" "$@" "${args[@]}" >/dev/null
+  cat "$file.time" >>"$file"
+  rm -f "$file.time"
+}
+
+# The median of the numbers on standard input, one per line.
+median() { sort -n | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
+
 gnu_time_rss_mb() {
   awk -F': ' -v f="${2:-%.0f}" \
     '/Maximum resident set size/ {printf f, $2 / 1024}' "$1"
