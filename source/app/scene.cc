@@ -62,10 +62,7 @@ namespace fgimpact
     setup.excluded_radius = std::max(2. * results.model.element_size_under_ball,
                                      3. * scene.expected_contact_radius());
     setup.rigid_ball      = !ball.elastic;
-    // The elastic ball that Impactor/Young's modulus and Poisson's ratio
-    // describe, also when the run's ball is rigid.
-    setup.ball_modulus =
-      ball.youngs_modulus / (1. - ball.poissons_ratio * ball.poissons_ratio);
+    setup.ball_modulus    = scene.impactor().elastic_indentation_modulus();
     return setup;
   }
 } // namespace fgimpact

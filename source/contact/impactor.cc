@@ -107,6 +107,14 @@ namespace fgimpact
   {
     if (!parameters.elastic)
       return std::numeric_limits<double>::infinity();
+    return elastic_indentation_modulus();
+  }
+
+
+
+  double
+  Impactor::elastic_indentation_modulus() const
+  {
     return parameters.youngs_modulus /
            (1. - parameters.poissons_ratio * parameters.poissons_ratio);
   }

@@ -58,6 +58,11 @@ namespace fgimpact
     double
     indentation_modulus() const;
 
+    /// E_i/(1 - nu_i^2) of Impactor/Young's modulus and Poisson's ratio
+    /// (Pa), also for a rigid ball: the elastic ball it stands for.
+    double
+    elastic_indentation_modulus() const;
+
     /// The period of an elastic ball's lowest vibration excited by a
     /// normal impact (s): Lamb's spheroidal mode 0S2, omega R / c_s = 2.64
     /// (nu = 0.25; it moves by about 1 % over nu = 0.2-0.35), c_s the shear
