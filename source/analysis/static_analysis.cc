@@ -39,6 +39,14 @@ namespace fgimpact
                         Patterns::Double(0., 1.),
                         "Load = sphere: how far the sphere's lowest point is "
                         "pushed below the undeformed top face. Unit: m.");
+      prm.declare_entry("Load steps",
+                        "20",
+                        Patterns::Integer(1, 100000),
+                        "Load = sphere with Material/Plasticity = J2: the "
+                        "indentation is applied in this many equal steps, "
+                        "and removed in as many (the residual crater is "
+                        "measured after unloading; load_curve.csv holds "
+                        "every step).");
       prm.declare_entry("Pressure",
                         "1e6",
                         Patterns::Double(-1e12, 1e12),
@@ -65,6 +73,7 @@ namespace fgimpact
                              l == "point"      ? Load::point :
                                                  Load::sphere);
       indentation         = prm.get_double("Indentation");
+      load_steps          = prm.get_integer("Load steps");
       pressure            = prm.get_double("Pressure");
       point_force         = prm.get_double("Point force");
     }
@@ -159,6 +168,11 @@ namespace fgimpact
       top_face_modulus(plate.get_material(), plate.get_geometry().thickness()),
       /*massless_candidates=*/false,
       indenter.modulus);
+    if (plastic)
+      {
+        solve_plastic_indentation(solver, contact);
+        return;
+      }
     // The sphere is displacement-driven: w = delta (its centre's
     // approach), no rigid-body compliance; an elastic sphere's surface
     // compliance is in the contact's LCP.
@@ -294,6 +308,21 @@ namespace fgimpact
           out.add("max_contact_pressure_MPa", results.max_pressure * 1e-6, 6);
           out.add("n_contact_nodes", results.n_contact_nodes, 0);
           write_pressure_csv(directory + "/contact_pressure.csv");
+          const auto &p = results.plastic;
+          if (p.modelled)
+            {
+              out.add("mean_contact_pressure_MPa",
+                      results.contact_force / p.contact_area * 1e-6,
+                      6);
+              out.add("plastic_dissipation_J", p.dissipation, 9);
+              out.add("permanent_indentation_um",
+                      p.permanent_indentation * 1e6,
+                      5);
+              out.add("max_equivalent_plastic_strain", p.max_plastic_strain, 6);
+              out.add("first_yield_contact_force_N", p.first_yield_force, 4);
+              out.add("plate_iterations", p.iterations, 0);
+              write_load_curve(directory + "/load_curve.csv");
+            }
         }
       out.add("n_dofs", results.n_dofs, 0);
       out.write(directory + "/summary.txt");
@@ -301,6 +330,8 @@ namespace fgimpact
     TrilinosWrappers::MPI::Vector zero;
     plate.initialize_vector(zero);
     VtuWriter vtu(plate, directory, vtu_compression, fields);
+    if (plastic)
+      vtu.set_plasticity(*plastic);
     vtu.write(0, 0., u, zero);
     vtu.finish();
   }

@@ -47,6 +47,41 @@ namespace fgimpact
       check_snapshot_times(snapshot_times, ti.end_time, end_name);
     }
 
+    /// Material/Plasticity = J2 where it is modelled: an impact with the
+    /// resolved contact (a point force has no converged stress under it)
+    /// and the implicit scheme, or a static sphere load; a yield strength.
+    void
+    check_plasticity(const Parameters &p)
+    {
+      if (p.strength.plasticity != GradedStrength::Plasticity::j2)
+        return;
+      const std::string name = "Material/Plasticity = J2";
+      AssertThrow(p.strength.metal_yield_strength > 0.,
+                  ExcMessage(name + " needs Material/Metal yield strength > "
+                                    "0 (0 switches the yield check off)."));
+      if (p.problem_type == ProblemType::impact)
+        {
+          AssertThrow(p.contact_model.model ==
+                        ContactModelParameters::Model::resolved_sphere,
+                      ExcMessage(name + " needs Contact/Model = resolved "
+                                        "sphere: under a point force (hertz "
+                                        "node, hertz midplane) the stress has "
+                                        "no converged value, and neither has "
+                                        "the plastic zone."));
+          AssertThrow(p.time_integration.scheme ==
+                        TimeStepper::Scheme::implicit_newmark,
+                      ExcMessage(name + " needs Time integration/Scheme = "
+                                        "implicit."));
+        }
+      else
+        AssertThrow(p.problem_type == ProblemType::static_load &&
+                      p.static_analysis.load == StaticAnalysis::Load::sphere,
+                    ExcMessage(name + " is modelled for impacts and for "
+                                      "Static/Load = sphere only; set "
+                                      "Material/Plasticity = none for this "
+                                      "problem."));
+    }
+
     /// Accuracy = converged refines the contact: it needs an impact whose
     /// contact converges under refinement, and the implicit scheme (its
     /// time step is halved once).
@@ -357,6 +392,7 @@ namespace fgimpact
                 ExcMessage("Contact/Model = resolved sphere needs Time "
                            "integration/Scheme = implicit: its contact is "
                            "rigid, which no explicit step is stable for."));
+    check_plasticity(*this);
     AssertThrow(output.directory.find_first_not_of(" \t") != std::string::npos,
                 ExcMessage("Output/Directory is empty."));
     // parameters.prm must read back as the run was: '#' starts a comment

@@ -129,6 +129,17 @@ namespace fgimpact
                                 plate,
                                 scene.impact_point_in_plane(),
                                 indenter);
+        // Material/Plasticity = J2: the graded strengths and the plastic
+        // state (validate() allows it with Load = sphere only).
+        const GradedStrength          strength(parameters.strength,
+                                      plate.get_material());
+        std::unique_ptr<PlasticPlate> plasticity;
+        if (parameters.strength.plasticity == GradedStrength::Plasticity::j2)
+          {
+            plasticity = std::make_unique<PlasticPlate>(plate, strength);
+            analysis.set_plasticity(
+              *plasticity, parameters.time_integration.newton.tolerance);
+          }
         solve_in_phase("static solve", [&]() { analysis.solve(); });
         analysis.write_output(parameters.output.directory,
                               parameters.output.vtu_compression,

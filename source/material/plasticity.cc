@@ -12,12 +12,17 @@ namespace fgimpact
                        const double                 Y,
                        const double                 H,
                        const SymmetricTensor<2, 3> &strain,
-                       const PlasticState          &old_state)
+                       const PlasticState          &old_state,
+                       const bool                   with_tangent)
   {
-    const double                kappa   = lambda + 2. / 3. * mu; // bulk
-    const SymmetricTensor<2, 3> one     = unit_symmetric_tensor<3>();
-    const SymmetricTensor<4, 3> I_dev   = deviator_tensor<3>();
-    const SymmetricTensor<4, 3> one_one = outer_product(one, one);
+    const double                kappa = lambda + 2. / 3. * mu; // bulk
+    const SymmetricTensor<2, 3> one   = unit_symmetric_tensor<3>();
+    SymmetricTensor<4, 3>       I_dev, one_one;
+    if (with_tangent)
+      {
+        I_dev   = deviator_tensor<3>();
+        one_one = outer_product(one, one);
+      }
 
     PlasticUpdate result;
     result.state = old_state;
@@ -31,8 +36,9 @@ namespace fgimpact
     const double pressure = kappa * trace(elastic_strain);
     if (!(f_trial > 0.))
       {
-        result.stress  = pressure * one + s_trial;
-        result.tangent = kappa * one_one + 2. * mu * I_dev;
+        result.stress = pressure * one + s_trial;
+        if (with_tangent)
+          result.tangent = kappa * one_one + 2. * mu * I_dev;
         return result;
       }
     // Linear hardening: the consistency condition is linear in the
@@ -53,6 +59,8 @@ namespace fgimpact
       d_eps_bar;
     // Box 3.2: theta = 1 - 2 mu dgamma/|s_trial|,
     // theta_bar = 1/(1 + H/(3 mu)) - (1 - theta).
+    if (!with_tangent)
+      return result;
     const double theta     = 1. - 2. * mu * delta_gamma / norm_trial;
     const double theta_bar = 1. / (1. + H / (3. * mu)) - (1. - theta);
     result.tangent         = kappa * one_one + 2. * mu * theta * I_dev -

@@ -38,6 +38,25 @@ namespace fgimpact
       "Large q: the phases strain alike; 0: they carry the same stress. "
       "Default 4.5 GPa, the value used for Ti/TiB (Jin, Paulino & Dodds "
       "2003); Ni/Al2O3 measured about 90 GPa. Unit: Pa.");
+    prm.declare_entry(
+      "Plasticity",
+      "none",
+      Patterns::Selection("none|J2"),
+      "none: the plate is elastic (the paper). J2: the metal-rich part "
+      "(V_m >= 1/2) is elastic-plastic, small-strain von Mises plasticity "
+      "with linear isotropic hardening, its yield strength graded by the "
+      "TTO rule (Metal yield strength, TTO q), the ceramic phase elastic; "
+      "needs Contact/Model = resolved sphere for an impact (a point force "
+      "has no converged stress under it).");
+    prm.declare_entry(
+      "Metal hardening modulus",
+      "3e8",
+      Patterns::Double(0., 1e12),
+      "Plasticity = J2: the metal's hardening modulus H_m = d sigma_y / d "
+      "eps_p (linear isotropic hardening), graded as the yield strength, "
+      "H_m Y(z)/Y_m. 0 = perfectly plastic. Default: 6061-T6, whose "
+      "true stress rises from 275 to about 310 MPa over 12 % plastic "
+      "strain. Unit: Pa.");
     prm.leave_subsection();
   }
 
@@ -50,6 +69,9 @@ namespace fgimpact
     metal_yield_strength     = prm.get_double("Metal yield strength");
     ceramic_tensile_strength = prm.get_double("Ceramic tensile strength");
     tto_q                    = prm.get_double("TTO q");
+    plasticity =
+      (prm.get("Plasticity") == "J2" ? Plasticity::j2 : Plasticity::none);
+    metal_hardening_modulus = prm.get_double("Metal hardening modulus");
     prm.leave_subsection();
   }
 
@@ -80,6 +102,17 @@ namespace fgimpact
     const auto  &p  = material.get_parameters();
     const double Em = p.metal_youngs_modulus, Ec = p.ceramic_youngs_modulus;
     return Ym * (Vm + (q + Em) / (q + Ec) * Ec / Em * (1. - Vm));
+  }
+
+
+
+  double
+  GradedStrength::hardening_modulus(const double z) const
+  {
+    const double Ym = parameters.metal_yield_strength;
+    return Ym > 0. ?
+             parameters.metal_hardening_modulus * yield_strength(z) / Ym :
+             0.;
   }
 
 

@@ -103,4 +103,18 @@ namespace fgimpact
     plate.sigma_mid = mid_probe.stress(u);
     return plate;
   }
+
+
+  const std::vector<HistoryColumn> &
+  plasticity_columns()
+  {
+    static const std::vector<HistoryColumn> columns = {
+      {"energy_plastic_J",
+       9,
+       [](const HistorySample &s) { return s.E_plastic; }},
+      {"max_plastic_strain", 6, [](const HistorySample &s) {
+         return s.max_plastic_strain;
+       }}};
+    return columns;
+  }
 } // namespace fgimpact

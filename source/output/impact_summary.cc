@@ -133,14 +133,30 @@ namespace fgimpact
     char text[300];
     if (std::isfinite(r.yield_peak.ratio))
       {
-        std::snprintf(text,
-                      sizeof(text),
-                      "elastic metal (von Mises %.2f x the yield strength%s)",
-                      r.yield_peak.ratio,
-                      r.yield_peak.ratio > 1. ?
-                        ": plasticity is not modelled yet" :
-                        "");
-        add(r.yield_peak.ratio > 1. ? breaks : holds, text);
+        if (r.plastic.modelled)
+          {
+            // The check's stress is Hooke's of the total strain: what an
+            // elastic metal would carry.
+            std::snprintf(text,
+                          sizeof(text),
+                          "plastic metal modelled (J2; the elastic stress "
+                          "would be %.2f x the yield strength)",
+                          r.yield_peak.ratio);
+            add(holds, text);
+          }
+        else
+          {
+            std::snprintf(text,
+                          sizeof(text),
+                          "elastic metal (von Mises %.2f x the yield "
+                          "strength%s)",
+                          r.yield_peak.ratio,
+                          r.yield_peak.ratio > 1. ?
+                            ": set Material/Plasticity = J2 with "
+                            "Contact/Model = resolved sphere" :
+                            "");
+            add(r.yield_peak.ratio > 1. ? breaks : holds, text);
+          }
       }
     if (std::isfinite(r.tension_peak.ratio))
       {
@@ -168,6 +184,12 @@ namespace fgimpact
     for (const auto &w : r.warnings)
       small_strains =
         small_strains && w.find("small-strain") == std::string::npos;
+    // Small-strain plasticity: J2 on infinitesimal strains holds to a few
+    // per cent of plastic strain.
+    constexpr double plastic_strain_limit = 0.05;
+    small_strains =
+      small_strains && !(r.plastic.modelled &&
+                         r.plastic.max_plastic_strain > plastic_strain_limit);
     add(small_strains ? holds : breaks, "small strains");
     // No commas: study.csv holds this text as it is.
     return "breaks: " + (breaks.empty() ? std::string("none") : breaks) +
@@ -396,6 +418,57 @@ namespace fgimpact
 
 
 
+    /// What a plastic plate leaves (PlasticityReport).
+    std::vector<SummaryKey>
+    plasticity_keys()
+    {
+      const auto W = SummaryKey::When::plasticity;
+      return {number(
+                "plastic_dissipation_J",
+                9,
+                [](const R &r) { return r.plastic.dissipation; },
+                W),
+              number(
+                "permanent_indentation_um",
+                5,
+                [](const R &r) {
+                  return r.plastic.permanent_indentation * 1e6;
+                },
+                W),
+              number(
+                "max_equivalent_plastic_strain",
+                6,
+                [](const R &r) { return r.plastic.max_plastic_strain; },
+                W),
+              number(
+                "first_yield_time_us",
+                4,
+                [](const R &r) { return r.plastic.first_yield_time * 1e6; },
+                W),
+              number(
+                "first_yield_contact_force_N",
+                4,
+                [](const R &r) { return r.plastic.first_yield_force; },
+                W),
+              number(
+                "coefficient_of_restitution",
+                6,
+                [](const R &r) { return r.plastic.restitution; },
+                W),
+              number(
+                "mean_plate_iterations",
+                3,
+                [](const R &r) { return r.plastic.mean_iterations; },
+                W),
+              number(
+                "max_plate_iterations",
+                0,
+                [](const R &r) { return double(r.plastic.max_iterations); },
+                W)};
+    }
+
+
+
     /// The problem's size, the solvers' effort, checks and timings.
     std::vector<SummaryKey>
     run_keys()
@@ -456,7 +529,8 @@ namespace fgimpact
     // In the file's order.
     static const std::vector<SummaryKey> keys = [] {
       std::vector<SummaryKey> all = model_keys();
-      for (const auto &group : {result_keys(), validity_keys(), run_keys()})
+      for (const auto &group :
+           {result_keys(), plasticity_keys(), validity_keys(), run_keys()})
         all.insert(all.end(), group.begin(), group.end());
       return all;
     }();
@@ -477,7 +551,9 @@ namespace fgimpact
     for (const SummaryKey &key : impact_summary_keys())
       {
         if ((key.when == SummaryKey::When::contact_area && !contact_area) ||
-            (key.when == SummaryKey::When::instrumentation && !instrumentation))
+            (key.when == SummaryKey::When::instrumentation &&
+             !instrumentation) ||
+            (key.when == SummaryKey::When::plasticity && !r.plastic.modelled))
           continue;
         if (key.text)
           out.add_text(key.name, key.text(r, context));

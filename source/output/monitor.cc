@@ -17,7 +17,8 @@ namespace fgimpact
                                const double            dt,
                                const unsigned int      n_steps,
                                ImpactResults          &results,
-                               SummaryFile            &summary)
+                               SummaryFile            &summary,
+                               const bool              plastic)
     : parameters(parameters)
     , plate(plate)
     , contact_model(contact)
@@ -47,6 +48,10 @@ namespace fgimpact
       columns.insert(columns.end(),
                      contact_area_columns().begin(),
                      contact_area_columns().end());
+    if (plastic)
+      columns.insert(columns.end(),
+                     plasticity_columns().begin(),
+                     plasticity_columns().end());
     auto history_writer = std::make_unique<HistoryWriter>(parameters.directory,
                                                           columns,
                                                           pcout.is_active());
@@ -79,16 +84,21 @@ namespace fgimpact
 
 
   void
-  ImpactMonitor::add_field_output(const Point<3> &impact_point,
-                                  const double    sphere_radius)
+  ImpactMonitor::add_field_output(const Point<3>     &impact_point,
+                                  const double        sphere_radius,
+                                  const PlasticPlate *plasticity)
   {
-    if (parameters.writes_vtu())
-      add(std::make_unique<FieldWriter>(plate,
-                                        parameters,
-                                        contact_model,
-                                        impact_point,
-                                        sphere_radius,
-                                        results_accumulator));
+    if (!parameters.writes_vtu())
+      return;
+    auto writer = std::make_unique<FieldWriter>(plate,
+                                                parameters,
+                                                contact_model,
+                                                impact_point,
+                                                sphere_radius,
+                                                results_accumulator);
+    if (plasticity)
+      writer->set_plasticity(*plasticity);
+    add(std::move(writer));
   }
 
 
@@ -142,9 +152,11 @@ namespace fgimpact
     PlateSample plate =
       probe_plate(mid_probe, top_probe, fields.displacement());
     // The energies from the condensed vectors: u^T K u is the same.
-    plate.E_kinetic         = stepper.kinetic_energy();
-    plate.E_strain          = stepper.strain_energy();
-    plate.linear_iterations = stepper.linear_iterations();
+    plate.E_kinetic          = stepper.kinetic_energy();
+    plate.E_strain           = stepper.strain_energy();
+    plate.E_plastic          = stepper.plastic_work();
+    plate.max_plastic_strain = stepper.max_plastic_strain();
+    plate.linear_iterations  = stepper.linear_iterations();
     record(step, t, plate, ball, part_contact, &fields);
   }
 
@@ -180,11 +192,13 @@ namespace fgimpact
     if (!contact_model.has_potential() && step > 0)
       contact_work +=
         0.5 * (last_force + whole_contact.force) * (approach - last_approach);
-    sample.E_contact = contact_model.has_potential() ?
-                         whole * contact_model.potential(part_contact) :
-                         contact_work;
-    sample.E_total =
-      sample.E_impactor + sample.E_kinetic + sample.E_strain + sample.E_contact;
+    sample.E_contact          = contact_model.has_potential() ?
+                                  whole * contact_model.potential(part_contact) :
+                                  contact_work;
+    sample.E_plastic          = whole * plate.E_plastic;
+    sample.max_plastic_strain = plate.max_plastic_strain;
+    sample.E_total = sample.E_impactor + sample.E_kinetic + sample.E_strain +
+                     sample.E_contact + sample.E_plastic;
     last_force    = whole_contact.force;
     last_approach = approach;
     return sample;

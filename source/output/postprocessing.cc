@@ -303,6 +303,10 @@ namespace fgimpact
     if (fields.cell_stress || fields.material)
       data_out.add_data_vector(u_ghosted, postprocessor);
     add_recovered_fields(data_out);
+    if (plastic)
+      data_out.add_data_vector(plastic_strain,
+                               "equivalent_plastic_strain",
+                               DataOut<3>::type_cell_data);
     if (!constant_field.first.empty())
       {
         constant.reinit(
@@ -371,6 +375,13 @@ namespace fgimpact
     // calls MPI_Allreduce, and MPI from two threads crashed 1 run in ~40.
     if (recovery)
       recovery->recover(u_ghosted);
+    if (plastic)
+      {
+        const Vector<float> cells = plastic->cell_plastic_strain();
+        plastic_strain.reinit(cells.size());
+        for (unsigned int c = 0; c < cells.size(); ++c)
+          plastic_strain[c] = cells[c];
+      }
 
     const MPI_Comm     comm    = plate.get_mpi_communicator();
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);

@@ -4,6 +4,7 @@
 #include <fgimpact/app/simulator.h>
 #include <fgimpact/contact/compliance.h>
 #include <fgimpact/output/impact_summary.h>
+#include <fgimpact/output/plasticity_report.h>
 #include <fgimpact/output/validity_report.h>
 #include <fgimpact/time/impact_driver.h>
 
@@ -140,8 +141,16 @@ namespace fgimpact
                                         message_of(e)));
       }
     results.factorization_time = factorization_timer.wall_time();
-    results.spmv_time          = stepper->costs().spmv;
-    results.solve_time         = stepper->costs().solve;
+    if (parameters.strength.plasticity == GradedStrength::Plasticity::j2)
+      {
+        strength   = std::make_unique<GradedStrength>(parameters.strength,
+                                                    plate.get_material());
+        plasticity = std::make_unique<PlasticPlate>(plate, *strength);
+        stepper->set_plasticity(*plasticity,
+                                parameters.time_integration.newton.tolerance);
+      }
+    results.spmv_time  = stepper->costs().spmv;
+    results.solve_time = stepper->costs().solve;
 
     // The ball and the contact, coupled to the plate.
     coupler =
@@ -361,15 +370,21 @@ namespace fgimpact
                                               dt,
                                               n_steps,
                                               results,
-                                              summary_file);
+                                              summary_file,
+                                              plasticity != nullptr);
     for (const auto &observer : observers)
       monitor->add_row_observer(observer);
-    monitor->add_field_output(scene.impact_point(), impactor.radius());
+    monitor->add_field_output(scene.impact_point(),
+                              impactor.radius(),
+                              plasticity.get());
     monitor->add(std::make_unique<ValidityMonitor>(
       plate,
       validity_setup(parameters, scene, *contact, results),
       results,
       pcout));
+    if (plasticity)
+      monitor->add(std::make_unique<PlasticityReport>(
+        *plasticity, results, 1. / scene.share(), impactor.initial_velocity()));
     monitor->start(resume);
     // Rank 0 alone has opened history.csv (and probes.csv): every rank
     // learns whether that worked before the first collective output.

@@ -222,11 +222,36 @@ namespace fgimpact
         return newmark.time_step();
       }
 
+      void
+      set_plasticity(PlasticPlate &plasticity, const double tolerance) override
+      {
+        plastic           = &plasticity;
+        plastic_tolerance = tolerance;
+      }
+
+      double
+      plastic_work() const override
+      {
+        return plastic ? plastic->plastic_work() : 0.;
+      }
+
+      double
+      max_plastic_strain() const override
+      {
+        return plastic ? plastic->max_equivalent_plastic_strain() : 0.;
+      }
+
       Vector<double>
       predict(const unsigned int  step,
               const double        t,
               const ContactState &previous) override
       {
+        if (plastic && step != increment)
+          {
+            plastic->begin_increment();
+            increment = step;
+          }
+        ++total_plate_iterations;
         solve_contact_free(step, t, previous);
         u_free = plate.dof_values(u_new, dofs);
         return u_free;
@@ -254,10 +279,16 @@ namespace fgimpact
               u_j -= contact_compliance(j, k) * contact.forces[k];
             work += contact.forces[j] * u_j;
           }
+        double plastic_energy = 0; // - u^T f_p + 1/2 eps_p : D : eps_p
+        if (plastic && !plastic_step_converged(contact, plastic_energy))
+          return false;
         mass->vmult(Mu_new, u_new);
-        // u^T K u from K_eff u = M r_n - sum lambda_j g_j - a0 M u.
-        strain =
-          0.5 * (u_new * rhs - work - newmark.mass_factor() * (u_new * Mu_new));
+        // u^T K u from K_eff u = M r_n + f_p - sum lambda_j g_j - a0 M u;
+        // with plastic strain, the elastic energy is 1/2 u^T K u - u^T f_p
+        // + 1/2 int eps_p : D : eps_p.
+        strain = 0.5 * (u_new * rhs - work -
+                        newmark.mass_factor() * (u_new * Mu_new)) +
+                 plastic_energy;
 
         newmark.update(u_new, u, v, a);
         newmark.update(Mu_new, Mu, Mv, Ma);
@@ -303,7 +334,7 @@ namespace fgimpact
       unit_response(const unsigned int      n_steps,
                     const ResponseObserver &observe) override
       {
-        if (dofs.size() != 1 || iterative)
+        if (dofs.size() != 1 || iterative || plastic)
           return false;
         const ContactState no_force;
         for (unsigned int step = 1; step <= n_steps; ++step)
@@ -352,6 +383,8 @@ namespace fgimpact
         TimeStepper::save(out);
         for (const auto *vector : {&a, &Mu, &Mv, &Ma})
           out.put(*vector);
+        if (plastic)
+          plastic->save(out);
       }
 
       void
@@ -360,6 +393,8 @@ namespace fgimpact
         TimeStepper::load(in);
         for (auto *vector : {&a, &Mu, &Mv, &Ma})
           in.get(*vector);
+        if (plastic)
+          plastic->load(in);
       }
 
       std::string
@@ -444,6 +479,8 @@ namespace fgimpact
                          const ContactState &contact)
       {
         newmark.predictor(Mu, Mv, Ma, rhs);
+        if (plastic)
+          rhs += plastic->plastic_force();
         if (iterative)
           {
             // Warm start: u* = u_{n+1} + sum lambda_j c_j with the explicit
@@ -469,6 +506,29 @@ namespace fgimpact
                                    "iterations or use a direct solver."));
           }
         last_linear_iterations = solver.last_iterations();
+      }
+
+      /**
+       * The plastic state at u_new, from the step's start: whether the
+       * plastic force has settled (its change at most the tolerance times
+       * the largest nodal force, contact or plastic).  If so, the state is
+       * committed and energy gets -u^T f_p + 1/2 int eps_p : D : eps_p of
+       * the force u_new was solved with; if not, the next predict() solves
+       * with the relaxed force.  Collective.
+       */
+      bool
+      plastic_step_converged(const ContactState &contact, double &energy)
+      {
+        energy       = -(u_new * plastic->plastic_force());
+        double scale = plastic->plastic_force().linfty_norm();
+        for (const double f : contact.forces)
+          scale = std::max(scale, std::abs(f));
+        const double change = plastic->update(u_new);
+        energy += plastic->eigenstrain_energy();
+        if (change > plastic_tolerance * scale)
+          return false;
+        plastic->commit();
+        return true;
       }
 
       /// Reference costs for the benchmarks (Output/Instrumentation).
@@ -509,7 +569,11 @@ namespace fgimpact
       std::vector<TrilinosWrappers::MPI::Vector> c;
       FullMatrix<double>                         contact_compliance;
       Vector<double>                             u_free; // m, contact DoFs
-      bool                                       iterative = false;
+      bool                                       iterative         = false;
+      PlasticPlate                              *plastic           = nullptr;
+      double                                     plastic_tolerance = 0;
+      /// The step whose increment the plastic state is in.
+      unsigned int increment = numbers::invalid_unsigned_int;
     };
   } // namespace
 

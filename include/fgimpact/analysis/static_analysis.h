@@ -6,10 +6,13 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/contact/resolved_contact.h>
 #include <fgimpact/output/postprocessing.h>
 #include <fgimpact/plate/linear_solver.h>
+#include <fgimpact/plate/plastic_plate.h>
 #include <fgimpact/plate/plate_model.h>
 
+#include <array>
 #include <limits>
 #include <string>
 #include <vector>
@@ -52,6 +55,9 @@ namespace fgimpact
       double pressure    = 1e6;  // q0, Pa
       double point_force = 1e3;  // P, N
       double indentation = 1e-5; // delta of Load = sphere, m
+      /// Load = sphere with plasticity: load steps to the indentation
+      /// (and as many back to none).
+      unsigned int load_steps = 20;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -75,6 +81,27 @@ namespace fgimpact
       double              max_pressure    = 0;
       unsigned int        n_contact_nodes = 0;
       std::vector<double> node_radius, node_pressure;
+
+      /// Load = sphere on a plastic plate (set_plasticity()): at the full
+      /// indentation the contact area (m^2, the whole plate's: the active
+      /// nodes' tributary areas) and after unloading the plate's thinning
+      /// under the load point, W_top - W_mid (m); first yield (N, between
+      /// the load steps whose largest trial stress crosses the yield
+      /// stress, linearly; NaN if none); the plastic work (J) and largest
+      /// equivalent plastic strain; per load step (indentation m, force N,
+      /// contact radius m of the contact area, largest equivalent plastic
+      /// strain) for load_curve.csv.
+      struct Plastic
+      {
+        bool   modelled              = false;
+        double contact_area          = 0;
+        double permanent_indentation = 0;
+        double first_yield_force     = std::numeric_limits<double>::quiet_NaN();
+        double dissipation           = 0;
+        double max_plastic_strain    = 0;
+        unsigned int                       iterations = 0;
+        std::vector<std::array<double, 4>> curve;
+      } plastic;
     };
 
 
@@ -83,6 +110,16 @@ namespace fgimpact
                    const PlateModel                        &plate,
                    const Point<2>                          &load_point,
                    const SphereIndenter &indenter = SphereIndenter());
+
+    /// Material/Plasticity = J2 (Load = sphere): load and unload in
+    /// Parameters::load_steps steps each, every step iterated to a plastic
+    /// force settled to `tolerance` of the largest nodal force.
+    void
+    set_plasticity(PlasticPlate &plasticity, const double tolerance)
+    {
+      plastic           = &plasticity;
+      plastic_tolerance = tolerance;
+    }
 
     /// Assemble the load and solve.
     void
@@ -119,6 +156,26 @@ namespace fgimpact
     void
     solve_indentation(EffectiveMatrixSolver &solver);
 
+    /// The same on a plastic plate: load steps up and down
+    /// (source/analysis/plastic_indentation.cc).
+    void
+    solve_plastic_indentation(EffectiveMatrixSolver &solver,
+                              ResolvedSphereContact &contact);
+
+    /// One load step of it at indentation delta (m): contact and plastic
+    /// force iterated together; grows the candidates if the contact
+    /// reaches their edge.  Returns the contact state.
+    ContactState
+    plastic_load_step(EffectiveMatrixSolver &solver,
+                      ResolvedSphereContact &contact,
+                      FullMatrix<double>    &C,
+                      const double           delta,
+                      const unsigned int     step);
+
+    /// load_curve.csv of a plastic indentation.
+    void
+    write_load_curve(const std::string &file_name) const;
+
     const Parameters                        parameters;
     const EffectiveMatrixSolver::Parameters solver_parameters;
     const PlateModel                       &plate;
@@ -126,6 +183,8 @@ namespace fgimpact
     const SphereIndenter                    indenter;
     TrilinosWrappers::MPI::Vector           u;
     Results                                 results;
+    PlasticPlate                           *plastic           = nullptr;
+    double                                  plastic_tolerance = 1e-3;
   };
 } // namespace fgimpact
 

@@ -43,14 +43,16 @@ namespace fgimpact
   public:
     /// lambda, mu: Lame's constants (Pa); Y: initial yield stress (Pa,
     /// infinite: elastic); H: hardening modulus (Pa, 0: perfectly
-    /// plastic).
+    /// plastic).  Without with_tangent, `tangent` is left zero (the
+    /// initial-stiffness iteration needs the stress only).
     static PlasticUpdate
     update(const double                 lambda,
            const double                 mu,
            const double                 Y,
            const double                 H,
            const SymmetricTensor<2, 3> &strain,
-           const PlasticState          &old_state);
+           const PlasticState          &old_state,
+           const bool                   with_tangent = true);
   };
 } // namespace fgimpact
 

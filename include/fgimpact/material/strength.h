@@ -52,11 +52,20 @@ namespace fgimpact
   class GradedStrength
   {
   public:
+    /// Material/Plasticity.
+    enum class Plasticity
+    {
+      none, // the paper: elastic
+      j2    // the metal-rich part: J2 with the TTO strengths
+    };
+
     struct Parameters
     {
-      double metal_yield_strength     = 275e6;
-      double ceramic_tensile_strength = 260e6;
-      double tto_q                    = 4.5e9;
+      Plasticity plasticity               = Plasticity::none;
+      double     metal_hardening_modulus  = 0.; // Pa
+      double     metal_yield_strength     = 275e6;
+      double     ceramic_tensile_strength = 260e6;
+      double     tto_q                    = 4.5e9;
 
       /// The entries, in the Material subsection.
       static void
@@ -75,6 +84,11 @@ namespace fgimpact
     /// Y(V_m(z)) of the TTO rule (Pa); 0 if the check is off.
     double
     yield_strength(const double z) const;
+
+    /// The hardening modulus H(z) of Plasticity = J2 (Pa): the metal's
+    /// H_m scaled as the yield strength, H_m Y(z) / Y_m.
+    double
+    hardening_modulus(const double z) const;
 
     /// S_t(V_m(z)) (Pa); 0 if the check is off.
     double

@@ -84,7 +84,8 @@ namespace fgimpact
     {
       always,
       contact_area,
-      instrumentation
+      instrumentation,
+      plasticity // Material/Plasticity = J2
     };
     const char *name                            = "";
     int         decimals                        = 0;

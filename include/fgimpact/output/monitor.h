@@ -82,7 +82,9 @@ namespace fgimpact
     double                W_mid = 0, W_top = 0;        // m, positive down
     SymmetricTensor<2, 3> sigma_mid;                   // Pa
     double                E_kinetic = 0, E_strain = 0; // J
-    unsigned int          linear_iterations = 0;
+    /// The plastic work (J) and largest equivalent plastic strain.
+    double       E_plastic = 0, max_plastic_strain = 0;
+    unsigned int linear_iterations = 0;
   };
 
   /// Where history.csv's probes are (m): the mid-plane and the top-face
@@ -127,7 +129,8 @@ namespace fgimpact
                   const double            dt,
                   const unsigned int      n_steps,
                   ImpactResults          &results,
-                  SummaryFile            &summary);
+                  SummaryFile            &summary,
+                  const bool              plastic = false);
 
     /// Receive every history row (the CSV's columns and units, before
     /// rounding) on every rank.
@@ -142,7 +145,9 @@ namespace fgimpact
     /// (a sphere of the given radius, m, first touching the top face at
     /// impact_point) and the contact nodes (FieldWriter).
     void
-    add_field_output(const Point<3> &impact_point, const double sphere_radius);
+    add_field_output(const Point<3>     &impact_point,
+                     const double        sphere_radius,
+                     const PlasticPlate *plasticity = nullptr);
 
     /**
      * A resumed run: every postprocessor loads its section of `resume`

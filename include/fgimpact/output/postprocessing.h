@@ -9,6 +9,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 
+#include <fgimpact/plate/plastic_plate.h>
 #include <fgimpact/plate/plate_model.h>
 #include <fgimpact/plate/stress_recovery.h>
 
@@ -113,6 +114,14 @@ namespace fgimpact
   class VtuWriter
   {
   public:
+    /// Material/Plasticity = J2: the cell field equivalent_plastic_strain
+    /// (the largest of each cell's Gauss points) in every snapshot.
+    void
+    set_plasticity(const PlasticPlate &plasticity)
+    {
+      plastic = &plasticity;
+    }
+
     VtuWriter(const PlateModel                                 &plate,
               const std::string                                &directory,
               const DataOutBase::VtkFlags::ZlibCompressionLevel compression =
@@ -238,6 +247,9 @@ namespace fgimpact
     bool                                        any_written = false;
 
     const DataOutBase::VtkFlags::ZlibCompressionLevel compression;
+    const PlasticPlate                               *plastic = nullptr;
+    /// Its cell values at the snapshot being written.
+    Vector<double> plastic_strain;
   };
 } // namespace fgimpact
 

@@ -28,6 +28,9 @@ namespace fgimpact
     SymmetricTensor<2, 3> sigma_mid;            // Pa
     double E_impactor = 0, E_kinetic = 0, E_strain = 0, E_contact = 0; // J
     double E_total = 0;                                                // J
+    /// A plastic plate: the plastic work (J, in E_total) and the largest
+    /// equivalent plastic strain.
+    double E_plastic = 0, max_plastic_strain = 0;
   };
 
   /// One column of history.csv: name (with unit), decimals, and the value
@@ -48,6 +51,11 @@ namespace fgimpact
   /// contact_radius_mm, max_contact_pressure_MPa, n_contact_nodes.
   const std::vector<HistoryColumn> &
   contact_area_columns();
+
+  /// The columns a plastic plate adds (Material/Plasticity = J2):
+  /// energy_plastic_J, max_plastic_strain.
+  const std::vector<HistoryColumn> &
+  plasticity_columns();
 
 
 

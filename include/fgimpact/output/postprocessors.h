@@ -227,6 +227,13 @@ namespace fgimpact
   class FieldWriter : public Postprocessor
   {
   public:
+    /// The plastic plate's equivalent_plastic_strain in the snapshots.
+    void
+    set_plasticity(const PlasticPlate &plasticity)
+    {
+      vtu->set_plasticity(plasticity);
+    }
+
     /// impact_point: where the ball first touches the top face; radius:
     /// the ball's (m).
     /// results: for the snapshot at the peak force (nullptr: none).

@@ -96,6 +96,22 @@ namespace fgimpact
     /// Whether the stress fields were scanned (false for the study's
     /// convolution engine, which has none: only Hertz's closed form).
     bool stress_fields_checked = false;
+
+    /// Material/Plasticity = J2 (PlasticityReport): the whole plate's
+    /// values; first yield NaN if the plate stayed elastic.
+    struct Plastic
+    {
+      bool   modelled              = false;
+      double dissipation           = 0; // J, the plastic work
+      double permanent_indentation = 0; // m, W_top - W_mid at the end
+      double max_plastic_strain    = 0; // equivalent plastic strain
+      double first_yield_time  = std::numeric_limits<double>::quiet_NaN(); // s
+      double first_yield_force = std::numeric_limits<double>::quiet_NaN(); // N
+      double restitution       = std::numeric_limits<double>::quiet_NaN();
+      /// The plate's iterations per step: mean and largest.
+      double       mean_iterations = 0;
+      unsigned int max_iterations  = 0;
+    } plastic;
   };
 } // namespace fgimpact
 

@@ -164,8 +164,12 @@ namespace fgimpact
     HertzContactLaw    contact_law;
     ImpactResults      results;
 
-    std::unique_ptr<ContactModel>           contact;
-    std::unique_ptr<TimeStepper>            stepper;
+    std::unique_ptr<ContactModel> contact;
+    std::unique_ptr<TimeStepper>  stepper;
+    /// Material/Plasticity = J2: the graded strengths and the plate's
+    /// plastic state, which the stepper iterates on.
+    std::unique_ptr<GradedStrength>         strength;
+    std::unique_ptr<PlasticPlate>           plasticity;
     std::unique_ptr<ContactCoupler>         coupler;
     std::unique_ptr<ImpactMonitor>          monitor;
     std::vector<ImpactMonitor::RowObserver> observers;

@@ -9,6 +9,7 @@
 #include <fgimpact/contact/contact_model.h>
 #include <fgimpact/output/checkpoint.h>
 #include <fgimpact/plate/linear_solver.h>
+#include <fgimpact/plate/plastic_plate.h>
 #include <fgimpact/plate/plate_model.h>
 #include <fgimpact/time/newmark.h>
 #include <fgimpact/time/plate_response.h>
@@ -50,8 +51,8 @@ namespace fgimpact
     /// beta and gamma) and "Newton" (the contact iteration).
     struct Parameters
     {
-      Scheme                        scheme        = Scheme::implicit_newmark;
-      double                        time_step     = 1e-6;   // s, 0: auto
+      Scheme scheme    = Scheme::implicit_newmark;
+      double time_step = 1e-6; // s, 0: auto
       /// End time = auto: the run stops when the ball has left for good
       /// (AutoEndTime), at the latest at end_time = Maximum end time.
       bool                          auto_end_time = true;
@@ -154,6 +155,46 @@ namespace fgimpact
       return strain;
     }
 
+    /**
+     * Material/Plasticity = J2: the plate's plastic state, which the step
+     * iterates on (initial stiffness: the elastic factorization and
+     * compliance serve every iteration) until the plastic force changes by
+     * less than `tolerance` times the largest nodal force (contact or
+     * plastic).  The stepper keeps the reference.  Only the implicit
+     * scheme iterates.
+     */
+    virtual void
+    set_plasticity(PlasticPlate &plasticity, const double tolerance)
+    {
+      (void)plasticity;
+      (void)tolerance;
+      AssertThrow(false,
+                  ExcMessage("Material/Plasticity = J2 needs Time "
+                             "integration/Scheme = implicit."));
+    }
+
+    /// The plastic work done on the plate so far (J, the part modelled).
+    virtual double
+    plastic_work() const
+    {
+      return 0.;
+    }
+
+    /// The largest equivalent plastic strain so far (0 if elastic).
+    virtual double
+    max_plastic_strain() const
+    {
+      return 0.;
+    }
+
+    /// Plate iterations (initial-stiffness) summed over the run: one per
+    /// step for an elastic plate.
+    unsigned long long
+    plate_iterations() const
+    {
+      return total_plate_iterations;
+    }
+
     /// Iterations of the linear solver in the last step (0 if direct).
     unsigned int
     linear_iterations() const
@@ -197,6 +238,7 @@ namespace fgimpact
     TrilinosWrappers::MPI::Vector u, v, a;
     double                        kinetic = 0, strain = 0;
     unsigned int                  last_linear_iterations = 0;
+    unsigned long long            total_plate_iterations = 0;
     Costs                         measured_costs;
   };
 

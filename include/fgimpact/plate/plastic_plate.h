@@ -1,0 +1,205 @@
+#ifndef fgimpact_plastic_plate_h
+#define fgimpact_plastic_plate_h
+
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <fgimpact/material/plasticity.h>
+#include <fgimpact/material/strength.h>
+#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/plate/plate_model.h>
+
+#include <Epetra_Import.h>
+#include <memory>
+#include <vector>
+
+namespace fgimpact
+{
+  using namespace dealii;
+
+  /**
+   * The plastic state of the plate's metal-rich part at the Gauss points
+   * (Material/Plasticity = J2): J2Plasticity with the TTO-graded yield
+   * strength and hardening of GradedStrength; the ceramic-rich part
+   * (V_m < 1/2) stays elastic.
+   *
+   * The plate's linear solvers keep the elastic matrix: the plastic strain
+   * enters as the load f_p = int B^T D eps_p (N, an eigenstrain), so that
+   *
+   *   K u = f_ext + f_p(u)
+   *
+   * is solved by the initial-stiffness iteration: solve with f_p fixed,
+   * update() the return map from the committed state at the new u, and
+   * solve again with the new f_p until it stops changing.  Aitken's
+   * relaxation (Irons & Tuck 1969) accelerates the iteration, which
+   * converges slowly for a perfectly plastic zone.  The elastic
+   * factorization and the contact compliance serve every iteration.
+   *
+   * Every cell is a brick (as for PropertyInterpolator): the shape
+   * gradients at the Gauss points depend only on the cell's extents.
+   * Cells whose elastic trial stress cannot reach the yield strength (a
+   * bound from the spread of their nodal displacements) and that hold no
+   * plastic strain are skipped.
+   */
+  class PlasticPlate
+  {
+  public:
+    PlasticPlate(const PlateModel &plate, const GradedStrength &strength);
+
+    /// Start an increment (a time step or a load step): the relaxation
+    /// starts afresh from the committed plastic force.
+    void
+    begin_increment();
+
+    /**
+     * The return map at every point for the displacement u (m; condensed,
+     * locally owned: the constraints are distributed here), from the
+     * committed state.  The next plastic_force() is the relaxed update of
+     * the one u was computed with.  Returns the change |f_p(u) - f_p|_inf
+     * (N), the iteration's residual.  Collective.
+     */
+    double
+    update(const TrilinosWrappers::MPI::Vector &u);
+
+    /// The plastic force f_p (N, condensed) to solve with next.
+    const TrilinosWrappers::MPI::Vector &
+    plastic_force() const
+    {
+      return force;
+    }
+
+    /// Accept the last update() as the end of the increment.  Collective.
+    void
+    commit();
+
+    /// The plastic work done so far (J, the part modelled; the hardening
+    /// energy included), up to the last commit().
+    double
+    plastic_work() const
+    {
+      return work;
+    }
+
+    /// 1/2 int eps_p : D : eps_p (J, the part) of the last update(): the
+    /// elastic strain energy is 1/2 u^T K u - u^T f_p + this.
+    double
+    eigenstrain_energy() const
+    {
+      return trial_eigenstrain_energy;
+    }
+
+    /// The largest equivalent plastic strain committed, over all ranks.
+    double
+    max_equivalent_plastic_strain() const
+    {
+      return max_plastic_strain;
+    }
+
+    /// The largest von Mises stress over the yield stress of the elastic
+    /// trial state of the last update(), over all ranks (above 1: the
+    /// increment yields; its first crossing gives first yield).
+    double
+    max_trial_ratio() const
+    {
+      return trial_ratio;
+    }
+
+    /// Iterations (update() calls) over all increments committed, and the
+    /// most in one increment.
+    unsigned long long
+    n_iterations() const
+    {
+      return total_iterations;
+    }
+    unsigned int
+    max_increment_iterations() const
+    {
+      return max_iterations;
+    }
+
+    /// The equivalent plastic strain per active cell (the largest of its
+    /// Gauss points; 0 where elastic or not locally owned), indexed by
+    /// active_cell_index(), for the VTU output.
+    Vector<float>
+    cell_plastic_strain() const;
+
+    /// The committed state (this rank's points) and the work.
+    void
+    save(CheckpointWriter &out) const;
+    void
+    load(CheckpointReader &in);
+
+  private:
+    void
+    setup();
+
+    /// Whether cell c (its displacements cell_u, [s * 3 + component])
+    /// holds no point whose trial stress can reach half its yield stress.
+    bool
+    can_skip(const unsigned int c, const std::vector<double> &cell_u) const;
+
+    /// One cell's return map at its points: the trial states, its plastic
+    /// force [s * 3 + component] (N), eigenstrain energy (J), largest trial
+    /// ratio, and whether any point is plastic.
+    struct CellResult
+    {
+      std::vector<double> force;
+      double              energy = 0, ratio = 0;
+      bool                plastic = false;
+    };
+    void
+    evaluate_cell(const unsigned int         c,
+                  const std::vector<double> &cell_u,
+                  CellResult                &result);
+
+    /// The relaxation of the new force: Aitken's factor from the last two
+    /// residuals.
+    void
+    relax();
+
+    const PlateModel     &plate;
+    const GradedStrength &strength;
+    unsigned int          n_points = 0, n_dofs = 0;
+    /// Per extent: shape gradients at the Gauss points
+    /// [(q * n_scalar + s) * 3 + d], and the bound
+    /// max_q |(sum_s |dN_s/dx_d|)_d| of |grad u| per nodal spread.
+    std::vector<std::vector<double>> gradients;
+    std::vector<double>              gradient_bound;
+    /// Per extent: the cell mean of each shape gradient [s * 3 + d] and
+    /// the support points from the centre, x_s - x_c (m).
+    std::vector<std::vector<double>> mean_gradients, offsets;
+    std::vector<double>              weights; // JxW per point (m^3)
+    /// Per cell (metal-rich only): its table, DoFs (global, in the
+    /// element's order), their local indices in the ghosted vector in the
+    /// order [s * 3 + component], its active index, and
+    /// min_q sigma_y / (sqrt 6 mu) (m/m: the skip bound).
+    std::vector<unsigned int>            table;
+    std::vector<types::global_dof_index> dofs;
+    std::vector<int>                     local_index;
+    std::vector<unsigned int>            active_index;
+    std::vector<double>                  skip_strain;
+    /// Per point: Lame's constants, yield strength, hardening (Pa).
+    std::vector<double> lambda, mu, yield, hardening;
+    /// Per point: the committed and the trial state; per cell: whether
+    /// any point of it is plastic (committed).
+    std::vector<PlasticState> committed, trial;
+    std::vector<double>       trial_work; // J/m^3 times the point's volume
+    std::vector<bool>         plastic_cell;
+
+    TrilinosWrappers::MPI::Vector  u_distributed, u_ghosted;
+    std::unique_ptr<Epetra_Import> importer;
+    /// f_p to solve with, the last update's unrelaxed f_p(u), the last
+    /// residual (for Aitken), the committed f_p.
+    TrilinosWrappers::MPI::Vector force, new_force, residual, last_residual,
+      committed_force;
+    double omega           = 1; // Aitken's relaxation factor
+    bool   first_iteration = true;
+
+    double work = 0, trial_eigenstrain_energy = 0, max_plastic_strain = 0,
+           trial_ratio                  = 0;
+    unsigned long long total_iterations = 0;
+    unsigned int       iterations = 0, max_iterations = 0;
+  };
+} // namespace fgimpact
+
+#endif

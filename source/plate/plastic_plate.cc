@@ -1,0 +1,447 @@
+// The plastic state of the plate at its Gauss points (plastic_plate.h).
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <fgimpact/material/constitutive_law.h>
+#include <fgimpact/plate/plastic_plate.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace fgimpact
+{
+  PlasticPlate::PlasticPlate(const PlateModel     &plate,
+                             const GradedStrength &strength)
+    : plate(plate)
+    , strength(strength)
+  {
+    u_ghosted.reinit(plate.locally_owned_dofs(),
+                     plate.locally_relevant_dofs(),
+                     plate.get_mpi_communicator());
+    for (auto *v : {&u_distributed,
+                    &force,
+                    &new_force,
+                    &residual,
+                    &last_residual,
+                    &committed_force})
+      plate.initialize_vector(*v);
+    setup();
+  }
+
+
+
+  void
+  PlasticPlate::setup()
+  {
+    const auto                &fe        = plate.get_fe();
+    const FiniteElement<3>    &scalar_fe = fe.base_element(0);
+    const QGauss<3>            quadrature(fe.degree + 1);
+    FEValues<3>                fe_values(plate.get_mapping(),
+                          fe,
+                          quadrature,
+                          update_gradients | update_quadrature_points |
+                            update_JxW_values);
+    const PropertyInterpolator properties(scalar_fe,
+                                          quadrature.get_points(),
+                                          plate.get_material());
+    n_dofs                      = fe.n_dofs_per_cell();
+    n_points                    = quadrature.size();
+    const unsigned int n_scalar = scalar_fe.n_dofs_per_cell();
+
+    const auto &map = u_ghosted.trilinos_vector().Map();
+    std::map<std::array<double, 3>, unsigned int> tables;
+    std::vector<types::global_dof_index>          cell_dofs(n_dofs);
+    std::vector<double>                           E, nu, rho;
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          bool any_metal = false;
+          for (unsigned int q = 0; q < n_points; ++q)
+            any_metal = any_metal ||
+                        strength.metal_rich(fe_values.quadrature_point(q)[2]);
+          if (!any_metal)
+            continue;
+          const std::array<double, 3> extent = {{cell->extent_in_direction(0),
+                                                 cell->extent_in_direction(1),
+                                                 cell->extent_in_direction(2)}};
+          const auto [it, added] = tables.emplace(extent, gradients.size());
+          if (added)
+            {
+              gradients.emplace_back(n_points * n_scalar * 3);
+              gradient_bound.push_back(0.);
+              mean_gradients.emplace_back(n_scalar * 3, 0.);
+              offsets.emplace_back(n_scalar * 3);
+              for (unsigned int s = 0; s < n_scalar; ++s)
+                for (unsigned int d = 0; d < 3; ++d)
+                  offsets.back()[s * 3 + d] =
+                    (scalar_fe.unit_support_point(s)[d] - 0.5) * extent[d];
+            }
+          cell->get_dof_indices(cell_dofs);
+          dofs.insert(dofs.end(), cell_dofs.begin(), cell_dofs.end());
+          const std::size_t first = local_index.size();
+          local_index.resize(first + n_dofs);
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              const auto [c, s]              = fe.system_to_component_index(i);
+              local_index[first + s * 3 + c] = map.LID(
+                static_cast<TrilinosWrappers::types::int_type>(cell_dofs[i]));
+              if (added)
+                for (unsigned int q = 0; q < n_points; ++q)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    {
+                      const double g =
+                        fe_values.shape_grad_component(i, q, c)[d];
+                      gradients.back()[(q * n_scalar + s) * 3 + d] = g;
+                      if (c == 0)
+                        mean_gradients.back()[s * 3 + d] +=
+                          quadrature.weight(q) * g;
+                    }
+            }
+          table.push_back(it->second);
+          active_index.push_back(cell->active_cell_index());
+          properties.values(cell, E, nu, rho);
+          double skip = std::numeric_limits<double>::max();
+          for (unsigned int q = 0; q < n_points; ++q)
+            {
+              const double z = fe_values.quadrature_point(q)[2];
+              lambda.push_back(HookeLaw::lambda(E[q], nu[q]));
+              mu.push_back(HookeLaw::mu(E[q], nu[q]));
+              // The ceramic-rich points stay elastic.
+              const bool plastic = strength.metal_rich(z);
+              yield.push_back(plastic ?
+                                strength.yield_strength(z) :
+                                std::numeric_limits<double>::infinity());
+              hardening.push_back(plastic ? strength.hardening_modulus(z) : 0.);
+              weights.push_back(fe_values.JxW(q));
+              // von Mises = sqrt(3/2) 2 mu |dev eps| <= sqrt(6) mu |grad u|.
+              skip = std::min(skip, yield.back() / (std::sqrt(6.) * mu.back()));
+            }
+          skip_strain.push_back(skip);
+        }
+    for (unsigned int t = 0; t < gradients.size(); ++t)
+      for (unsigned int q = 0; q < n_points; ++q)
+        {
+          double A[3] = {};
+          for (unsigned int s = 0; s < n_scalar; ++s)
+            for (unsigned int d = 0; d < 3; ++d)
+              A[d] += std::abs(gradients[t][(q * n_scalar + s) * 3 + d]);
+          gradient_bound[t] =
+            std::max(gradient_bound[t],
+                     std::sqrt(A[0] * A[0] + A[1] * A[1] + A[2] * A[2]));
+        }
+    committed.resize(yield.size());
+    trial.resize(yield.size());
+    trial_work.assign(yield.size(), 0.);
+    plastic_cell.assign(table.size(), false);
+  }
+
+
+
+  void
+  PlasticPlate::begin_increment()
+  {
+    force           = committed_force;
+    omega           = 1.;
+    first_iteration = true;
+    iterations      = 0;
+  }
+
+
+
+  double
+  PlasticPlate::update(const TrilinosWrappers::MPI::Vector &u)
+  {
+    ++iterations;
+    u_distributed = u;
+    plate.get_constraints().distribute(u_distributed);
+    if (!importer)
+      importer =
+        std::make_unique<Epetra_Import>(u_ghosted.trilinos_vector().Map(),
+                                        u.trilinos_vector().Map());
+    const int error =
+      u_ghosted.trilinos_vector().Import(u_distributed.trilinos_vector(),
+                                         *importer,
+                                         Insert);
+    AssertThrow(error == 0, ExcTrilinosError(error));
+    const double *const values = u_ghosted.trilinos_vector()[0];
+
+    new_force = 0.;
+    CellResult                           cell;
+    std::vector<double>                  cell_u(n_dofs);
+    std::vector<types::global_dof_index> cell_dofs(n_dofs);
+    Vector<double>                       element_f(n_dofs);
+    double                               energy = 0, ratio = 0;
+    for (unsigned int c = 0; c < table.size(); ++c)
+      {
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          cell_u[i] = values[local_index[c * n_dofs + i]];
+        if (!plastic_cell[c] && can_skip(c, cell_u))
+          {
+            for (unsigned int q = 0; q < n_points; ++q)
+              {
+                trial[c * n_points + q]      = PlasticState();
+                trial_work[c * n_points + q] = 0;
+              }
+            continue;
+          }
+        evaluate_cell(c, cell_u, cell);
+        energy += cell.energy;
+        ratio = std::max(ratio, cell.ratio);
+        if (!cell.plastic)
+          continue;
+        // Back to the element's DoF order.
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            const auto [a, s] = plate.get_fe().system_to_component_index(i);
+            element_f[i]      = cell.force[3 * s + a];
+            cell_dofs[i]      = dofs[c * n_dofs + i];
+          }
+        plate.get_constraints().distribute_local_to_global(element_f,
+                                                           cell_dofs,
+                                                           new_force);
+      }
+    new_force.compress(VectorOperation::add);
+    const MPI_Comm comm      = plate.get_mpi_communicator();
+    trial_eigenstrain_energy = Utilities::MPI::sum(energy, comm);
+    trial_ratio              = Utilities::MPI::max(ratio, comm);
+
+    residual = new_force;
+    residual -= force;
+    const double change = residual.linfty_norm();
+    relax();
+    return change;
+  }
+
+
+
+  bool
+  PlasticPlate::can_skip(const unsigned int         c,
+                         const std::vector<double> &cell_u) const
+  {
+    // grad u(q) = G + sum_s r_s (x) grad N_s(q) for any matrix G, with
+    // r_s = u_s - mean u - G (x_s - x_c) (the element reproduces affine
+    // fields).  G = the cell's mean gradient takes out the rigid motion
+    // and the mean strain, so |dev eps(q)| <= |dev sym G| + max_s |r_s|
+    // gradient_bound, and von Mises <= sqrt(6) mu |dev eps|.
+    const unsigned int  n_scalar = n_dofs / 3;
+    const unsigned int  t        = table[c];
+    const double *const mean_g   = mean_gradients[t].data();
+    const double *const x        = offsets[t].data();
+    double              mean[3] = {}, G[3][3] = {};
+    for (unsigned int s = 0; s < n_scalar; ++s)
+      for (unsigned int a = 0; a < 3; ++a)
+        {
+          mean[a] += cell_u[3 * s + a] / n_scalar;
+          for (unsigned int d = 0; d < 3; ++d)
+            G[a][d] += cell_u[3 * s + a] * mean_g[3 * s + d];
+        }
+    double R2 = 0;
+    for (unsigned int s = 0; s < n_scalar; ++s)
+      {
+        double r2 = 0;
+        for (unsigned int a = 0; a < 3; ++a)
+          {
+            double r = cell_u[3 * s + a] - mean[a];
+            for (unsigned int d = 0; d < 3; ++d)
+              r -= G[a][d] * x[3 * s + d];
+            r2 += r * r;
+          }
+        R2 = std::max(R2, r2);
+      }
+    SymmetricTensor<2, 3> strain;
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int d = a; d < 3; ++d)
+        strain[a][d] = 0.5 * (G[a][d] + G[d][a]);
+    const double bound =
+      deviator(strain).norm() + std::sqrt(R2) * gradient_bound[t];
+    // Half the yield strain: max_trial_ratio() is then exact whenever it
+    // is above 1/2 (first yield is interpolated from it).
+    return bound < 0.5 * skip_strain[c];
+  }
+
+
+
+  void
+  PlasticPlate::evaluate_cell(const unsigned int         c,
+                              const std::vector<double> &cell_u,
+                              CellResult                &result)
+  {
+    const unsigned int  n_scalar = n_dofs / 3;
+    const double *const grad     = gradients[table[c]].data();
+    result.force.assign(n_dofs, 0.);
+    result.plastic = false;
+    result.energy = result.ratio = 0;
+    for (unsigned int q = 0; q < n_points; ++q)
+      {
+        const unsigned int    k = c * n_points + q;
+        SymmetricTensor<2, 3> strain;
+        for (unsigned int s = 0; s < n_scalar; ++s)
+          {
+            const double *const g  = grad + (q * n_scalar + s) * 3;
+            const double *const us = cell_u.data() + 3 * s;
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int d = a; d < 3; ++d)
+                strain[a][d] += 0.5 * (us[a] * g[d] + us[d] * g[a]);
+          }
+        const PlasticState &old    = committed[k];
+        const PlasticUpdate update = J2Plasticity::update(
+          lambda[k], mu[k], yield[k], hardening[k], strain, old, false);
+        trial[k]      = update.state;
+        trial_work[k] = update.plastic_work * weights[k];
+        const double sigma_y =
+          yield[k] + hardening[k] * old.equivalent_plastic_strain;
+        const double s_trial =
+          2. * mu[k] * deviator(strain - old.plastic_strain).norm();
+        result.ratio =
+          std::max(result.ratio, std::sqrt(1.5) * s_trial / sigma_y);
+        if (update.state.equivalent_plastic_strain == 0.)
+          continue;
+        result.plastic = true;
+        // f_p = int B^T sigma_p, sigma_p = 2 mu eps_p (tr eps_p = 0).
+        const SymmetricTensor<2, 3> &eps_p   = update.state.plastic_strain;
+        const SymmetricTensor<2, 3>  sigma_p = 2. * mu[k] * eps_p;
+        result.energy += 0.5 * (sigma_p * eps_p) * weights[k];
+        for (unsigned int s = 0; s < n_scalar; ++s)
+          {
+            const double *const g = grad + (q * n_scalar + s) * 3;
+            for (unsigned int a = 0; a < 3; ++a)
+              result.force[3 * s + a] +=
+                (sigma_p[a][0] * g[0] + sigma_p[a][1] * g[1] +
+                 sigma_p[a][2] * g[2]) *
+                weights[k];
+          }
+      }
+  }
+
+
+
+  void
+  PlasticPlate::relax()
+  {
+    // Aitken: omega_k = -omega_{k-1} r_{k-1}.(r_k - r_{k-1}) / |r_k -
+    // r_{k-1}|^2.  The initial-stiffness map contracts with real factors
+    // in [0, 1), so the factor over-relaxes (it grows as the map slows); it
+    // is kept within [1/2, 20].
+    if (!first_iteration)
+      {
+        last_residual -= residual; // d = r_{k-1} - r_k
+        const double d2 = last_residual.norm_sqr();
+        if (d2 > 0.)
+          {
+            // r_{k-1}.d = |d|^2 + r_k.d
+            const double r_dot = last_residual * residual;
+            omega = std::clamp(omega * (d2 + r_dot) / d2, 0.5, 20.);
+          }
+      }
+    first_iteration = false;
+    last_residual   = residual;
+    force.add(omega, residual);
+  }
+
+
+
+  void
+  PlasticPlate::commit()
+  {
+    double local_work = 0, local_max = 0;
+    for (unsigned int c = 0; c < table.size(); ++c)
+      {
+        bool plastic = false;
+        for (unsigned int q = 0; q < n_points; ++q)
+          {
+            const unsigned int k = c * n_points + q;
+            committed[k]         = trial[k];
+            local_work += trial_work[k];
+            local_max = std::max(local_max, trial[k].equivalent_plastic_strain);
+            plastic   = plastic || trial[k].equivalent_plastic_strain > 0.;
+          }
+        plastic_cell[c] = plastic;
+      }
+    const MPI_Comm comm = plate.get_mpi_communicator();
+    total_iterations += iterations;
+    max_iterations = std::max(max_iterations, iterations);
+    work += Utilities::MPI::sum(local_work, comm);
+    max_plastic_strain = Utilities::MPI::max(local_max, comm);
+    // The force of the accepted state, unrelaxed: the next increment
+    // starts from the committed plastic strain's own load.
+    committed_force = new_force;
+    force           = new_force;
+  }
+
+
+
+  Vector<float>
+  PlasticPlate::cell_plastic_strain() const
+  {
+    Vector<float> result(plate.n_active_cells());
+    for (unsigned int c = 0; c < table.size(); ++c)
+      for (unsigned int q = 0; q < n_points; ++q)
+        result[active_index[c]] = std::max<float>(
+          result[active_index[c]],
+          committed[c * n_points + q].equivalent_plastic_strain);
+    return result;
+  }
+
+
+
+  void
+  PlasticPlate::save(CheckpointWriter &out) const
+  {
+    std::vector<double> state;
+    state.reserve(7 * committed.size());
+    for (const auto &point : committed)
+      {
+        for (unsigned int i = 0;
+             i < SymmetricTensor<2, 3>::n_independent_components;
+             ++i)
+          state.push_back(point.plastic_strain.access_raw_entry(i));
+        state.push_back(point.equivalent_plastic_strain);
+      }
+    out.put(state);
+    out.put(committed_force);
+    out.put(work);
+    out.put(max_plastic_strain);
+    out.put(total_iterations);
+    out.put(max_iterations);
+  }
+
+
+
+  void
+  PlasticPlate::load(CheckpointReader &in)
+  {
+    std::vector<double> state;
+    in.get(state);
+    AssertThrow(state.size() == 7 * committed.size(),
+                ExcMessage("the checkpoint's plastic state does not match "
+                           "this mesh."));
+    for (unsigned int k = 0; k < committed.size(); ++k)
+      {
+        for (unsigned int i = 0; i < 6; ++i)
+          committed[k].plastic_strain.access_raw_entry(i) = state[7 * k + i];
+        committed[k].equivalent_plastic_strain = state[7 * k + 6];
+      }
+    trial = committed;
+    for (unsigned int c = 0; c < table.size(); ++c)
+      {
+        bool plastic = false;
+        for (unsigned int q = 0; q < n_points; ++q)
+          plastic = plastic ||
+                    committed[c * n_points + q].equivalent_plastic_strain > 0.;
+        plastic_cell[c] = plastic;
+      }
+    in.get(committed_force);
+    in.get(work);
+    in.get(max_plastic_strain);
+    in.get(total_iterations);
+    in.get(max_iterations);
+    force     = committed_force;
+    new_force = committed_force;
+  }
+} // namespace fgimpact
