@@ -5,9 +5,10 @@
 // line (except the provenance comments and the wall-clock timings), and
 // the PVD files identical.  Cases: Hertz node (implicit and explicit), a
 // resolved sphere whose candidate set grows during the run, and SIGTERM
-// (a checkpoint at the stop only).  Also: resume with a changed parameter,
-// on a different number of MPI ranks, or without a checkpoint is refused
-// with one line naming the cause, exit code 1, nothing changed.
+// (a checkpoint at the stop only), and a plastic plate (Material/
+// Plasticity = J2) with the resolved sphere.  Also: resume with a changed
+// parameter, on a different number of MPI ranks, or without a checkpoint is
+// refused with one line naming the cause, exit code 1, nothing changed.
 
 #include "checkpoint_resume.h"
 
@@ -241,6 +242,15 @@ main()
   ok = terminate_and_resume(small_plate + "subsection Time integration\n set "
                                           "End time = 800e-6\nend\n",
                             100 + random.next(200)) &&
+       ok;
+
+  // A plastic plate: the plastic state at the Gauss points is part of the
+  // state (and the first-yield bookkeeping of the summary).
+  ok = kill_and_resume("plastic",
+                       resolved +
+                         "subsection Material\n set Plasticity = J2\nend\n",
+                       1,
+                       random.kill_point(60)) &&
        ok;
 
   // Refusals, on the killed Hertz node run's directory.

@@ -63,6 +63,8 @@ main()
     written.push_back(c.name);
   for (const auto &c : fgimpact::contact_area_columns())
     written.push_back(c.name);
+  for (const auto &c : fgimpact::plasticity_columns())
+    written.push_back(c.name);
 
   bool same = documented == written;
   std::printf("history.csv: %zu columns written, %zu in README.md's table\n",

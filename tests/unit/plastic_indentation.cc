@@ -1,0 +1,174 @@
+// A rigid sphere (R = 15 mm) pressed into an elastic-perfectly plastic
+// block (E = 70 GPa, nu = 0.3, a quarter of 40 x 40 x 20 mm bonded to a
+// rigid base; Static/Load = sphere with Material/Plasticity = J2, 20 load
+// steps up and 20 down), against closed forms:
+//  1. First yield (Y = 2 GPa, so that the contact at first yield spans
+//     about 7 elements at level 5): Hertz's largest von Mises stress,
+//     0.620 p0 at depth 0.48 a for nu = 0.3 (the validity report's
+//     integration; Johnson, Contact Mechanics, section 6.2, rounds it to
+//     p0 = 1.60 Y), so that yield starts at p0 = Y / 0.620.  The program's
+//     first-yield force gives p0 = (6 F E*^2 / (pi^3 R^2))^{1/3}.
+//  2. The fully plastic indentation (Y = 100 MPa): Tabor's mean pressure
+//     F / (pi a^2) of about 2.8 to 3.0 Y (The Hardness of Metals, 1951),
+//     reached where E* a / (Y R) exceeds about 40 (Johnson, Fig. 6.15);
+//     the mean of the load steps with E* a / (Y R) >= 60 is compared.
+//  3. A yield strength no stress reaches (1e12 Pa): the plastic path
+//     (load steps, the iteration) gives the elastic solve's force.
+
+#include <deal.II/base/mpi.h>
+
+#include <fgimpact/analysis/static_analysis.h>
+#include <fgimpact/material/material.h>
+#include <fgimpact/material/strength.h>
+#include <fgimpact/output/validity_report.h>
+#include <fgimpact/plate/geometry.h>
+#include <fgimpact/plate/plastic_plate.h>
+#include <fgimpact/plate/plate_model.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+using namespace dealii;
+using namespace fgimpact;
+
+namespace
+{
+  const double E = 70e9, nu = 0.3, R = 0.015, delta = 100e-6;
+  const double E_star = E / (1 - nu * nu);
+
+  /// The indentation to delta with yield strength Y (Pa; 0: elastic, the
+  /// plain static solve).
+  StaticAnalysis::Results
+  indent(const double Y)
+  {
+    PlateGeometry::Parameters gp;
+    gp.length         = 0.04;
+    gp.width          = 0.04;
+    gp.thickness      = 0.02;
+    gp.subdivisions_x = 8;
+    gp.subdivisions_y = 8;
+    gp.subdivisions_z = 4;
+    gp.supports       = {{SideSupport::free,
+                          SideSupport::free,
+                          SideSupport::free,
+                          SideSupport::free}};
+    gp.bottom_support = SideSupport::clamped;
+    FunctionallyGradedMaterial::Parameters mp;
+    mp.metal_youngs_modulus = E;
+    mp.poissons_ratio       = nu;
+    mp.power_law_index      = 0; // pure metal
+    const PlateGeometry              geometry(gp, {{true, true}});
+    const FunctionallyGradedMaterial material(mp, gp.thickness);
+    PlateModel                       plate(PlateModel::Parameters(),
+                     geometry,
+                     material,
+                     MPI_COMM_WORLD);
+    LocalRefinement                  refinement;
+    refinement.centre = Point<3>(gp.length / 2, gp.width / 2, gp.thickness);
+    refinement.radius = 1.5 * std::sqrt(R * delta);
+    refinement.levels = 5;
+    plate.setup(refinement);
+
+    StaticAnalysis::Parameters sp;
+    sp.load        = StaticAnalysis::Load::sphere;
+    sp.indentation = delta;
+    sp.load_steps  = 20;
+    SphereIndenter indenter;
+    indenter.radius = R;
+    StaticAnalysis             analysis(sp,
+                            EffectiveMatrixSolver::Parameters(),
+                            plate,
+                            Point<2>(gp.length / 2, gp.width / 2),
+                            indenter);
+    GradedStrength::Parameters strength_parameters;
+    strength_parameters.plasticity           = GradedStrength::Plasticity::j2;
+    strength_parameters.metal_yield_strength = Y;
+    strength_parameters.metal_hardening_modulus = 0;
+    const GradedStrength          strength(strength_parameters, material);
+    std::unique_ptr<PlasticPlate> plasticity;
+    if (Y > 0)
+      {
+        plasticity = std::make_unique<PlasticPlate>(plate, strength);
+        analysis.set_plasticity(*plasticity, 1e-3);
+      }
+    analysis.solve();
+    return analysis.get_results();
+  }
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                             ok = true;
+
+  // 1. First yield.
+  {
+    const double Y = 2e9;
+    const auto   r = indent(Y);
+    const double F = r.plastic.first_yield_force;
+    const double p0 =
+      std::cbrt(6 * F * E_star * E_star / (std::pow(numbers::PI, 3) * R * R));
+    const double ratio = p0 / Y;
+    const double hertz = 1. / hertz_stress_peaks(nu).von_mises;
+    const double error = ratio / hertz - 1;
+    std::printf("first yield: force %.1f N, p0 = %.4f Y (Hertz with the "
+                "largest von Mises stress %.4f p0: p0 = %.4f Y; Johnson "
+                "1.60 Y), error %+.2f %% (limit 2 %%)\n",
+                F,
+                ratio,
+                1. / hertz,
+                hertz,
+                100 * error);
+    ok = ok && std::abs(error) < 0.02;
+  }
+
+  // 2. The fully plastic mean pressure.
+  {
+    const double Y   = 100e6;
+    const auto   r   = indent(Y);
+    double       sum = 0;
+    unsigned int n   = 0;
+    for (unsigned int k = 0; k < 20; ++k) // the loading steps
+      {
+        const double F = r.plastic.curve[k][1], a = r.plastic.curve[k][2];
+        if (E_star * a / (Y * R) >= 60)
+          {
+            sum += F / (numbers::PI * a * a) / Y;
+            ++n;
+          }
+      }
+    const double mean = sum / n;
+    std::printf("fully plastic: mean pressure F/(pi a^2) = %.3f Y over %u "
+                "load steps with E* a/(Y R) >= 60 (Tabor 2.8-3.0 Y); "
+                "crater %.2f um after unloading, plastic work %.5f J, "
+                "largest equivalent plastic strain %.4f\n",
+                mean,
+                n,
+                r.plastic.permanent_indentation * 1e6,
+                r.plastic.dissipation,
+                r.plastic.max_plastic_strain);
+    ok = ok && n >= 5 && mean >= 2.8 && mean <= 3.0;
+    // Unloaded, the plate keeps a crater and has done plastic work.
+    ok = ok && r.plastic.permanent_indentation > 0 && r.plastic.dissipation > 0;
+  }
+
+  // 3. The elastic limit of the plastic path.
+  {
+    const auto   elastic = indent(0);
+    const auto   stiff   = indent(1e12);
+    const double error =
+      std::abs(stiff.contact_force / elastic.contact_force - 1);
+    std::printf("yield strength 1e12 Pa: force %.4f N, elastic solve "
+                "%.4f N, difference %.1e (limit 1e-9); first yield %s\n",
+                stiff.contact_force,
+                elastic.contact_force,
+                error,
+                std::isnan(stiff.plastic.first_yield_force) ? "none" : "FOUND");
+    ok = ok && error < 1e-9 && std::isnan(stiff.plastic.first_yield_force);
+  }
+
+  std::printf("%s\n", ok ? "all checks passed" : "CHECK FAILED");
+  return ok ? 0 : 1;
+}
