@@ -431,6 +431,25 @@ namespace
        "3 of 6 rigid-body modes free (translation in x, rotation about the "
        "y axis through (0, 50, 10) mm, rotation about the z axis through "
        "(0, 50, 10) mm)"},
+      {"plasticity under a point force (hertz node)",
+       "subsection Material\n set Plasticity = J2\nend\n",
+       1,
+       "Material/Plasticity = J2 needs Contact/Model = resolved sphere"},
+      {"plasticity with yield strength 0",
+       "subsection Material\n set Plasticity = J2\n set Metal yield strength "
+       "= 0\nend\nsubsection Contact\n set Model = resolved sphere\nend\n",
+       1,
+       "Material/Metal yield strength"},
+      {"plasticity in a modal analysis",
+       "set Problem type = modal\nsubsection Material\n set Plasticity = "
+       "J2\nend\n",
+       1,
+       "Material/Plasticity = J2"},
+      {"plasticity under a uniform static pressure",
+       "set Problem type = static\nsubsection Static\n set Load = "
+       "uniform\nend\nsubsection Material\n set Plasticity = J2\nend\n",
+       1,
+       "Static/Load = sphere only"},
       {"resolved sphere on a coarse mesh without refinement",
        "subsection Contact\n set Model = resolved sphere\nend\n"
        "subsection Geometry\n set Subdivisions x = 8\n set Subdivisions y = 4\n"
