@@ -9,6 +9,8 @@
 //  - The same scene (150 us) with the impact point moved so that the contact
 //  node
 //    is owned by rank 0 instead of rank 1: both owners are exercised.
+//  - A plastic face (Material/Plasticity = J2) under the resolved sphere
+//    (level 3, 150 us): the plastic state summed over the ranks' cells.
 //  - A static point load and the lowest six natural frequencies (20 x 10
 //    x 4): equal to 1e-10 and 1e-9 relative.
 // Set FGIMPACT_VERBOSE=1 to print the differences.
@@ -111,6 +113,11 @@ main(int argc, char **argv)
     {"impact point (0.05, 0.025) m, direct solver, 150 us",
      "subsection Impactor\n set Impact point x = 0.05\n"
      " set Impact point y = 0.025\nend\n"
+     "subsection Time integration\n set End time = 150e-6\nend\n"},
+    {"plastic face (J2), resolved sphere, level 3, 150 us",
+     "subsection Contact\n set Model = resolved sphere\nend\n"
+     "subsection Material\n set Plasticity = J2\nend\n"
+     "subsection Geometry\n set Contact refinement levels = 3\nend\n"
      "subsection Time integration\n set End time = 150e-6\nend\n"}};
   for (const auto &c : cases)
     {

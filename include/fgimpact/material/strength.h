@@ -62,7 +62,7 @@ namespace fgimpact
     struct Parameters
     {
       Plasticity plasticity               = Plasticity::none;
-      double     metal_hardening_modulus  = 0.; // Pa
+      double     metal_hardening_modulus  = 3e8; // Pa
       double     metal_yield_strength     = 275e6;
       double     ceramic_tensile_strength = 260e6;
       double     tto_q                    = 4.5e9;
