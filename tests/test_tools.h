@@ -12,7 +12,9 @@
 #include <fgimpact/app/simulator.h>
 
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -27,6 +29,20 @@ namespace fgimpact_tests
     fgimpact::ImpactResults          results;
     std::vector<std::vector<double>> history;
   };
+
+  /// summary.txt's entries, key -> text (the provenance comments left
+  /// out).
+  inline std::map<std::string, std::string>
+  read_summary(const std::string &file)
+  {
+    std::map<std::string, std::string> values;
+    std::ifstream                      in(file);
+    for (std::string line; std::getline(in, line);)
+      if (const auto at = line.find(" = ");
+          line[0] != '#' && at != std::string::npos)
+        values[line.substr(0, at)] = line.substr(at + 3);
+    return values;
+  }
 
   /**
    * Remove a directory an earlier run of the test left (rank 0, then every

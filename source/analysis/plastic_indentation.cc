@@ -35,11 +35,8 @@ namespace fgimpact
         if (std::isnan(r.first_yield_force) &&
             plastic->max_equivalent_plastic_strain() > 0.)
           {
-            const double ratio = plastic->max_trial_ratio();
-            const double theta =
-              ratio > last_ratio ?
-                std::clamp((1. - last_ratio) / (ratio - last_ratio), 0., 1.) :
-                1.;
+            const double ratio  = plastic->max_trial_ratio();
+            const double theta  = yield_crossing(last_ratio, ratio);
             r.first_yield_force = last_force + theta * (force - last_force);
           }
         last_ratio  = plastic->max_trial_ratio();

@@ -116,6 +116,38 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The metal check's item of the verdict, and whether it breaks.
+    std::pair<std::string, bool>
+    metal_validity(const ImpactResults &r)
+    {
+      char text[300];
+      if (r.plastic.modelled)
+        {
+          // The check's stress is Hooke's of the total strain: what an
+          // elastic metal would carry.
+          std::snprintf(text,
+                        sizeof(text),
+                        "plastic metal modelled (J2; the elastic stress "
+                        "would be %.2f x the yield strength)",
+                        r.yield_peak.ratio);
+          return {text, false};
+        }
+      const bool broken = r.yield_peak.ratio > 1.;
+      std::snprintf(text,
+                    sizeof(text),
+                    "elastic metal (von Mises %.2f x the yield strength%s)",
+                    r.yield_peak.ratio,
+                    broken ? ": set Material/Plasticity = J2 with "
+                             "Contact/Model = resolved sphere" :
+                             "");
+      return {text, broken};
+    }
+  } // namespace
+
+
+
   std::string
   validity_text(const ImpactResults &r)
   {
@@ -133,30 +165,8 @@ namespace fgimpact
     char text[300];
     if (std::isfinite(r.yield_peak.ratio))
       {
-        if (r.plastic.modelled)
-          {
-            // The check's stress is Hooke's of the total strain: what an
-            // elastic metal would carry.
-            std::snprintf(text,
-                          sizeof(text),
-                          "plastic metal modelled (J2; the elastic stress "
-                          "would be %.2f x the yield strength)",
-                          r.yield_peak.ratio);
-            add(holds, text);
-          }
-        else
-          {
-            std::snprintf(text,
-                          sizeof(text),
-                          "elastic metal (von Mises %.2f x the yield "
-                          "strength%s)",
-                          r.yield_peak.ratio,
-                          r.yield_peak.ratio > 1. ?
-                            ": set Material/Plasticity = J2 with "
-                            "Contact/Model = resolved sphere" :
-                            "");
-            add(r.yield_peak.ratio > 1. ? breaks : holds, text);
-          }
+        const auto [item, broken] = metal_validity(r);
+        add(broken ? breaks : holds, item);
       }
     if (std::isfinite(r.tension_peak.ratio))
       {

@@ -32,10 +32,7 @@ namespace fgimpact
         plasticity.max_equivalent_plastic_strain() > 0.)
       {
         // The trial ratio crossed 1 in this step.
-        const double theta =
-          ratio > last_ratio ?
-            std::clamp((1. - last_ratio) / (ratio - last_ratio), 0., 1.) :
-            1.;
+        const double theta  = yield_crossing(last_ratio, ratio);
         r.first_yield_time  = last_time + theta * (record.t - last_time);
         r.first_yield_force = last_force + theta * (force - last_force);
       }

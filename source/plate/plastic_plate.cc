@@ -15,6 +15,16 @@
 
 namespace fgimpact
 {
+  double
+  yield_crossing(const double before, const double after)
+  {
+    return after > before ?
+             std::clamp((1. - before) / (after - before), 0., 1.) :
+             1.;
+  }
+
+
+
   PlasticPlate::PlasticPlate(const PlateModel     &plate,
                              const GradedStrength &strength)
     : plate(plate)
@@ -38,20 +48,18 @@ namespace fgimpact
   void
   PlasticPlate::setup()
   {
-    const auto                &fe        = plate.get_fe();
-    const FiniteElement<3>    &scalar_fe = fe.base_element(0);
+    const auto                &fe = plate.get_fe();
     const QGauss<3>            quadrature(fe.degree + 1);
     FEValues<3>                fe_values(plate.get_mapping(),
                           fe,
                           quadrature,
                           update_gradients | update_quadrature_points |
                             update_JxW_values);
-    const PropertyInterpolator properties(scalar_fe,
+    const PropertyInterpolator properties(fe.base_element(0),
                                           quadrature.get_points(),
                                           plate.get_material());
-    n_dofs                      = fe.n_dofs_per_cell();
-    n_points                    = quadrature.size();
-    const unsigned int n_scalar = scalar_fe.n_dofs_per_cell();
+    n_dofs   = fe.n_dofs_per_cell();
+    n_points = quadrature.size();
 
     const auto &map = u_ghosted.trilinos_vector().Map();
     std::map<std::array<double, 3>, unsigned int> tables;
@@ -72,16 +80,7 @@ namespace fgimpact
                                                  cell->extent_in_direction(2)}};
           const auto [it, added] = tables.emplace(extent, gradients.size());
           if (added)
-            {
-              gradients.emplace_back(n_points * n_scalar * 3);
-              gradient_bound.push_back(0.);
-              mean_gradients.emplace_back(n_scalar * 3, 0.);
-              offsets.emplace_back(n_scalar * 3);
-              for (unsigned int s = 0; s < n_scalar; ++s)
-                for (unsigned int d = 0; d < 3; ++d)
-                  offsets.back()[s * 3 + d] =
-                    (scalar_fe.unit_support_point(s)[d] - 0.5) * extent[d];
-            }
+            add_table(fe_values, quadrature, extent);
           cell->get_dof_indices(cell_dofs);
           dofs.insert(dofs.end(), cell_dofs.begin(), cell_dofs.end());
           const std::size_t first = local_index.size();
@@ -91,54 +90,88 @@ namespace fgimpact
               const auto [c, s]              = fe.system_to_component_index(i);
               local_index[first + s * 3 + c] = map.LID(
                 static_cast<TrilinosWrappers::types::int_type>(cell_dofs[i]));
-              if (added)
-                for (unsigned int q = 0; q < n_points; ++q)
-                  for (unsigned int d = 0; d < 3; ++d)
-                    {
-                      const double g =
-                        fe_values.shape_grad_component(i, q, c)[d];
-                      gradients.back()[(q * n_scalar + s) * 3 + d] = g;
-                      if (c == 0)
-                        mean_gradients.back()[s * 3 + d] +=
-                          quadrature.weight(q) * g;
-                    }
             }
           table.push_back(it->second);
           active_index.push_back(cell->active_cell_index());
           properties.values(cell, E, nu, rho);
-          double skip = std::numeric_limits<double>::max();
-          for (unsigned int q = 0; q < n_points; ++q)
-            {
-              const double z = fe_values.quadrature_point(q)[2];
-              lambda.push_back(HookeLaw::lambda(E[q], nu[q]));
-              mu.push_back(HookeLaw::mu(E[q], nu[q]));
-              // The ceramic-rich points stay elastic.
-              const bool plastic = strength.metal_rich(z);
-              yield.push_back(plastic ?
-                                strength.yield_strength(z) :
-                                std::numeric_limits<double>::infinity());
-              hardening.push_back(plastic ? strength.hardening_modulus(z) : 0.);
-              weights.push_back(fe_values.JxW(q));
-              // von Mises = sqrt(3/2) 2 mu |dev eps| <= sqrt(6) mu |grad u|.
-              skip = std::min(skip, yield.back() / (std::sqrt(6.) * mu.back()));
-            }
-          skip_strain.push_back(skip);
-        }
-    for (unsigned int t = 0; t < gradients.size(); ++t)
-      for (unsigned int q = 0; q < n_points; ++q)
-        {
-          double A[3] = {};
-          for (unsigned int s = 0; s < n_scalar; ++s)
-            for (unsigned int d = 0; d < 3; ++d)
-              A[d] += std::abs(gradients[t][(q * n_scalar + s) * 3 + d]);
-          gradient_bound[t] =
-            std::max(gradient_bound[t],
-                     std::sqrt(A[0] * A[0] + A[1] * A[1] + A[2] * A[2]));
+          add_points(fe_values, E, nu);
         }
     committed.resize(yield.size());
     trial.resize(yield.size());
     trial_work.assign(yield.size(), 0.);
     plastic_cell.assign(table.size(), false);
+  }
+
+
+
+  void
+  PlasticPlate::add_table(const FEValues<3>           &fe_values,
+                          const Quadrature<3>         &quadrature,
+                          const std::array<double, 3> &extent)
+  {
+    const auto         &fe        = plate.get_fe();
+    const auto         &scalar_fe = fe.base_element(0);
+    const unsigned int  n_scalar  = scalar_fe.n_dofs_per_cell();
+    std::vector<double> g(n_points * n_scalar * 3), mean(n_scalar * 3, 0.),
+      x(n_scalar * 3);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        const auto [c, s] = fe.system_to_component_index(i);
+        if (c != 0) // the scalar element's gradients, once
+          continue;
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            x[s * 3 + d] =
+              (scalar_fe.unit_support_point(s)[d] - 0.5) * extent[d];
+            for (unsigned int q = 0; q < n_points; ++q)
+              {
+                g[(q * n_scalar + s) * 3 + d] =
+                  fe_values.shape_grad_component(i, q, 0)[d];
+                mean[s * 3 + d] +=
+                  quadrature.weight(q) * g[(q * n_scalar + s) * 3 + d];
+              }
+          }
+      }
+    // max_q |(sum_s |dN_s/dx_d|)_d|: |grad u - G| <= max_s |r_s| times it.
+    double bound = 0;
+    for (unsigned int q = 0; q < n_points; ++q)
+      {
+        double A[3] = {};
+        for (unsigned int s = 0; s < n_scalar; ++s)
+          for (unsigned int d = 0; d < 3; ++d)
+            A[d] += std::abs(g[(q * n_scalar + s) * 3 + d]);
+        bound =
+          std::max(bound, std::sqrt(A[0] * A[0] + A[1] * A[1] + A[2] * A[2]));
+      }
+    gradients.push_back(std::move(g));
+    mean_gradients.push_back(std::move(mean));
+    offsets.push_back(std::move(x));
+    gradient_bound.push_back(bound);
+  }
+
+
+
+  void
+  PlasticPlate::add_points(const FEValues<3>         &fe_values,
+                           const std::vector<double> &E,
+                           const std::vector<double> &nu)
+  {
+    double skip = std::numeric_limits<double>::max();
+    for (unsigned int q = 0; q < n_points; ++q)
+      {
+        const double z = fe_values.quadrature_point(q)[2];
+        lambda.push_back(HookeLaw::lambda(E[q], nu[q]));
+        mu.push_back(HookeLaw::mu(E[q], nu[q]));
+        // The ceramic-rich points stay elastic.
+        const bool plastic = strength.metal_rich(z);
+        yield.push_back(plastic ? strength.yield_strength(z) :
+                                  std::numeric_limits<double>::infinity());
+        hardening.push_back(plastic ? strength.hardening_modulus(z) : 0.);
+        weights.push_back(fe_values.JxW(q));
+        // von Mises = sqrt(3/2) 2 mu |dev eps| <= sqrt(6) mu |grad u|.
+        skip = std::min(skip, yield.back() / (std::sqrt(6.) * mu.back()));
+      }
+    skip_strain.push_back(skip);
   }
 
 

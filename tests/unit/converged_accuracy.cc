@@ -30,17 +30,6 @@ using namespace fgimpact;
 
 namespace
 {
-  std::map<std::string, std::string>
-  read_summary(const std::string &file)
-  {
-    std::map<std::string, std::string> values;
-    std::ifstream                      in(file);
-    for (std::string line; std::getline(in, line);)
-      if (const auto at = line.find(" = ");
-          line[0] != '#' && at != std::string::npos)
-        values[line.substr(0, at)] = line.substr(at + 3);
-    return values;
-  }
 
   /// convergence.csv: the header's names and the rows.
   std::pair<std::vector<std::string>, std::vector<std::vector<double>>>
@@ -125,7 +114,7 @@ main(int argc, char *argv[])
         final ? "out/summary.txt" :
                 "out/convergence/level_" +
                   std::to_string(static_cast<int>(rows[i][1])) + "/summary.txt";
-      const auto summary = read_summary(file);
+      const auto summary = fgimpact_tests::read_summary(file);
       for (const auto &q : quantities)
         readback = std::max(readback,
                             std::abs(rows[i][column(q.column)] -
@@ -147,7 +136,7 @@ main(int argc, char *argv[])
   for (std::size_t i = 1; i + 1 < n_levels; ++i)
     stops_first = stops_first && change(i) >= tolerance;
   // The estimates, recomputed from the CSV.
-  const auto summary  = read_summary("out/summary.txt");
+  const auto summary  = fgimpact_tests::read_summary("out/summary.txt");
   double     estimate = 0;
   for (const auto &q : quantities)
     {

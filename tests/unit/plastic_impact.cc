@@ -39,17 +39,6 @@ namespace
     return text;
   }
 
-  std::map<std::string, std::string>
-  read_summary(const std::string &file)
-  {
-    std::map<std::string, std::string> values;
-    std::ifstream                      in(file);
-    for (std::string line; std::getline(in, line);)
-      if (const auto at = line.find(" = ");
-          line[0] != '#' && at != std::string::npos)
-        values[line.substr(0, at)] = line.substr(at + 3);
-    return values;
-  }
 
   /// The default scene, resolved, quarter, at contact refinement `levels`
   /// and time step dt (us), with the extra settings; its summary.txt.
@@ -77,7 +66,7 @@ namespace
         "\n set VTU interval = 0\n set Log interval = 0\n"
         " set Print timing = false\nend\n" +
         extra);
-    return read_summary(directory + "/summary.txt");
+    return fgimpact_tests::read_summary(directory + "/summary.txt");
   }
 
   const std::string j2 = "subsection Material\n set Plasticity = J2\nend\n";

@@ -1,6 +1,10 @@
 #ifndef fgimpact_plastic_plate_h
 #define fgimpact_plastic_plate_h
 
+#include <deal.II/base/quadrature.h>
+
+#include <deal.II/fe/fe_values.h>
+
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
@@ -10,12 +14,19 @@
 #include <fgimpact/plate/plate_model.h>
 
 #include <Epetra_Import.h>
+#include <array>
 #include <memory>
 #include <vector>
 
 namespace fgimpact
 {
   using namespace dealii;
+
+  /// Where between two increments first yield came: the fraction in
+  /// [0, 1] at which the largest trial ratio, `before` and `after` (the
+  /// first above 1), crosses 1 if it varies linearly.
+  double
+  yield_crossing(const double before, const double after);
 
   /**
    * The plastic state of the plate's metal-rich part at the Gauss points
@@ -132,6 +143,20 @@ namespace fgimpact
   private:
     void
     setup();
+
+    /// The shape gradient tables of a new cell extent (fe_values on a cell
+    /// of that extent, m).
+    void
+    add_table(const FEValues<3>           &fe_values,
+              const Quadrature<3>         &quadrature,
+              const std::array<double, 3> &extent);
+
+    /// A cell's points: Lame's constants from E (Pa), nu; the graded
+    /// strengths; JxW; the cell's skip bound.
+    void
+    add_points(const FEValues<3>         &fe_values,
+               const std::vector<double> &E,
+               const std::vector<double> &nu);
 
     /// Whether cell c (its displacements cell_u, [s * 3 + component])
     /// holds no point whose trial stress can reach half its yield stress.

@@ -47,6 +47,10 @@ namespace fgimpact
     static const SelectionTable<Scheme> &
     scheme_names();
 
+    /// The help of Time integration/Scheme: every scheme's description.
+    static std::string
+    scheme_help();
+
     /// Subsections "Time integration" (scheme, time control, Newmark's
     /// beta and gamma) and "Newton" (the contact iteration).
     struct Parameters
