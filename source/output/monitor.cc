@@ -343,6 +343,25 @@ namespace fgimpact
                   r.max_top_deflection * 1e6,
                   r.max_energy_drift);
     pcout << line;
+    if (r.plastic.modelled)
+      {
+        const auto &p = r.plastic;
+        std::snprintf(line,
+                      sizeof(line),
+                      "  plastic work %.6f J, crater %.4f um, largest "
+                      "equivalent plastic strain %.5f, first yield at %s us "
+                      "(%s N), restitution %s; plate iterations %.3f per "
+                      "step, at most %u\n",
+                      p.dissipation,
+                      p.permanent_indentation * 1e6,
+                      p.max_plastic_strain,
+                      optional(p.first_yield_time * 1e6, "%.3f").c_str(),
+                      optional(p.first_yield_force, "%.3f").c_str(),
+                      optional(p.restitution, "%.5f").c_str(),
+                      p.mean_iterations,
+                      p.max_iterations);
+        pcout << line;
+      }
     if (r.linear_iterations > 0)
       pcout << "  linear solver: " << r.linear_iterations
             << " iterations in all, at most " << r.max_linear_iterations
