@@ -412,7 +412,10 @@ namespace fgimpact
   Vector<float>
   PlasticPlate::cell_plastic_strain() const
   {
-    Vector<float> result(plate.n_active_cells());
+    // DataOut's size: this rank's triangulation (ghost and artificial
+    // cells included), not the global count.
+    Vector<float> result(
+      plate.get_dof_handler().get_triangulation().n_active_cells());
     for (unsigned int c = 0; c < table.size(); ++c)
       for (unsigned int q = 0; q < n_points; ++q)
         result[active_index[c]] = std::max<float>(

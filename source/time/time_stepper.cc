@@ -179,7 +179,8 @@ namespace fgimpact
         if (plastic && !plastic_step_converged(contact, plastic_energy))
           return false;
         mass->vmult(Mu_new, u_new);
-        // u^T K u from K_eff u = M r_n + f_p - sum lambda_j g_j - a0 M u;
+        // u^T K u from K_eff u = M r_n + f_p - sum lambda_j g_j, K_eff =
+        // K + a0 M, with the f_p u was solved with;
         // with plastic strain, the elastic energy is 1/2 u^T K u - u^T f_p
         // + 1/2 int eps_p : D : eps_p.
         strain = 0.5 * (u_new * rhs - work -
@@ -409,18 +410,20 @@ namespace fgimpact
        * plastic force has settled (its change at most the tolerance times
        * the largest nodal force, contact or plastic).  If so, the state is
        * committed and energy gets -u^T f_p + 1/2 int eps_p : D : eps_p of
-       * the force u_new was solved with; if not, the next predict() solves
-       * with the relaxed force.  Collective.
+       * the plastic strain at u_new (f_p its load); if not, the next
+       * predict() solves with the relaxed force.  Collective.
        */
       bool
       plastic_step_converged(const ContactState &contact, double &energy)
       {
-        energy       = -(u_new * plastic->plastic_force());
         double scale = plastic->plastic_force().linfty_norm();
         for (const double f : contact.forces)
           scale = std::max(scale, std::abs(f));
         const double change = plastic->update(u_new);
-        energy += plastic->eigenstrain_energy();
+        // The identity holds with the load of the plastic strain it
+        // counts, f_p(u_new), not the force u_new was solved with.
+        energy =
+          plastic->eigenstrain_energy() - (u_new * plastic->updated_force());
         if (change > plastic_tolerance * scale)
           return false;
         plastic->commit();

@@ -79,6 +79,14 @@ namespace fgimpact
       return force;
     }
 
+    /// f_p(u) of the last update(), unrelaxed (N, condensed): the load of
+    /// its plastic strain, which the elastic energy identity needs.
+    const TrilinosWrappers::MPI::Vector &
+    updated_force() const
+    {
+      return new_force;
+    }
+
     /// Accept the last update() as the end of the increment.  Collective.
     void
     commit();
@@ -130,7 +138,7 @@ namespace fgimpact
 
     /// The equivalent plastic strain per active cell (the largest of its
     /// Gauss points; 0 where elastic or not locally owned), indexed by
-    /// active_cell_index(), for the VTU output.
+    /// active_cell_index() (this rank's triangulation), for the VTU output.
     Vector<float>
     cell_plastic_strain() const;
 
