@@ -106,6 +106,36 @@ namespace fgimpact
 
     results = setup_results(plate, scene, *contact, total_timer.wall_time());
 
+    initialize_stepper();
+    results.spmv_time  = stepper->costs().spmv;
+    results.solve_time = stepper->costs().solve;
+
+    // The ball and the contact, coupled to the plate (on a symmetric part,
+    // the part's share of the ball).
+    coupler =
+      std::make_unique<ContactCoupler>(*stepper,
+                                       *contact,
+                                       parameters.time_integration.newmark,
+                                       scene.share() * impactor.mass(),
+                                       parameters.time_integration.newton,
+                                       plate.get_mpi_communicator());
+    dt      = stepper->time_step();
+    n_steps = parameters.time_integration.n_steps(dt);
+    pcout << "  " << stepper->description() << "; dt = " << dt * 1e6 << " us, "
+          << n_steps << " steps\n";
+    results.model = describe_model(parameters, scene, plate, dt);
+    note_contact_resolution();
+    // Machine-dependent (the memory available): with the timings.
+    if (parameters.output.print_timing && !stepper->solver_log().empty())
+      pcout << "  " << stepper->solver_log() << '\n';
+    check_time_step();
+  }
+
+
+
+  void
+  ImpactDriver::initialize_stepper()
+  {
     // The time stepper (implicit Newmark or explicit central difference)
     // builds its matrices and fixes the time step.  On a symmetric part
     // the ball's share of the mass meets the part's share of the force.
@@ -141,6 +171,8 @@ namespace fgimpact
                                         message_of(e)));
       }
     results.factorization_time = factorization_timer.wall_time();
+    // Material/Plasticity = J2: the plate's plastic state, which the
+    // stepper iterates on.
     if (parameters.strength.plasticity == GradedStrength::Plasticity::j2)
       {
         strength   = std::make_unique<GradedStrength>(parameters.strength,
@@ -149,27 +181,6 @@ namespace fgimpact
         stepper->set_plasticity(*plasticity,
                                 parameters.time_integration.newton.tolerance);
       }
-    results.spmv_time  = stepper->costs().spmv;
-    results.solve_time = stepper->costs().solve;
-
-    // The ball and the contact, coupled to the plate.
-    coupler =
-      std::make_unique<ContactCoupler>(*stepper,
-                                       *contact,
-                                       parameters.time_integration.newmark,
-                                       share * impactor.mass(),
-                                       parameters.time_integration.newton,
-                                       plate.get_mpi_communicator());
-    dt      = stepper->time_step();
-    n_steps = parameters.time_integration.n_steps(dt);
-    pcout << "  " << stepper->description() << "; dt = " << dt * 1e6 << " us, "
-          << n_steps << " steps\n";
-    results.model = describe_model(parameters, scene, plate, dt);
-    note_contact_resolution();
-    // Machine-dependent (the memory available): with the timings.
-    if (parameters.output.print_timing && !stepper->solver_log().empty())
-      pcout << "  " << stepper->solver_log() << '\n';
-    check_time_step();
   }
 
 

@@ -147,7 +147,6 @@ namespace fgimpact
             plastic->begin_increment();
             increment = step;
           }
-        ++total_plate_iterations;
         solve_contact_free(step, t, previous);
         u_free = plate.dof_values(u_new, dofs);
         return u_free;

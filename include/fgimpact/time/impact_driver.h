@@ -107,6 +107,12 @@ namespace fgimpact
 
     /// hertz_impact_duration() with the contact law's stiffness: a lower
     /// bound of the plate's contact duration (s).
+    /// The time stepper: built, its matrices factorized (a solver failure
+    /// named), and with Material/Plasticity = J2 the plate's plastic
+    /// state handed to it.
+    void
+    initialize_stepper();
+
     double
     hertz_contact_duration() const;
 

@@ -191,14 +191,6 @@ namespace fgimpact
       return 0.;
     }
 
-    /// Plate iterations (initial-stiffness) summed over the run: one per
-    /// step for an elastic plate.
-    unsigned long long
-    plate_iterations() const
-    {
-      return total_plate_iterations;
-    }
-
     /// Iterations of the linear solver in the last step (0 if direct).
     unsigned int
     linear_iterations() const
@@ -242,7 +234,6 @@ namespace fgimpact
     TrilinosWrappers::MPI::Vector u, v, a;
     double                        kinetic = 0, strain = 0;
     unsigned int                  last_linear_iterations = 0;
-    unsigned long long            total_plate_iterations = 0;
     Costs                         measured_costs;
   };
 
