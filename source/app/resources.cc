@@ -2,6 +2,7 @@
 
 #include <fgimpact/app/parameters.h>
 #include <fgimpact/app/resources.h>
+#include <fgimpact/contact/resolved_contact.h>
 #include <fgimpact/plate/symmetry.h>
 
 #include <algorithm>
@@ -146,6 +147,46 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// A resolved contact's own memory (bytes), for n_dofs DoFs of the
+    /// part (its share of the plate) whose coarse cells are hx x hy (m),
+    /// refined refinement.levels times at the top face: the candidates are its
+    /// top nodes within the candidate radius (ContactModelParameters: 1.5 times
+    /// the expected contact radius plus two elements), each a column of the
+    /// dense compliance (an elastic ball adds its own); the implicit stepper
+    /// stores the unit response, a vector of n_dofs, of the candidates
+    /// within 2/3 of that radius (ContactModel::n_likely_active()).
+    /// n_candidates: set to the whole plate's count.
+    double
+    resolved_contact_bytes(const Parameters      &parameters,
+                           const LocalRefinement &refinement,
+                           const double           n_dofs,
+                           const double           share,
+                           double                 hx,
+                           double                 hy,
+                           double                &n_candidates)
+    {
+      n_candidates = 0;
+      if (!parameters.uses_resolved_contact())
+        return 0.;
+      const double finest = std::pow(2., refinement.levels);
+      hx /= finest;
+      hy /= finest;
+      const double factor = ResolvedSphereContact::candidate_radius_factor;
+      const double r_c    = parameters.contact_model.candidate_radius > 0. ?
+                              parameters.contact_model.candidate_radius :
+                              factor * refinement.contact_radius + 2. * hx;
+      n_candidates        = M_PI * r_c * r_c / (hx * hy) + 1.;
+      const double part   = share * n_candidates + 1.;
+      const double stored = part / (factor * factor) + 1.;
+      const double balls  = parameters.impactor.elastic ? 2. : 1.;
+      return 8. * (balls * part * part + stored * n_dofs);
+    }
+  } // namespace
+
+
+
   ResourceEstimate
   estimate_resources(const Parameters      &parameters,
                      const LocalRefinement &refinement)
@@ -204,12 +245,18 @@ namespace fgimpact
     e.matrices   = bytes_per_entry * e.matrix_nnz;
     e.vectors    = bytes_per_dof * e.n_dofs;
     e.factor     = e.factorizes ? 8. * supernode_padding * e.factor_nnz : 0.;
+    // End time = auto factorizes K once more for the plate's static
+    // compliance (largest_static_compliance()) while K_eff's factor lives.
+    if (impact && !explicit_scheme && parameters.time_integration.auto_end_time)
+      e.factor *= 2.;
     // A mirrored part's VTU holds the whole plate's cells.
     const double output_cells =
       parameters.output.vtu_fields.mirror ? e.n_cells / share : e.n_cells;
-    e.output             = parameters.output.vtu_interval > 0 ?
-                             bytes_per_output_cell * output_cells :
-                             0.;
+    e.output  = parameters.output.vtu_interval > 0 ?
+                  bytes_per_output_cell * output_cells :
+                  0.;
+    e.contact = resolved_contact_bytes(
+      parameters, refinement, e.n_dofs, share, hx, hy, e.n_candidates);
     e.factorization_time = e.factorizes ? flops / flop_rate : 0.;
     // A step: two passes over the factor (implicit) or over the matrix
     // (explicit, cg per iteration), plus a few matrix-vector products.
@@ -224,33 +271,36 @@ namespace fgimpact
   std::string
   ResourceEstimate::describe() const
   {
-    char text[400];
-    std::snprintf(text,
-                  sizeof(text),
-                  "resource estimate: %.3g DoFs, %.3g matrix entries%s; "
-                  "peak memory ~%s (%s resident now + mesh %s, matrices %s, "
-                  "vectors %s, factor %s, output %s); %s%.2g ms per %s",
-                  n_dofs,
-                  matrix_nnz,
-                  factorizes ?
-                    (", nnz(L) ~ " +
-                     std::to_string(static_cast<long long>(factor_nnz)))
+    char text[600];
+    std::snprintf(
+      text,
+      sizeof(text),
+      "resource estimate: %.3g DoFs, %.3g matrix entries%s; "
+      "peak memory ~%s (%s resident now + mesh %s, matrices %s, "
+      "vectors %s, factor %s, output %s%s); %s%.2g ms per %s",
+      n_dofs,
+      matrix_nnz,
+      factorizes ?
+        (", nnz(L) ~ " + std::to_string(static_cast<long long>(factor_nnz)))
+          .c_str() :
+        "",
+      gigabytes(resident + total(true)).c_str(),
+      gigabytes(resident).c_str(),
+      gigabytes(mesh).c_str(),
+      gigabytes(matrices).c_str(),
+      gigabytes(vectors).c_str(),
+      gigabytes(factor).c_str(),
+      gigabytes(output).c_str(),
+      contact > 0 ? (", contact " + gigabytes(contact) + " for ~" +
+                     std::to_string(std::lround(n_candidates)) + " candidates")
                       .c_str() :
                     "",
-                  gigabytes(resident + total(true)).c_str(),
-                  gigabytes(resident).c_str(),
-                  gigabytes(mesh).c_str(),
-                  gigabytes(matrices).c_str(),
-                  gigabytes(vectors).c_str(),
-                  gigabytes(factor).c_str(),
-                  gigabytes(output).c_str(),
-                  factorizes ?
-                    ("factorization ~" +
-                     std::to_string(factorization_time).substr(0, 6) + " s, ")
-                      .c_str() :
-                    "",
-                  step_time * 1e3,
-                  factorizes ? "step" : "step or cg iteration");
+      factorizes ? ("factorization ~" +
+                    std::to_string(factorization_time).substr(0, 6) + " s, ")
+                     .c_str() :
+                   "",
+      step_time * 1e3,
+      factorizes ? "step" : "step or cg iteration");
     return text;
   }
 
@@ -292,6 +342,9 @@ namespace fgimpact
          << gigabytes(estimate.mesh) << ", matrices "
          << gigabytes(estimate.matrices) << ", vectors "
          << gigabytes(estimate.vectors)
+         << (estimate.contact > 0 ?
+               ", resolved contact " + gigabytes(estimate.contact) :
+               std::string())
          << (must_factor ?
                ", " + type + " factor " + gigabytes(estimate.factor) :
                std::string())

@@ -366,8 +366,9 @@ namespace fgimpact
   contact_refinement_of(const Parameters &parameters, const Scene &scene)
   {
     LocalRefinement refinement;
-    refinement.centre  = scene.impact_point();
-    const double a_max = scene.expected_contact_radius();
+    refinement.centre         = scene.impact_point();
+    const double a_max        = scene.expected_contact_radius();
+    refinement.contact_radius = a_max;
     refinement.levels =
       parameters.geometry.contact_refinement_auto ?
         automatic_contact_refinement_levels(parameters, a_max) :

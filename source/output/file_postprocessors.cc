@@ -184,14 +184,24 @@ namespace fgimpact
 
 
 
-  ProbeWriter::ProbeWriter(std::unique_ptr<const ProbeSet> probe_set,
-                           const std::string              &directory,
-                           const double                    whole,
-                           const bool                      root)
+  ProbeWriter::ProbeWriter(std::unique_ptr<const ProbeSet>        probe_set,
+                           const std::vector<std::string>        &names,
+                           std::vector<ImpactResults::ProbePeak> &peaks,
+                           const std::string                     &directory,
+                           const double                           whole,
+                           const bool                             root)
     : CsvPostprocessor(directory + "/probes.csv", probe_set->columns(), root)
     , probes(std::move(probe_set))
+    , peaks(peaks)
     , whole(whole)
-  {}
+  {
+    peaks.clear();
+    for (std::size_t i = 0; i < names.size(); ++i)
+      {
+        const Point<3> &x = probes->locations()[i];
+        peaks.push_back({names[i], {{x[0], x[1], x[2]}}, 0., 0.});
+      }
+  }
 
 
 
@@ -209,6 +219,40 @@ namespace fgimpact
                                           f.lumped_mass());
     values.support_reaction_z *= whole; // a part's supports: scaled up
     write_row(probes->row(record.t, values));
+    for (std::size_t i = 0; i < peaks.size(); ++i)
+      {
+        // sqrt(3/2 s:s) of the deviator s (the norm counts xy twice).
+        const double von_mises =
+          std::sqrt(1.5) * deviator(values.stress[i]).norm();
+        if (von_mises > peaks[i].von_mises)
+          peaks[i] = {peaks[i].name, peaks[i].location, von_mises, record.t};
+      }
+  }
+
+
+
+  void
+  ProbeWriter::save(CheckpointWriter &out, const unsigned int step)
+  {
+    CsvPostprocessor::save(out, step);
+    for (const auto &peak : peaks)
+      {
+        out.put<double>(peak.von_mises);
+        out.put<double>(peak.time);
+      }
+  }
+
+
+
+  void
+  ProbeWriter::load(CheckpointReader &in)
+  {
+    CsvPostprocessor::load(in);
+    for (auto &peak : peaks)
+      {
+        in.get(peak.von_mises);
+        in.get(peak.time);
+      }
   }
 
 

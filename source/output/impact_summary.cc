@@ -574,6 +574,13 @@ namespace fgimpact
         else
           out.add(key.name, key.number(r), key.decimals);
       }
+    // One pair per Output/Probe points entry, named after the probe.
+    for (const auto &peak : r.probe_peaks)
+      {
+        const std::string key = "probe_" + peak.name + "_peak_von_mises";
+        out.add(key + "_MPa", peak.von_mises * 1e-6, 3);
+        out.add(key + "_time_us", peak.time * 1e6, 3);
+      }
     return out;
   }
 } // namespace fgimpact

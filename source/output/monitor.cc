@@ -58,11 +58,18 @@ namespace fgimpact
     history             = history_writer.get();
     add(std::move(history_writer));
     if (!parameters.probe_points.points.empty())
-      add(std::make_unique<ProbeWriter>(
-        std::make_unique<ProbeSet>(plate, parameters.probe_points.points),
-        parameters.directory,
-        whole,
-        pcout.is_active()));
+      {
+        std::vector<std::string> names;
+        for (const ProbePoint &point : parameters.probe_points.points)
+          names.push_back(point.name);
+        add(std::make_unique<ProbeWriter>(
+          std::make_unique<ProbeSet>(plate, parameters.probe_points.points),
+          names,
+          results.probe_peaks,
+          parameters.directory,
+          whole,
+          pcout.is_active()));
+      }
   }
 
 

@@ -44,6 +44,10 @@ namespace fgimpact
     /// estimated (libraries, MPI), not in total().
     double resident = 0;
     double mesh = 0, matrices = 0, factor = 0, vectors = 0, output = 0;
+    /// A resolved contact: its candidates (the whole plate's, for the
+    /// log), and the bytes of their dense compliance and of the unit
+    /// responses the implicit stepper stores (n_likely_active() vectors).
+    double n_candidates = 0, contact = 0;
     /// Whether the run factorizes (implicit, or static/modal).
     bool factorizes = false;
     /// Wall time of one time step (s) and of the factorization (s), rough.
@@ -52,7 +56,8 @@ namespace fgimpact
     double
     total(const bool with_factor) const
     {
-      return mesh + matrices + vectors + output + (with_factor ? factor : 0.);
+      return mesh + matrices + vectors + output + contact +
+             (with_factor ? factor : 0.);
     }
 
     /// One line for the log.

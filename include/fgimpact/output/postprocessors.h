@@ -191,18 +191,28 @@ namespace fgimpact
 
   /**
    * probes.csv: Output/Probe points (ProbeSet) and the support reaction,
-   * at every step that has fields.  Every rank evaluates (collective);
-   * rank 0 writes.
+   * at every step that has fields; and each probe's peak von Mises stress
+   * (ImpactResults::probe_peaks, the same on every rank).  Every rank
+   * evaluates (collective); rank 0 writes.
    */
   class ProbeWriter : public CsvPostprocessor
   {
   public:
-    /// whole: 1 / the part's share (the supports' reaction is scaled up).
-    ProbeWriter(std::unique_ptr<const ProbeSet> probes,
-                const std::string              &directory,
-                const double                    whole,
-                const bool                      root);
+    /// whole: 1 / the part's share (the supports' reaction is scaled up);
+    /// names: the probes' (Output/Probe points); peaks: where the peaks go.
+    ProbeWriter(std::unique_ptr<const ProbeSet>        probes,
+                const std::vector<std::string>        &names,
+                std::vector<ImpactResults::ProbePeak> &peaks,
+                const std::string                     &directory,
+                const double                           whole,
+                const bool                             root);
 
+    /// 2: the peaks after the file's length (1: the length alone).
+    std::uint32_t
+    checkpoint_version() const override
+    {
+      return 2;
+    }
     bool
     needs_rates(const unsigned int) const override
     {
@@ -210,10 +220,15 @@ namespace fgimpact
     }
     void
     execute(const StepRecord &record) override;
+    void
+    save(CheckpointWriter &out, const unsigned int step) override;
+    void
+    load(CheckpointReader &in) override;
 
   private:
-    const std::unique_ptr<const ProbeSet> probes;
-    const double                          whole;
+    const std::unique_ptr<const ProbeSet>  probes;
+    std::vector<ImpactResults::ProbePeak> &peaks;
+    const double                           whole;
   };
 
 

@@ -3,6 +3,7 @@
 
 #include <fgimpact/material/strength.h>
 
+#include <array>
 #include <limits>
 #include <string>
 #include <vector>
@@ -112,6 +113,17 @@ namespace fgimpact
       double       mean_iterations = 0;
       unsigned int max_iterations  = 0;
     } plastic;
+
+    /// Output/Probe points (ProbeWriter): the largest von Mises stress of
+    /// the recovered stress at each probe over the run, and when.
+    struct ProbePeak
+    {
+      std::string           name;
+      std::array<double, 3> location{};    // m
+      double                von_mises = 0; // Pa
+      double                time      = 0; // s
+    };
+    std::vector<ProbePeak> probe_peaks;
   };
 } // namespace fgimpact
 

@@ -47,6 +47,9 @@ namespace fgimpact
     double radius = 0;
     /// Number of refinement levels (0: none).
     unsigned int levels = 0;
+    /// The contact radius the scene expects (m; 0: none), which sizes a
+    /// resolved contact's candidate set (estimate_resources()).
+    double contact_radius = 0;
   };
 
   /**
