@@ -264,9 +264,13 @@ main(int argc, char **argv)
       unsigned int equal = 0;
       for (const auto &[key, value] : expected)
         equal +=
-          (got.count(key) &&
-           (field_check(key) ? convolution_field_check(key, got.at(key)) :
-                               same(key, got.at(key), value)));
+          key.rfind("probe_", 0) == 0 ?
+            // The probes' peak stresses need fields: the convolution has
+            // no probes (--study-case K gives them), so no such key.
+            got.count(key) == 0 :
+            (got.count(key) &&
+             (field_check(key) ? convolution_field_check(key, got.at(key)) :
+                                 same(key, got.at(key), value)));
       std::getline(csv, line);
       const auto   cells     = split_csv(line);
       unsigned int csv_equal = 0, csv_keys = 0;
