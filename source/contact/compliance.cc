@@ -15,18 +15,22 @@ namespace fgimpact
                          std::vector<TrilinosWrappers::MPI::Vector> *responses,
                          const std::size_t n_responses)
     {
-      const unsigned int  m     = dofs.size();
-      const std::size_t   n     = plate.locally_owned_dofs().n_elements();
-      const unsigned int  block = 64;
-      std::vector<double> B, X;
+      const unsigned int m     = dofs.size();
+      const std::size_t  n     = plate.locally_owned_dofs().n_elements();
+      const unsigned int block = 64;
+      // B is zeroed once; each block sets its k unit entries and clears
+      // them after (zeroing all of B per block was 1.3 s of the level-7
+      // set-up: 48 MB a block).
+      std::vector<double> B(n * std::min(block, m), 0.), X;
       for (unsigned int j0 = 0; j0 < m; j0 += block)
         {
           const unsigned int k = std::min(block, m - j0);
-          B.assign(n * k, 0.);
           X.resize(n * k);
           for (unsigned int c = 0; c < k; ++c)
             B[c * n + dofs[j0 + c]] = 1.;
           solver.solve_many(n, k, B.data(), X.data());
+          for (unsigned int c = 0; c < k; ++c)
+            B[c * n + dofs[j0 + c]] = 0.;
           for (unsigned int c = 0; c < k; ++c)
             {
               const double *column = X.data() + c * n;
