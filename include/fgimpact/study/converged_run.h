@@ -41,9 +41,9 @@ namespace fgimpact
    *  3. convergence.csv (one row per run) and, appended to summary.txt,
    *     for each quantity its relative error estimate: from the levels,
    *     Richardson with the observed order p where the last three values
-   *     are monotone with shrinking changes (error |d2| / (2^p - 1)),
-   *     otherwise the last change |d2|; plus the time step's,
-   *     |q(dt/2) - q(dt)| / 3 (Richardson for the second-order Newmark
+   *     are monotone with changes that shrink with p >= min_order (error
+   *     |d2| / (2^p - 1)), otherwise the last change |d2|; plus the time
+   * step's, |q(dt/2) - q(dt)| / 3 (Richardson for the second-order Newmark
    *     rule); and which method gave it.
    */
   class ConvergedRun
@@ -118,6 +118,9 @@ namespace fgimpact
     /// time step on the finest level.
     static std::pair<double, std::string>
     estimate(const std::vector<double> &at_levels, const double at_half_step);
+
+    /// The least observed order Richardson extrapolates with.
+    static constexpr double min_order = 0.5;
 
   private:
     /// The parameters of a level run (final: the user's outputs into
