@@ -103,6 +103,47 @@ namespace fgimpact
 
 
 
+  void
+  add_weighted_responses(
+    TrilinosWrappers::MPI::Vector                            &x,
+    const std::vector<double>                                &w,
+    const std::vector<const TrilinosWrappers::MPI::Vector *> &y)
+  {
+    constexpr std::size_t block = 32768; // rows: 256 KB of x
+    const std::size_t     n     = x.locally_owned_size();
+    const std::size_t     m     = w.size();
+    double *const         to    = x.begin();
+    for (std::size_t i0 = 0; i0 < n; i0 += block)
+      {
+        const std::size_t i1 = std::min(n, i0 + block);
+        std::size_t       k  = 0;
+        for (; k + 4 <= m; k += 4)
+          {
+            const double w0 = w[k], w1 = w[k + 1], w2 = w[k + 2], w3 = w[k + 3];
+            const double *y0 = y[k]->begin(), *y1 = y[k + 1]->begin(),
+                         *y2 = y[k + 2]->begin(), *y3 = y[k + 3]->begin();
+            for (std::size_t i = i0; i < i1; ++i)
+              {
+                double sum = to[i];
+                sum        = sum + w0 * y0[i];
+                sum        = sum + w1 * y1[i];
+                sum        = sum + w2 * y2[i];
+                sum        = sum + w3 * y3[i];
+                to[i]      = sum;
+              }
+          }
+        for (; k < m; ++k)
+          {
+            const double  weight = w[k];
+            const double *from   = y[k]->begin();
+            for (std::size_t i = i0; i < i1; ++i)
+              to[i] = to[i] + weight * from[i];
+          }
+      }
+  }
+
+
+
   double
   largest_static_compliance(
     const PlateModel                           &plate,

@@ -185,7 +185,6 @@ namespace fgimpact
 
 
   ProbeWriter::ProbeWriter(std::unique_ptr<const ProbeSet>        probe_set,
-                           const std::vector<std::string>        &names,
                            std::vector<ImpactResults::ProbePeak> &peaks,
                            const std::string                     &directory,
                            const double                           whole,
@@ -196,10 +195,10 @@ namespace fgimpact
     , whole(whole)
   {
     peaks.clear();
-    for (std::size_t i = 0; i < names.size(); ++i)
+    for (std::size_t i = 0; i < probes->locations().size(); ++i)
       {
         const Point<3> &x = probes->locations()[i];
-        peaks.push_back({names[i], {{x[0], x[1], x[2]}}, 0., 0.});
+        peaks.push_back({probes->get_names()[i], {{x[0], x[1], x[2]}}, 0., 0.});
       }
   }
 
@@ -225,7 +224,10 @@ namespace fgimpact
         const double von_mises =
           std::sqrt(1.5) * deviator(values.stress[i]).norm();
         if (von_mises > peaks[i].von_mises)
-          peaks[i] = {peaks[i].name, peaks[i].location, von_mises, record.t};
+          {
+            peaks[i].von_mises = von_mises;
+            peaks[i].time      = record.t;
+          }
       }
   }
 

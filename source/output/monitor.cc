@@ -58,18 +58,12 @@ namespace fgimpact
     history             = history_writer.get();
     add(std::move(history_writer));
     if (!parameters.probe_points.points.empty())
-      {
-        std::vector<std::string> names;
-        for (const ProbePoint &point : parameters.probe_points.points)
-          names.push_back(point.name);
-        add(std::make_unique<ProbeWriter>(
-          std::make_unique<ProbeSet>(plate, parameters.probe_points.points),
-          names,
-          results.probe_peaks,
-          parameters.directory,
-          whole,
-          pcout.is_active()));
-      }
+      add(std::make_unique<ProbeWriter>(
+        std::make_unique<ProbeSet>(plate, parameters.probe_points.points),
+        results.probe_peaks,
+        parameters.directory,
+        whole,
+        pcout.is_active()));
   }
 
 

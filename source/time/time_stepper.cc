@@ -37,53 +37,6 @@ namespace fgimpact
     const Registry<Scheme, TimeStepperFactory> &
     scheme_registry();
 
-    /**
-     * x += sum_k w_k y_k over the locally owned entries, four terms per
-     * pass over x (in blocks of rows that stay in cache): the separate
-     * axpys read and wrote all of x once per term (at level 7 of the
-     * default scene about 300 terms of 95k entries a step).  Measured
-     * alone on that size: 8.5 ms against 14.3 ms.  Every entry gets its
-     * terms in the axpys' order and as x + w y, so the sum is bitwise
-     * theirs.
-     */
-    void
-    add_many(TrilinosWrappers::MPI::Vector                            &x,
-             const std::vector<double>                                &w,
-             const std::vector<const TrilinosWrappers::MPI::Vector *> &y)
-    {
-      constexpr std::size_t block = 32768; // rows: 256 KB of x
-      const std::size_t     n     = x.locally_owned_size();
-      const std::size_t     m     = w.size();
-      double *const         to    = x.begin();
-      for (std::size_t i0 = 0; i0 < n; i0 += block)
-        {
-          const std::size_t i1 = std::min(n, i0 + block);
-          std::size_t       k  = 0;
-          for (; k + 4 <= m; k += 4)
-            {
-              const double w0 = w[k], w1 = w[k + 1], w2 = w[k + 2],
-                           w3  = w[k + 3];
-              const double *y0 = y[k]->begin(), *y1 = y[k + 1]->begin(),
-                           *y2 = y[k + 2]->begin(), *y3 = y[k + 3]->begin();
-              for (std::size_t i = i0; i < i1; ++i)
-                {
-                  double sum = to[i];
-                  sum        = sum + w0 * y0[i];
-                  sum        = sum + w1 * y1[i];
-                  sum        = sum + w2 * y2[i];
-                  sum        = sum + w3 * y3[i];
-                  to[i]      = sum;
-                }
-            }
-          for (; k < m; ++k)
-            {
-              const double  weight = w[k];
-              const double *from   = y[k]->begin();
-              for (std::size_t i = i0; i < i1; ++i)
-                to[i] = to[i] + weight * from[i];
-            }
-        }
-    }
   } // namespace
 
 
@@ -223,7 +176,7 @@ namespace fgimpact
               weights.push_back(-contact.forces[j]);
               responses.push_back(&response(j)); // collective if not stored
             }
-        add_many(u_new, weights, responses);
+        add_weighted_responses(u_new, weights, responses);
         double work = 0; // sum_j lambda_j u_j(t_{n+1}) = u^T (sum lambda g)
         for (const unsigned int j : pressed)
           {

@@ -32,6 +32,21 @@ namespace fgimpact
     std::vector<TrilinosWrappers::MPI::Vector> *responses,
     const std::size_t n_responses = static_cast<std::size_t>(-1));
 
+  /**
+   * x += sum_k w_k y_k over the locally owned entries, four terms per
+   * pass over x (in blocks of rows that stay in cache): the separate
+   * axpys read and wrote all of x once per term (at level 7 of the
+   * default scene about 300 terms of 95k entries a step).  Measured
+   * alone on that size: 8.5 ms against 14.3 ms.  Every entry gets its
+   * terms in the axpys' order and as x + w y, so the sum is bitwise
+   * theirs.
+   */
+  void
+  add_weighted_responses(
+    TrilinosWrappers::MPI::Vector                            &x,
+    const std::vector<double>                                &w,
+    const std::vector<const TrilinosWrappers::MPI::Vector *> &y);
+
   /// The response c = A^{-1} g of one unit load at `dof` (the solver
   /// factorized A).  Collective.
   void

@@ -199,9 +199,8 @@ namespace fgimpact
   {
   public:
     /// whole: 1 / the part's share (the supports' reaction is scaled up);
-    /// names: the probes' (Output/Probe points); peaks: where the peaks go.
+    /// peaks: where the peaks go.
     ProbeWriter(std::unique_ptr<const ProbeSet>        probes,
-                const std::vector<std::string>        &names,
                 std::vector<ImpactResults::ProbePeak> &peaks,
                 const std::string                     &directory,
                 const double                           whole,

@@ -124,6 +124,13 @@ namespace fgimpact
       return points;
     }
 
+    /// The probes' names (Output/Probe points), in the order of locations().
+    const std::vector<std::string> &
+    get_names() const
+    {
+      return names;
+    }
+
   private:
     using Weights = DofWeights;
 

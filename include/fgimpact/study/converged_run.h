@@ -27,13 +27,12 @@ namespace fgimpact
    *
    *  1. Levels L0, L0 + 1, ... (L0 = one below the scene's automatic
    *     level: the automatic level is expected within about 1 %, and a
-   *     change needs a coarser run before it),
-   *     each a plain run at the given time step into
-   *     Output/Directory/convergence/level_L (history.csv, summary.txt; no
-   *     VTU, no checkpoints), until every quantity() changes by less than
-   *     Accuracy tolerance (relative) from the level before (the probes'
-   *     peak stresses too, unless on the contact surface: quantities_of()).
-   *     A next level
+   *     change needs a coarser run before it), each a plain run at the
+   *     given time step into Output/Directory/convergence/level_L
+   *     (history.csv, probes.csv, summary.txt; no VTU, no checkpoints),
+   *     until every quantity changes by less than Accuracy tolerance
+   *     (relative) from the level before (the probes' peak stresses too,
+   *     unless on the contact surface: quantities_of()).  A next level
    *     that does not fit the memory stops the run with one line naming
    *     the tolerance and the memory.
    *  2. The finest level at half the time step, with the user's outputs,
@@ -41,10 +40,10 @@ namespace fgimpact
    *  3. convergence.csv (one row per run) and, appended to summary.txt,
    *     for each quantity its relative error estimate: from the levels,
    *     Richardson with the observed order p where the last three values
-   *     are monotone with changes that shrink with p >= min_order (error
-   *     |d2| / (2^p - 1)), otherwise the last change |d2|; plus the time
-   * step's, |q(dt/2) - q(dt)| / 3 (Richardson for the second-order Newmark
-   *     rule); and which method gave it.
+   *     are monotone with changes that shrink with p >= min_order
+   *     (error |d2| / (2^p - 1)), otherwise the last change |d2|; plus
+   *     the time step's, |q(dt/2) - q(dt)| / 3 (Richardson for the
+   *     second-order Newmark rule); and which method gave it.
    */
   class ConvergedRun
   {
