@@ -23,7 +23,7 @@ namespace fgimpact
     const double       share = plate.get_geometry().share();
     r.modelled               = true;
     FullMatrix<double> C;
-    compute_compliance(solver, plate, contact.contact_dofs(), C, nullptr);
+    compute_compliance(solver, plate, contact.contact_dofs(), C);
     double last_ratio = 0, last_force = 0;
     for (unsigned int k = 1; k <= 2 * n; ++k)
       {
@@ -112,6 +112,7 @@ namespace fgimpact
         solver.solve(u_plastic, plastic->plastic_force());
         contact.solve_implicit(plate.dof_values(u_plastic, dofs),
                                C,
+                               ColumnRequest(),
                                delta,
                                0.,
                                NewtonControl(),
@@ -123,8 +124,7 @@ namespace fgimpact
                                    "the sphere's radius; reduce the "
                                    "indentation, or raise Geometry/Contact "
                                    "refinement levels."));
-            compute_compliance(
-              solver, plate, contact.contact_dofs(), C, nullptr);
+            compute_compliance(solver, plate, contact.contact_dofs(), C);
             continue;
           }
         // u = K^{-1} (f_p - sum_j lambda_j g_j).

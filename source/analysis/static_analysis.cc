@@ -181,9 +181,10 @@ namespace fgimpact
     ContactState       state;
     for (;;)
       {
-        compute_compliance(solver, plate, contact.contact_dofs(), C, nullptr);
+        compute_compliance(solver, plate, contact.contact_dofs(), C);
         contact.solve_implicit(Vector<double>(contact.contact_dofs().size()),
                                C,
+                               ColumnRequest(),
                                delta,
                                0.,
                                NewtonControl(),

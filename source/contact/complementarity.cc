@@ -75,7 +75,8 @@ namespace fgimpact
             const Vector<double>     &q,
             Vector<double>           &lambda,
             std::vector<bool>        &active,
-            const unsigned int        max_iterations)
+            const unsigned int        max_iterations,
+            const ColumnRequest      &columns)
   {
     const unsigned int m = q.size();
     AssertDimension(A.m(), m);
@@ -83,6 +84,12 @@ namespace fgimpact
     lambda.reinit(m);
     if (active.size() != m)
       active.assign(m, false);
+
+    unsigned int valid   = (columns ? columns(0) : m);
+    const auto   require = [&](const unsigned int n) {
+      if (n > valid)
+        valid = columns(n);
+    };
 
     LcpStatistics  statistics;
     Vector<double> g(m);
@@ -93,6 +100,8 @@ namespace fgimpact
         for (unsigned int j = 0; j < m; ++j)
           if (active[j])
             set.push_back(j);
+        if (!set.empty())
+          require(set.back() + 1);
         solve_active_block(A, q, set, lambda);
         A.vmult(g, lambda);
         g += q;
@@ -115,6 +124,7 @@ namespace fgimpact
     if (!converged)
       {
         statistics.used_fallback = true;
+        require(m);
         for (unsigned int j = 0; j < m; ++j)
           lambda[j] = std::max(0., lambda[j]);
         statistics.converged = projected_gauss_seidel(A, q, lambda);

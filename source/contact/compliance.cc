@@ -11,20 +11,21 @@ namespace fgimpact
     compliance_by_blocks(EffectiveMatrixSolver                      &solver,
                          const PlateModel                           &plate,
                          const std::vector<types::global_dof_index> &dofs,
+                         const unsigned int                          first,
+                         const unsigned int                          last,
                          FullMatrix<double>                         &C,
-                         std::vector<TrilinosWrappers::MPI::Vector> *responses,
-                         const std::size_t n_responses)
+                         std::vector<TrilinosWrappers::MPI::Vector> *responses)
     {
       const unsigned int m     = dofs.size();
       const std::size_t  n     = plate.locally_owned_dofs().n_elements();
-      const unsigned int block = 64;
+      const unsigned int block = compliance_block_size;
       // B is zeroed once; each block sets its k unit entries and clears
       // them after (zeroing all of B per block was 1.3 s of the level-7
       // set-up: 48 MB a block).
-      std::vector<double> B(n * std::min(block, m), 0.), X;
-      for (unsigned int j0 = 0; j0 < m; j0 += block)
+      std::vector<double> B(n * std::min(block, last - first), 0.), X;
+      for (unsigned int j0 = first; j0 < last; j0 += block)
         {
-          const unsigned int k = std::min(block, m - j0);
+          const unsigned int k = std::min(block, last - j0);
           X.resize(n * k);
           for (unsigned int c = 0; c < k; ++c)
             B[c * n + dofs[j0 + c]] = 1.;
@@ -36,7 +37,7 @@ namespace fgimpact
               const double *column = X.data() + c * n;
               for (unsigned int i = 0; i < m; ++i)
                 C(i, j0 + c) = column[dofs[i]];
-              if (responses != nullptr && j0 + c < n_responses)
+              if (responses != nullptr)
                 {
                   auto &r = (*responses)[j0 + c];
                   plate.initialize_vector(r);
@@ -53,32 +54,44 @@ namespace fgimpact
   compute_compliance(EffectiveMatrixSolver                      &solver,
                      const PlateModel                           &plate,
                      const std::vector<types::global_dof_index> &dofs,
-                     FullMatrix<double>                         &C,
-                     std::vector<TrilinosWrappers::MPI::Vector> *responses,
-                     const std::size_t                           n_responses)
+                     FullMatrix<double>                         &C)
+  {
+    C.reinit(dofs.size(), dofs.size());
+    compute_compliance_columns(solver, plate, dofs, 0, dofs.size(), C, nullptr);
+  }
+
+
+
+  void
+  compute_compliance_columns(
+    EffectiveMatrixSolver                      &solver,
+    const PlateModel                           &plate,
+    const std::vector<types::global_dof_index> &dofs,
+    const unsigned int                          first,
+    const unsigned int                          last,
+    FullMatrix<double>                         &C,
+    std::vector<TrilinosWrappers::MPI::Vector> *responses)
   {
     const unsigned int m = dofs.size();
-    C.reinit(m, m);
-    if (responses != nullptr)
-      {
-        // Empty vectors for the responses not kept (a grown set's old
-        // ones go).
-        responses->clear();
-        responses->resize(m);
-      }
+    AssertDimension(C.m(), m);
+    AssertDimension(C.n(), m);
+    Assert(responses == nullptr || responses->size() == m,
+           ExcDimensionMismatch(responses->size(), m));
+    if (first >= last)
+      return;
     if (solver.can_solve_many())
       {
-        compliance_by_blocks(solver, plate, dofs, C, responses, n_responses);
+        compliance_by_blocks(solver, plate, dofs, first, last, C, responses);
         return;
       }
     TrilinosWrappers::MPI::Vector c;
-    for (unsigned int j = 0; j < m; ++j)
+    for (unsigned int j = first; j < last; ++j)
       {
         compute_response(solver, plate, dofs[j], c);
         const Vector<double> column = plate.dof_values(c, dofs);
         for (unsigned int i = 0; i < m; ++i)
           C(i, j) = column[i];
-        if (responses != nullptr && j < n_responses)
+        if (responses != nullptr)
           (*responses)[j].swap(c);
       }
   }
@@ -157,7 +170,7 @@ namespace fgimpact
     for (std::size_t k = 0; k < n; ++k)
       sample.push_back(dofs[n == 1 ? 0 : k * (dofs.size() - 1) / (n - 1)]);
     FullMatrix<double> C;
-    compute_compliance(solver, plate, sample, C, nullptr);
+    compute_compliance(solver, plate, sample, C);
     double largest = 0;
     for (unsigned int i = 0; i < C.m(); ++i)
       largest = std::max(largest, C(i, i));

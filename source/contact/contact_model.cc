@@ -76,10 +76,11 @@ namespace fgimpact
   void
   HertzNodeContact::solve_implicit(const Vector<double>     &u_free,
                                    const FullMatrix<double> &C,
-                                   const double              w_free,
-                                   const double              c_b,
-                                   const NewtonControl      &newton,
-                                   ContactState             &state) const
+                                   const ColumnRequest &,
+                                   const double         w_free,
+                                   const double         c_b,
+                                   const NewtonControl &newton,
+                                   ContactState        &state) const
   {
     const double W_star     = -u_free[0];
     const double chi        = C(0, 0);
@@ -192,10 +193,11 @@ namespace fgimpact
   void
   HertzMidplaneContact::solve_implicit(const Vector<double>     &u_free,
                                        const FullMatrix<double> &C,
-                                       const double              w_free,
-                                       const double              c_b,
-                                       const NewtonControl      &newton,
-                                       ContactState             &state) const
+                                       const ColumnRequest &,
+                                       const double         w_free,
+                                       const double         c_b,
+                                       const NewtonControl &newton,
+                                       ContactState        &state) const
   {
     // alpha = w + u_mid = (w_free - c_b F) + (u_free_mid - C_mt F).
     const double s          = c_b + C(1, 0);

@@ -277,24 +277,39 @@ namespace fgimpact
   void
   ResolvedSphereContact::solve_implicit(const Vector<double>     &u_free,
                                         const FullMatrix<double> &C,
+                                        const ColumnRequest      &columns,
                                         const double              w_free,
                                         const double              c_b,
                                         const NewtonControl &,
                                         ContactState &state) const
   {
     const unsigned int m = dofs.size();
-    FullMatrix<double> A(C);
-    Vector<double>     q(m);
+    // A = C + c_b 1 1^T (+ H), column by column as C's columns become valid
+    // (a column not yet valid holds C's zeros: finite, as solve_lcp needs).
+    FullMatrix<double> A(m, m);
+    const auto fill = [&](const unsigned int first, const unsigned int last) {
+      for (unsigned int i = 0; i < m; ++i)
+        for (unsigned int j = first; j < last; ++j)
+          {
+            A(i, j) = C(i, j) + c_b;
+            if (ball_matrix.m() == m)
+              A(i, j) += 1. * ball_matrix(i, j);
+          }
+    };
+    fill(0, m);
+    unsigned int        valid   = (columns ? columns(0) : m);
+    const ColumnRequest request = [&](const unsigned int n) {
+      const unsigned int now = columns(n);
+      fill(valid, now);
+      valid = now;
+      return valid;
+    };
+    Vector<double> q(m);
     for (unsigned int i = 0; i < m; ++i)
-      {
-        q[i] = profile[i] - w_free - u_free[i];
-        for (unsigned int j = 0; j < m; ++j)
-          A(i, j) += c_b;
-      }
-    if (ball_matrix.m() == m)
-      A.add(1., ball_matrix);
+      q[i] = profile[i] - w_free - u_free[i];
     Vector<double>      lambda;
-    const LcpStatistics statistics = solve_lcp(A, q, lambda, active);
+    const LcpStatistics statistics =
+      solve_lcp(A, q, lambda, active, 50, columns ? request : ColumnRequest());
     // Not solved: the time stepper reports the step (as for Newton).
     state.newton_iterations    = statistics.converged ?
                                    statistics.iterations :
@@ -308,6 +323,29 @@ namespace fgimpact
     Vector<double> g(m);
     A.vmult(g, lambda);
     g += q;
+    const double smallest_gap = describe_extent(lambda, g, state);
+    state.node_displacement   = u_free[0];
+    for (unsigned int k = 0; k < m; ++k)
+      state.node_displacement -= C(0, k) * lambda[k];
+    // The indentation column: while in contact the half-space Hertz
+    // approach (F/K)^{2/3}, K = 4/3 Q_ref sqrt(R), after separation minus
+    // the smallest gap; continuous through 0, so the monitor's zero
+    // crossing gives the separation time.  F is the whole plate's force
+    // (the forces here are the symmetric part's share of it).
+    const double K = 4. / 3. * reference_modulus * std::sqrt(R);
+    state.alpha =
+      (state.force > 0. ? std::pow(state.force / share / K, 2. / 3.) :
+                          -std::max(smallest_gap, 0.));
+  }
+
+
+
+  double
+  ResolvedSphereContact::describe_extent(const Vector<double> &lambda,
+                                         const Vector<double> &g,
+                                         ContactState         &state) const
+  {
+    const unsigned int m = dofs.size();
     state.n_active       = 0;
     state.contact_radius = 0;
     state.max_pressure   = 0;
@@ -335,18 +373,7 @@ namespace fgimpact
     // sphere cap.
     state.candidates_exhausted =
       (state.n_active > 0 && farthest >= reach() - 0.5 * smallest_spacing);
-    state.node_displacement = u_free[0];
-    for (unsigned int k = 0; k < m; ++k)
-      state.node_displacement -= C(0, k) * lambda[k];
-    // The indentation column: while in contact the half-space Hertz
-    // approach (F/K)^{2/3}, K = 4/3 Q_ref sqrt(R), after separation minus
-    // the smallest gap; continuous through 0, so the monitor's zero
-    // crossing gives the separation time.  F is the whole plate's force
-    // (the forces here are the symmetric part's share of it).
-    const double K = 4. / 3. * reference_modulus * std::sqrt(R);
-    state.alpha =
-      (state.force > 0. ? std::pow(state.force / share / K, 2. / 3.) :
-                          -std::max(smallest_gap, 0.));
+    return smallest_gap;
   }
 
 

@@ -77,7 +77,13 @@ namespace fgimpact
         // contact DoFs (one all-reduce of m values, in predict()).
         const Vector<double> u_free = plate.predict(step, t, contact);
         contact_model.solve_implicit(
-          u_free, plate.compliance(), w_tilde, 1. / (m * a0), newton, contact);
+          u_free,
+          plate.compliance(),
+          [this](const unsigned int n) { return plate.require_compliance(n); },
+          w_tilde,
+          1. / (m * a0),
+          newton,
+          contact);
         if (contact.candidates_exhausted)
           {
             // Nothing of the state has changed yet: grow and repeat.

@@ -7,9 +7,9 @@
 #include <fgimpact/base/patterns.h>
 #include <fgimpact/contact/compliance.h>
 #include <fgimpact/time/contact_coupler.h>
+#include <fgimpact/time/modified_mass.h>
 #include <fgimpact/time/time_stepper.h>
 
-#include <Epetra_CrsMatrix.h>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -90,6 +90,7 @@ namespace fgimpact
                              const PlateModel                        &plate,
                              const ContactModel                      &contact)
         : newmark(parameters.newmark, parameters.time_step)
+        , mass(plate)
         , solver(solver)
         , plate(plate)
         , contact_model(contact)
@@ -100,9 +101,7 @@ namespace fgimpact
       void
       initialize(const bool measure_reference_costs) override
       {
-        effective.copy_from(plate.stiffness_matrix());
-        setup_mass_matrix();
-        effective.add(newmark.mass_factor(), *mass);
+        mass.build_effective_matrix(newmark.mass_factor(), massless, effective);
         solver.initialize(effective, &plate.get_dof_handler());
         iterative = (solver.type() == "cg");
 
@@ -159,6 +158,24 @@ namespace fgimpact
         return contact_compliance;
       }
 
+      unsigned int
+      require_compliance(const unsigned int n) override
+      {
+        // Whole blocks counted from 0: a column is bitwise the same
+        // whenever it is asked for (a resumed run's are an uninterrupted
+        // run's).
+        const unsigned int block = compliance_block_size;
+        const unsigned int end =
+          std::min<std::size_t>(dofs.size(), (n + block - 1) / block * block);
+        if (end > n_columns)
+          {
+            fgimpact::compute_compliance_columns(
+              solver, plate, dofs, n_columns, end, contact_compliance, &c);
+            n_columns = end;
+          }
+        return n_columns;
+      }
+
       bool
       correct(const unsigned int  step,
               const double        t,
@@ -188,7 +205,7 @@ namespace fgimpact
         double plastic_energy = 0; // - u^T f_p + 1/2 eps_p : D : eps_p
         if (plastic && !plastic_step_converged(contact, plastic_energy))
           return false;
-        mass->vmult(Mu_new, u_new);
+        mass.vmult(Mu_new, u_new);
         // u^T K u from K_eff u = M r_n + f_p - sum lambda_j g_j, K_eff =
         // K + a0 M, with the f_p u was solved with;
         // with plastic strain, the elastic energy is 1/2 u^T K u - u^T f_p
@@ -202,8 +219,8 @@ namespace fgimpact
         // Refresh the carried products now and then against round-off.
         if (step % 64 == 0)
           {
-            mass->vmult(Mv, v);
-            mass->vmult(Ma, a);
+            mass.vmult(Mv, v);
+            mass.vmult(Ma, a);
           }
         kinetic = 0.5 * (v * Mv);
 
@@ -224,15 +241,15 @@ namespace fgimpact
       {
         dofs     = contact_dofs;
         massless = massless_dofs;
-        if (mass != &plate.mass_matrix())
+        if (!massless.empty())
           {
-            setup_mass_matrix();
-            effective.copy_from(plate.stiffness_matrix());
-            effective.add(newmark.mass_factor(), *mass);
+            mass.build_effective_matrix(newmark.mass_factor(),
+                                        massless,
+                                        effective);
             solver.initialize(effective, &plate.get_dof_handler());
-            mass->vmult(Mu, u);
-            mass->vmult(Mv, v);
-            mass->vmult(Ma, a);
+            mass.vmult(Mu, u);
+            mass.vmult(Mv, v);
+            mass.vmult(Ma, a);
           }
         compute_compliance();
       }
@@ -250,13 +267,13 @@ namespace fgimpact
             solve_contact_free(step, step * newmark.time_step(), no_force);
             if (step == 1)
               u_new.add(-1., response(0));
-            mass->vmult(Mu_new, u_new);
+            mass.vmult(Mu_new, u_new);
             newmark.update(u_new, u, v, a);
             newmark.update(Mu_new, Mu, Mv, Ma);
             if (step % 64 == 0)
               {
-                mass->vmult(Mv, v);
-                mass->vmult(Ma, a);
+                mass.vmult(Mv, v);
+                mass.vmult(Ma, a);
               }
             observe(step, u, v, Mv);
           }
@@ -273,14 +290,13 @@ namespace fgimpact
         s << "implicit Newmark (beta = " << newmark.beta()
           << ", gamma = " << newmark.gamma() << "), linear solver "
           << solver.type();
-        if (mass != &plate.mass_matrix())
+        if (!massless.empty())
           s << "; modified mass: the contact candidates' z DoFs massless ("
-            << removed_mass << " kg removed)";
-        if (contact_model.n_likely_active() < dofs.size())
-          s << "; unit responses stored for the "
-            << contact_model.n_likely_active() << " of " << dofs.size()
-            << " contact DoFs the contact is likely to reach (the others "
-               "solved on demand)";
+            << mass.removed() << " kg removed)";
+        if (contact_model.compliance_on_demand())
+          s << "; the compliance's columns and unit responses computed as "
+               "the contact reaches them, "
+            << compliance_block_size << " contact DoFs at a time";
         return s.str();
       }
 
@@ -311,61 +327,21 @@ namespace fgimpact
       }
 
     private:
-      /**
-       * The plate's consistent mass matrix, or for a contact model with
-       * massless DoFs (the modified mass method of Khenous, Laborde and
-       * Renard 2008) a copy with their rows and columns zeroed: contact
-       * nodes without inertia cannot chatter, and the removed mass, on the
-       * contact candidates alone, vanishes with the element size (logged).
-       */
-      void
-      setup_mass_matrix()
-      {
-        mass = &plate.mass_matrix();
-        if (massless.empty())
-          return;
-        modified_mass.copy_from(plate.mass_matrix());
-        std::vector<bool> zero(plate.n_dofs(), false);
-        for (const auto dof : massless)
-          zero[dof] = true;
-        // In place on the Epetra rows (deal.II's entry-wise set() on an
-        // assembled Trilinos matrix costs a search per call).
-        auto &matrix =
-          const_cast<Epetra_CrsMatrix &>(modified_mass.trilinos_matrix());
-        double removed = 0; // kg: sum of the zeroed rows' entries
-        for (int row = 0; row < matrix.NumMyRows(); ++row)
-          {
-            int     n       = 0;
-            double *values  = nullptr;
-            int    *columns = nullptr;
-            matrix.ExtractMyRowView(row, n, values, columns);
-            const bool zero_row = zero[matrix.RowMap().GID(row)];
-            for (int k = 0; k < n; ++k)
-              if (zero_row || zero[matrix.ColMap().GID(columns[k])])
-                {
-                  if (zero_row)
-                    removed += values[k];
-                  values[k] = 0.;
-                }
-          }
-        removed_mass =
-          Utilities::MPI::sum(removed, plate.get_mpi_communicator());
-        mass = &modified_mass;
-      }
-
-      /// The dense compliance C (m/N) and c_j = K_eff^{-1} g_j, stored
-      /// for the DoFs the contact is likely to reach only (a resolved
-      /// contact's outer candidates rarely are: at level 7 of the default
-      /// scene their responses were 40 % of the run's memory).
+      /// The dense compliance C (m/N) and c_j = K_eff^{-1} g_j, stored:
+      /// all of them now, or for a contact model that asks for them
+      /// (compliance_on_demand()) those it reaches, a block at a time
+      /// (the resolved contact at level 7 of the default scene reaches 320
+      /// of its 849 candidates; their responses were 20 % of the run's
+      /// memory and their solves 9 of its 50 s).
       void
       compute_compliance()
       {
-        fgimpact::compute_compliance(solver,
-                                     plate,
-                                     dofs,
-                                     contact_compliance,
-                                     &c,
-                                     contact_model.n_likely_active());
+        contact_compliance.reinit(dofs.size(), dofs.size());
+        c.clear();
+        c.resize(dofs.size());
+        n_columns = 0;
+        if (!contact_model.compliance_on_demand())
+          require_compliance(dofs.size());
       }
 
       /// c_j, computed now if it was not stored (one solve, on every rank:
@@ -463,10 +439,8 @@ namespace fgimpact
         measured_costs.solve = timer.wall_time() / n_solves;
       }
 
-      const NewmarkIntegrator               newmark;
-      TrilinosWrappers::SparseMatrix        modified_mass;
-      const TrilinosWrappers::SparseMatrix *mass         = nullptr;
-      double                                removed_mass = 0; // kg
+      const NewmarkIntegrator newmark;
+      ModifiedMass            mass;
       // Declared before the solver, which refers to it: members are
       // destroyed in reverse order (Amesos_Mumps crashed otherwise).
       TrilinosWrappers::SparseMatrix             effective;
@@ -477,10 +451,13 @@ namespace fgimpact
       TrilinosWrappers::MPI::Vector              Mu, Mv, Ma, u_new, Mu_new, rhs;
       std::vector<TrilinosWrappers::MPI::Vector> c;
       FullMatrix<double>                         contact_compliance;
-      Vector<double>                             u_free; // m, contact DoFs
-      bool                                       iterative         = false;
-      PlasticPlate                              *plastic           = nullptr;
-      double                                     plastic_tolerance = 0;
+      /// The compliance's first n_columns columns (and their responses)
+      /// are computed.
+      unsigned int   n_columns = 0;
+      Vector<double> u_free; // m, contact DoFs
+      bool           iterative         = false;
+      PlasticPlate  *plastic           = nullptr;
+      double         plastic_tolerance = 0;
       /// The step whose increment the plastic state is in.
       unsigned int increment = numbers::invalid_unsigned_int;
     };

@@ -148,8 +148,9 @@ namespace
     void
     solve_implicit(const Vector<double>     &u_free,
                    const FullMatrix<double> &C,
-                   const double              w_free,
-                   const double              c_b,
+                   const ColumnRequest &,
+                   const double w_free,
+                   const double c_b,
                    const NewtonControl &,
                    ContactState &state) const override
     {

@@ -4,11 +4,20 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <functional>
 #include <vector>
 
 namespace fgimpact
 {
   using namespace dealii;
+
+  /**
+   * Columns of a Delassus matrix computed on demand, nearest contact DoF
+   * first: columns(n) makes the first n columns of the matrix valid (it
+   * writes them into the matrix its caller holds) and returns how many are
+   * valid now, at least n.  An empty request: all columns are valid.
+   */
+  using ColumnRequest = std::function<unsigned int(unsigned int)>;
 
   /// What solve_lcp() did.
   struct LcpStatistics
@@ -45,13 +54,21 @@ namespace fgimpact
    * Delassus matrices but is not guaranteed for every SPD matrix, so after
    * `max_iterations` the projected Gauss-Seidel method (convergent for any
    * SPD matrix) finishes from the last iterate.
+   *
+   * Only the columns of the active set enter: A_AA, and the gaps
+   * g = q + A_{:A} lambda_A (lambda is 0 off the set).  With `columns`, A's
+   * columns are asked for as the set reaches them (all of them before the
+   * fallback); a column not yet valid must hold finite values (they are
+   * multiplied by lambda_j = 0 exactly, so the result is bitwise that of
+   * the whole matrix).
    */
   LcpStatistics
   solve_lcp(const FullMatrix<double> &A,
             const Vector<double>     &q,
             Vector<double>           &lambda,
             std::vector<bool>        &active,
-            const unsigned int        max_iterations = 50);
+            const unsigned int        max_iterations = 50,
+            const ColumnRequest      &columns        = ColumnRequest());
 } // namespace fgimpact
 
 #endif

@@ -13,24 +13,42 @@ namespace fgimpact
 {
   using namespace dealii;
 
+  /// Unit loads solved together in the compliance's blocked solves (and
+  /// the granularity of columns computed on demand).
+  constexpr unsigned int compliance_block_size = 64;
+
   /**
    * The compliance of a matrix A (the effective matrix K + a0 M of a
    * Newmark step, or K of a static problem) at the contact DoFs: for the
    * unit loads g_j the responses c_j = A^{-1} g_j (m solves with the
    * factorized A) and the dense Delassus matrix C_ij = g_i^T c_j (m/N),
-   * symmetric positive definite.  The responses of the first
-   * n_responses DoFs are kept if asked for (one vector per DoF: the
-   * back-substitution u -= sum lambda_j c_j costs no solve); the others
-   * are left empty (size 0).  Collective.
+   * symmetric positive definite.  Collective.
    */
   void
-  compute_compliance(
+  compute_compliance(EffectiveMatrixSolver                      &solver,
+                     const PlateModel                           &plate,
+                     const std::vector<types::global_dof_index> &dofs,
+                     FullMatrix<double>                         &C);
+
+  /**
+   * Columns [first, last) of the compliance C (m x m, the rest left as
+   * they are), and if `responses` is given (m vectors) the responses c_j
+   * of these columns, one vector each (the back-substitution
+   * u -= sum lambda_j c_j then costs no solve).  With cholmod on one
+   * rank in blocks of compliance_block_size unit loads counted from
+   * `first`: a caller that asks for whole blocks from 0 gets bitwise the
+   * columns of compute_compliance(), whatever the order it asks in.
+   * Collective.
+   */
+  void
+  compute_compliance_columns(
     EffectiveMatrixSolver                      &solver,
     const PlateModel                           &plate,
     const std::vector<types::global_dof_index> &dofs,
+    const unsigned int                          first,
+    const unsigned int                          last,
     FullMatrix<double>                         &C,
-    std::vector<TrilinosWrappers::MPI::Vector> *responses,
-    const std::size_t n_responses = static_cast<std::size_t>(-1));
+    std::vector<TrilinosWrappers::MPI::Vector> *responses);
 
   /**
    * x += sum_k w_k y_k over the locally owned entries, four terms per

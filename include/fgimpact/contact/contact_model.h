@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <fgimpact/base/selection.h>
+#include <fgimpact/contact/complementarity.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/impactor.h>
 #include <fgimpact/output/checkpoint.h>
@@ -91,12 +92,16 @@ namespace fgimpact
      * Contact forces at t_{n+1} of an implicit step: u_free (m, z
      * displacement at the contact DoFs, positive up), C (m/N), w_free (m,
      * the ball's displacement without contact, positive down), c_b (m/N).
+     * A model with compliance_on_demand() asks for C's columns through
+     * `columns` (which fills them in C) as the contact reaches them; the
+     * others are given C whole (`columns` may be empty).
      * Sets every field of state; newton_iterations is
      * numbers::invalid_unsigned_int if Newton did not converge.
      */
     virtual void
     solve_implicit(const Vector<double>     &u_free,
                    const FullMatrix<double> &C,
+                   const ColumnRequest      &columns,
                    const double              w_free,
                    const double              c_b,
                    const NewtonControl      &newton,
@@ -174,6 +179,16 @@ namespace fgimpact
     n_likely_active() const
     {
       return contact_dofs().size();
+    }
+
+    /// Whether solve_implicit() asks for the compliance's columns as it
+    /// needs them (the resolved contact: its active set reaches a third
+    /// of its candidates, which are sorted by distance), so that a time
+    /// stepper computes them, and their unit responses, on demand.
+    virtual bool
+    compliance_on_demand() const
+    {
+      return false;
     }
     /// DoFs to be given no mass (the modified mass method; empty: the
     /// consistent mass matrix unchanged).
@@ -291,6 +306,7 @@ namespace fgimpact
     void
     solve_implicit(const Vector<double>     &u_free,
                    const FullMatrix<double> &C,
+                   const ColumnRequest      &columns,
                    const double              w_free,
                    const double              c_b,
                    const NewtonControl      &newton,
@@ -357,6 +373,7 @@ namespace fgimpact
     void
     solve_implicit(const Vector<double>     &u_free,
                    const FullMatrix<double> &C,
+                   const ColumnRequest      &columns,
                    const double              w_free,
                    const double              c_b,
                    const NewtonControl      &newton,

@@ -81,10 +81,17 @@ namespace fgimpact
     void
     solve_implicit(const Vector<double>     &u_free,
                    const FullMatrix<double> &C,
+                   const ColumnRequest      &columns,
                    const double              w_free,
                    const double              c_b,
                    const NewtonControl      &newton,
                    ContactState             &state) const override;
+
+    bool
+    compliance_on_demand() const override
+    {
+      return true;
+    }
 
     /// Not available: the explicit scheme is refused with this model.
     void
@@ -202,6 +209,13 @@ namespace fgimpact
     /// ball_matrix for the current candidates (nothing for a rigid ball).
     void
     compute_ball_compliance();
+    /// The contact's extent at the forces lambda (N) and gaps g (m): the
+    /// active nodes, the largest pressure, the contact radius and whether
+    /// the candidates are exhausted; returns the smallest gap (m).
+    double
+    describe_extent(const Vector<double> &lambda,
+                    const Vector<double> &g,
+                    ContactState         &state) const;
 
     const PlateModel                            &plate;
     const Point<2>                               impact_point;

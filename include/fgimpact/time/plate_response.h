@@ -71,9 +71,22 @@ namespace fgimpact
             const double        t,
             const ContactState &previous) = 0;
 
-    /// C_ij (m/N) at the contact DoFs, valid after predict().
+    /// C_ij (m/N) at the contact DoFs, valid after predict(): its first
+    /// require_compliance() columns.
     virtual const FullMatrix<double> &
     compliance() const = 0;
+
+    /// Make compliance()'s first n columns valid (for a contact model
+    /// that asks for them, ContactModel::compliance_on_demand()); returns
+    /// how many are valid, at least n.  Collective: every rank asks the
+    /// same (the contact problem is solved alike on all).  Default: all
+    /// columns are always valid.
+    virtual unsigned int
+    require_compliance(const unsigned int n)
+    {
+      (void)n;
+      return compliance().n();
+    }
 
     /**
      * Finish the step with the contact forces contact.forces (N): the
