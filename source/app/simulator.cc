@@ -243,7 +243,10 @@ namespace fgimpact
         converged->setup();
         return;
       }
-    setup_plate();
+    if (plate)
+      total_timer.restart(); // the plate taken over: the driver's set-up
+    else
+      setup_plate();
     switch (parameters.problem_type)
       {
         case ProblemType::impact:
@@ -268,6 +271,23 @@ namespace fgimpact
           break;
       }
     driver->setup();
+  }
+
+
+
+  void
+  Simulator::take_plate_of(Simulator &other)
+  {
+    Assert(!plate && !driver, ExcMessage("take_plate_of() before setup()"));
+    other.driver.reset(); // it refers to the plate
+    geometry          = std::move(other.geometry);
+    material          = std::move(other.material);
+    scene             = std::move(other.scene);
+    plate             = std::move(other.plate);
+    resource_estimate = other.resource_estimate;
+    pcout << "fgimpact: the plate of the run before ("
+          << plate->n_active_cells() << " cells, " << plate->n_dofs()
+          << " DoFs) taken over\n";
   }
 
 

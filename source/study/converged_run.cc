@@ -285,27 +285,29 @@ namespace fgimpact
     sequence.push_back(run_one(*first, parameters_of(first_levels, false)));
     sequence.back().wall_time += first_setup_time;
     first.reset();
+    std::unique_ptr<Simulator> last;
     for (unsigned int levels = first_levels + 1;
          sequence.size() < 2 || largest_change().first >= tolerance;
          ++levels)
       {
+        last.reset();
         release_freed_memory(); // the level before's simulator is gone
         check_fits(levels);
         running_levels     = levels;
         const Parameters p = parameters_of(levels, false);
         Timer            timer;
-        Simulator        simulator(p, communicator);
-        simulator.setup();
-        sequence.push_back(run_one(simulator, p));
+        last = std::make_unique<Simulator>(p, communicator);
+        last->setup();
+        sequence.push_back(run_one(*last, p));
         sequence.back().wall_time = timer.wall_time();
         const auto [change, key]  = largest_change();
         pcout << "Accuracy = converged: level " << levels
               << ", largest change from level " << levels - 1 << ": "
               << percent(change) << " (" << key << ")\n";
       }
-    release_freed_memory(); // the last level's simulator is gone
-
-    // The finest level at half the time step, with the user's outputs.
+    // The finest level at half the time step, with the user's outputs, on
+    // its plate (mesh and matrices; at level 5 of the default scene 0.2 s
+    // of the final run's 2.6 s).
     const Parameters p = parameters_of(sequence.back().levels, true);
     pcout << "Accuracy = converged: level " << sequence.back().levels
           << " at half the time step (" << p.time_integration.time_step * 1e6
@@ -314,6 +316,9 @@ namespace fgimpact
     running_levels = sequence.back().levels;
     Timer     timer;
     Simulator simulator(p, communicator);
+    simulator.take_plate_of(*last);
+    last.reset();
+    release_freed_memory(); // the last level's driver is gone
     for (const auto &observer : observers)
       simulator.add_history_observer(observer);
     simulator.setup();
