@@ -158,6 +158,54 @@ main()
               again.iterations);
   ok = ok && again.iterations == 1;
 
+  // Columns on demand (the resolved contact's compliance): the chain
+  // seen from the punch's tip, nearest first, solved with a matrix whose
+  // columns are copied from A in blocks of 64 as the LCP asks for them.
+  // The forces must be bitwise those of the whole matrix, from the blocks
+  // that reach the active set only.
+  {
+    FullMatrix<double> B(m, m), partial(m, m);
+    Vector<double>     p(m), whole, lazy;
+    for (unsigned int i = 0; i < m; ++i)
+      {
+        for (unsigned int j = 0; j < m; ++j)
+          B(i, j) = 1e-9 * std::exp(-std::abs(double(i) - double(j)) / 10.);
+        p[i] = 1e-6 * (std::pow(i / 100., 2) - 0.3);
+      }
+    std::vector<bool> set_whole, set_lazy;
+    solve_lcp(B, p, whole, set_whole);
+    unsigned int        valid   = 0;
+    const ColumnRequest request = [&](const unsigned int n) {
+      for (; valid < std::min(m, (n + 63) / 64 * 64); ++valid)
+        for (unsigned int i = 0; i < m; ++i)
+          partial(i, valid) = B(i, valid);
+      return valid;
+    };
+    const LcpStatistics t = solve_lcp(partial, p, lazy, set_lazy, 50, request);
+    unsigned int        n_active = 0, farthest = 0;
+    double              difference = 0;
+    for (unsigned int j = 0; j < m; ++j)
+      {
+        difference = std::max(difference, std::abs(lazy[j] - whole[j]));
+        if (whole[j] > 0.)
+          {
+            ++n_active;
+            farthest = j;
+          }
+      }
+    std::printf("columns on demand, m = %u: %u active (farthest %u), %u "
+                "columns asked for, max |lambda - lambda_whole| = %.1e, "
+                "%u iterations\n",
+                m,
+                n_active,
+                farthest,
+                valid,
+                difference,
+                t.iterations);
+    ok = ok && difference == 0. && valid == (farthest + 64) / 64 * 64 &&
+         valid < m && set_lazy == set_whole;
+  }
+
   std::printf("%s\n", ok ? "OK" : "FAILED");
   return ok ? 0 : 1;
 }

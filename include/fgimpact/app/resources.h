@@ -46,7 +46,8 @@ namespace fgimpact
     double mesh = 0, matrices = 0, factor = 0, vectors = 0, output = 0;
     /// A resolved contact: its candidates (the whole plate's, for the
     /// log), and the bytes of their dense compliance and of the unit
-    /// responses the implicit stepper stores (n_likely_active() vectors).
+    /// responses the implicit stepper computes as the contact reaches
+    /// them (counted as n_likely_active() vectors).
     double n_candidates = 0, contact = 0;
     /// Whether the run factorizes (implicit, or static/modal).
     bool factorizes = false;

@@ -172,9 +172,8 @@ namespace fgimpact
 
     /// The contact DoFs are ordered so that the contact is expected to
     /// reach only the first n_likely_active() of them (a resolved
-    /// contact's candidates by their distance from the impact point): a
-    /// time stepper stores the unit responses of these and computes any
-    /// other on demand.
+    /// contact's candidates by their distance from the impact point): the
+    /// memory estimate counts the unit responses of these.
     virtual std::size_t
     n_likely_active() const
     {
