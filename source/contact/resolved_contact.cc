@@ -284,9 +284,13 @@ namespace fgimpact
                                         ContactState &state) const
   {
     const unsigned int m = dofs.size();
-    // A = C + c_b 1 1^T (+ H), column by column as C's columns become valid
-    // (a column not yet valid holds C's zeros: finite, as solve_lcp needs).
-    FullMatrix<double> A(m, m);
+    // A = C + c_b 1 1^T (+ H), filled in the valid columns of C only and
+    // as more become valid; the others hold zeros or an earlier step's
+    // values, finite as solve_lcp needs.  Kept between steps: allocating
+    // and zeroing the m x m matrix every step was 5.8 MB at level 7.
+    if (delassus.m() != m)
+      delassus.reinit(m, m);
+    FullMatrix<double> &A = delassus;
     const auto fill = [&](const unsigned int first, const unsigned int last) {
       for (unsigned int i = 0; i < m; ++i)
         for (unsigned int j = first; j < last; ++j)
@@ -296,8 +300,8 @@ namespace fgimpact
               A(i, j) += 1. * ball_matrix(i, j);
           }
     };
-    fill(0, m);
-    unsigned int        valid   = (columns ? columns(0) : m);
+    unsigned int valid = (columns ? columns(0) : m);
+    fill(0, valid);
     const ColumnRequest request = [&](const unsigned int n) {
       const unsigned int now = columns(n);
       fill(valid, now);

@@ -236,6 +236,9 @@ namespace fgimpact
     double                    smallest_spacing = 0; // m
     /// The active set of the last solve (warm start).
     mutable std::vector<bool> active;
+    /// solve_implicit()'s LCP matrix C + c_b 1 1^T (+ H), m x m, refilled
+    /// every step in C's valid columns (kept to spare the allocation).
+    mutable FullMatrix<double> delassus;
   };
 } // namespace fgimpact
 
