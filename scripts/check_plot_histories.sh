@@ -100,4 +100,30 @@ check "csv.DictReader reads convergence.csv's keys" \
   dict_reader "$work/conv/convergence.csv" contact_refinement_levels peak_contact_force_N
 check "csv.DictReader reads study.csv's keys" \
   dict_reader "$work/study/study.csv" "Impactor/Initial velocity" peak_contact_force_N
+
+# summary.json (issue 37): json.load reads it in one line, with every key of
+# summary.txt in the same order, each number equal to summary.txt's value
+# and none/inf/nan as null, for a run and a study's case.
+json_matches() { # DIR: summary.json against summary.txt
+  "$python" - "$1" <<'PY'
+import json, math, sys
+d = sys.argv[1]
+data = json.load(open(d + "/summary.json"))
+pairs = [l.rstrip("\n").split(" = ", 1) for l in open(d + "/summary.txt")
+         if not l.startswith("#")]
+ok = list(data)[1:] == [k for k, _ in pairs] and "provenance" in data
+for k, v in pairs:
+    j = data[k]
+    if v in ("none", "inf", "-inf", "nan", "-nan"):
+        ok = ok and j is None
+    elif isinstance(j, (int, float)) and not isinstance(j, bool):
+        ok = ok and math.isclose(j, float(v), rel_tol=0, abs_tol=0)
+    else:
+        ok = ok and j == v
+sys.exit(0 if ok else 1)
+PY
+}
+check "json.load reads summary.json: summary.txt's keys, numbers and text" \
+  json_matches "$work/run"
+check "... and a study case's summary.json" json_matches "$work/study/case_001"
 exit $failed

@@ -67,4 +67,17 @@ namespace fgimpact
                      2. * mu * theta_bar * outer_product(n, n);
     return result;
   }
+
+
+
+  SymmetricTensor<2, 3>
+  J2Plasticity::admissible_stress(const SymmetricTensor<2, 3> &sigma,
+                                  const double                 yield_stress)
+  {
+    const SymmetricTensor<2, 3> s  = deviator(sigma);
+    const double                vm = std::sqrt(1.5) * s.norm();
+    if (!(vm > yield_stress))
+      return sigma;
+    return sigma - (1. - yield_stress / vm) * s;
+  }
 } // namespace fgimpact

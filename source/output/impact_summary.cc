@@ -125,13 +125,13 @@ namespace fgimpact
       char text[300];
       if (r.plastic.modelled)
         {
-          // The check's stress is Hooke's of the total strain: what an
-          // elastic metal would carry.
+          // What an elastic metal would carry: Hooke's stress of the
+          // total strain (the plastic strain not taken off).
           std::snprintf(text,
                         sizeof(text),
                         "plastic metal modelled (J2; the elastic stress "
                         "would be %.2f x the yield strength)",
-                        r.yield_peak.ratio);
+                        r.elastic_yield_peak.ratio);
           return {text, false};
         }
       const bool broken = r.yield_peak.ratio > 1.;
@@ -139,8 +139,8 @@ namespace fgimpact
                     sizeof(text),
                     "elastic metal (von Mises %.2f x the yield strength%s)",
                     r.yield_peak.ratio,
-                    broken ? ": set Material/Plasticity = J2 with "
-                             "Contact/Model = resolved sphere" :
+                    broken ? ": set Material/Plasticity to J2 with "
+                             "Contact/Model to resolved sphere" :
                              "");
       return {text, broken};
     }
@@ -187,7 +187,7 @@ namespace fgimpact
                       sizeof(text),
                       "rigid ball (E* %.1f %% above the elastic ball's%s)",
                       100. * r.rigid_ball_modulus_excess,
-                      broken ? ": set Impactor/Material = elastic" : "");
+                      broken ? ": set Impactor/Material to elastic" : "");
         add(broken ? breaks : holds, text);
       }
     bool small_strains = true;
@@ -200,7 +200,19 @@ namespace fgimpact
     small_strains =
       small_strains && !(r.plastic.modelled &&
                          r.plastic.max_plastic_strain > plastic_strain_limit);
-    add(small_strains ? holds : breaks, "small strains");
+    if (r.plastic.modelled)
+      {
+        // The number behind the verdict.
+        std::snprintf(text,
+                      sizeof(text),
+                      "small strains (largest equivalent plastic strain "
+                      "%.2f %% against %.0f %%)",
+                      100. * r.plastic.max_plastic_strain,
+                      100. * plastic_strain_limit);
+        add(small_strains ? holds : breaks, text);
+      }
+    else
+      add(small_strains ? holds : breaks, "small strains");
     // No commas: study.csv holds this text as it is.
     return "breaks: " + (breaks.empty() ? std::string("none") : breaks) +
            " | holds: " + (holds.empty() ? std::string("none") : holds) +
@@ -417,6 +429,13 @@ namespace fgimpact
       std::vector<SummaryKey> keys = strength_keys<&R::yield_peak>(yield);
       for (const auto &key : strength_keys<&R::tension_peak>(tension))
         keys.push_back(key);
+      // The elastic stress (C eps) over the initial yield strength: in a
+      // plastic run max_von_mises_over_yield is the stress the metal
+      // carries over its current yield stress, this one what an elastic
+      // metal would carry.
+      keys.push_back(number("elastic_von_mises_over_yield", 4, [](const R &r) {
+        return r.elastic_yield_peak.ratio;
+      }));
       keys.push_back(number("rigid_ball_modulus_excess", 4, [](const R &r) {
         return r.rigid_ball_modulus_excess;
       }));

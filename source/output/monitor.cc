@@ -58,12 +58,27 @@ namespace fgimpact
     history             = history_writer.get();
     add(std::move(history_writer));
     if (!parameters.probe_points.points.empty())
-      add(std::make_unique<ProbeWriter>(
-        std::make_unique<ProbeSet>(plate, parameters.probe_points.points),
-        results.probe_peaks,
-        parameters.directory,
-        whole,
-        pcout.is_active()));
+      {
+        auto set =
+          std::make_unique<ProbeSet>(plate, parameters.probe_points.points);
+        probe_set = set.get();
+        add(std::make_unique<ProbeWriter>(std::move(set),
+                                          results.probe_peaks,
+                                          parameters.directory,
+                                          whole,
+                                          pcout.is_active()));
+      }
+  }
+
+
+
+  void
+  ImpactMonitor::set_plasticity(const PlasticPlate &plasticity)
+  {
+    mid_probe.set_plasticity(plasticity);
+    top_probe.set_plasticity(plasticity);
+    if (probe_set)
+      probe_set->set_plasticity(plasticity);
   }
 
 

@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -182,6 +183,92 @@ namespace fgimpact
     for (const auto &[name, value] : lines)
       text += name + " = " + value + '\n';
     write_file_atomically(filename, text);
+    // summary.json beside it: the same entries, typed, one object.
+    const std::string json =
+      filename.size() > 4 && filename.substr(filename.size() - 4) == ".txt" ?
+        filename.substr(0, filename.size() - 4) + ".json" :
+        filename + ".json";
+    write_file_atomically(json, summary_json(preamble(), lines));
+  }
+
+
+
+  std::string
+  summary_json(const std::string &preamble, const SummaryEntries &entries)
+  {
+    const auto quoted = [](const std::string &text) {
+      std::string out = "\"";
+      for (const char c : text)
+        {
+          if (c == '"' || c == '\\')
+            out += '\\';
+          if (static_cast<unsigned char>(c) < 0x20)
+            {
+              char code[8];
+              std::snprintf(code, sizeof(code), "\\u%04x", c);
+              out += code;
+            }
+          else
+            out += c;
+        }
+      return out + '"';
+    };
+    // A value that is a finite number in full is a JSON number; inf, nan
+    // and none (not reached, not measured) are null; the rest strings.
+    const auto value_of = [&quoted](const std::string &value) {
+      if (value == "none" || value == "inf" || value == "-inf" ||
+          value == "nan" || value == "-nan")
+        return std::string("null");
+      // JSON's number grammar, -?(0|[1-9]d*)(.d+)?([eE][+-]?d+)?, after
+      // dropping a leading '+' (which JSON does not allow).
+      const std::string v =
+        (!value.empty() && value[0] == '+') ? value.substr(1) : value;
+      std::size_t i      = (!v.empty() && v[0] == '-') ? 1 : 0;
+      const auto  digits = [&v, &i]() {
+        const std::size_t start = i;
+        while (i < v.size() && v[i] >= '0' && v[i] <= '9')
+          ++i;
+        return i - start;
+      };
+      const std::size_t first = i;
+      bool valid = digits() > 0 && !(v[first] == '0' && i - first > 1);
+      if (valid && i < v.size() && v[i] == '.')
+        {
+          ++i;
+          valid = digits() > 0;
+        }
+      if (valid && i < v.size() && (v[i] == 'e' || v[i] == 'E'))
+        {
+          ++i;
+          if (i < v.size() && (v[i] == '+' || v[i] == '-'))
+            ++i;
+          valid = digits() > 0;
+        }
+      return valid && i == v.size() ? v : quoted(value);
+    };
+    // The provenance comments ("# key value") as one object.
+    std::string text      = "{\n  \"provenance\": {";
+    const char *separator = "";
+    for (std::size_t start = 0; start < preamble.size();)
+      {
+        std::size_t end = preamble.find('\n', start);
+        if (end == std::string::npos)
+          end = preamble.size();
+        std::string line = preamble.substr(start, end - start);
+        start            = end + 1;
+        if (line.rfind("# ", 0) != 0)
+          continue;
+        line                  = line.substr(2);
+        const std::size_t gap = line.find(' ');
+        text += separator;
+        text += "\n    " + quoted(line.substr(0, gap)) + ": " +
+                quoted(gap == std::string::npos ? "" : line.substr(gap + 1));
+        separator = ",";
+      }
+    text += "\n  }";
+    for (const auto &[name, value] : entries)
+      text += ",\n  " + quoted(name) + ": " + value_of(value);
+    return text + "\n}\n";
   }
 
 

@@ -48,7 +48,8 @@ namespace fgimpact
   StressPostprocessor::StressPostprocessor(const PlateModel &plate,
                                            const bool        with_stress,
                                            const bool        with_material)
-    : properties(plate.get_fe().base_element(0), {}, plate.get_material())
+    : mapping(plate.get_mapping())
+    , properties(plate.get_fe().base_element(0), {}, plate.get_material())
     , hooke(plate.get_material())
     , with_stress(with_stress)
     , with_material(with_material)
@@ -116,8 +117,21 @@ namespace fgimpact
               for (unsigned int b = a; b < 3; ++b)
                 eps[a][b] = 0.5 * (inputs.solution_gradients[p][a][b] +
                                    inputs.solution_gradients[p][b][a]);
-            const SymmetricTensor<2, 3> sigma = hooke.stress(E, nu, eps);
-            const SymmetricTensor<2, 3> s     = deviator(sigma);
+            SymmetricTensor<2, 3> sigma = hooke.stress(E, nu, eps);
+            if (plastic)
+              {
+                // The stress the material carries: C (eps - eps_p), on
+                // or inside the yield surface (as StressRecovery).
+                const PlasticState state =
+                  plastic->plastic_state(cell->active_cell_index(),
+                                         mapping.transform_real_to_unit_cell(
+                                           cell, inputs.evaluation_points[p]));
+                sigma = J2Plasticity::admissible_stress(
+                  hooke.stress(E, nu, eps - state.plastic_strain),
+                  plastic->yield_stress(inputs.evaluation_points[p][2],
+                                        state.equivalent_plastic_strain));
+              }
+            const SymmetricTensor<2, 3> s = deviator(sigma);
 
             for (unsigned int a = 0; a < 3; ++a)
               for (unsigned int b = 0; b < 3; ++b)
@@ -304,9 +318,14 @@ namespace fgimpact
       data_out.add_data_vector(u_ghosted, postprocessor);
     add_recovered_fields(data_out);
     if (plastic)
-      data_out.add_data_vector(plastic_strain,
-                               "equivalent_plastic_strain",
-                               DataOut<3>::type_cell_data);
+      {
+        data_out.add_data_vector(plastic_strain,
+                                 "equivalent_plastic_strain",
+                                 DataOut<3>::type_cell_data);
+        data_out.add_data_vector(yield_utilization,
+                                 "von_mises_over_yield",
+                                 DataOut<3>::type_cell_data);
+      }
     if (!constant_field.first.empty())
       {
         constant.reinit(
@@ -381,6 +400,10 @@ namespace fgimpact
         plastic_strain.reinit(cells.size());
         for (unsigned int c = 0; c < cells.size(); ++c)
           plastic_strain[c] = cells[c];
+        const Vector<float> ratio = plastic->cell_yield_utilization();
+        yield_utilization.reinit(ratio.size());
+        for (unsigned int c = 0; c < ratio.size(); ++c)
+          yield_utilization[c] = ratio[c];
       }
 
     const MPI_Comm     comm    = plate.get_mpi_communicator();
@@ -464,6 +487,26 @@ namespace fgimpact
       data_out.add_data_vector(recovery->get_dof_handler(),
                                recovery->field(f),
                                StressRecovery::name(f));
+    if (recovery->plastic())
+      {
+        data_out.add_data_vector(recovery->get_dof_handler(),
+                                 recovery->plastic_fields()[0],
+                                 "equivalent_plastic_strain_nodal");
+        data_out.add_data_vector(recovery->get_dof_handler(),
+                                 recovery->plastic_fields()[1],
+                                 "yield_stress_MPa");
+      }
+  }
+
+
+
+  void
+  VtuWriter::set_plasticity(const PlasticPlate &plasticity)
+  {
+    plastic = &plasticity;
+    if (recovery)
+      recovery->set_plasticity(plasticity);
+    postprocessor.set_plasticity(plasticity);
   }
 
 

@@ -38,7 +38,8 @@ namespace fgimpact
   ValidityMonitor::ValidityMonitor(const PlateModel         &plate,
                                    const ValiditySetup      &setup,
                                    ImpactResults            &results,
-                                   const ConditionalOStream &pcout)
+                                   const ConditionalOStream &pcout,
+                                   const PlasticPlate       *plasticity)
     : plate(plate)
     , setup(setup)
     , strength(setup.strength, plate.get_material())
@@ -50,7 +51,19 @@ namespace fgimpact
                                               0.))
     , results(results)
     , pcout(pcout)
-  {}
+  {
+    if (plasticity)
+      {
+        check->set_plasticity(*plasticity);
+        elastic_check =
+          std::make_unique<StrengthCheck>(plate,
+                                          strength,
+                                          setup.impact_point,
+                                          setup.point_force ?
+                                            setup.excluded_radius :
+                                            0.);
+      }
+  }
 
 
 
@@ -60,6 +73,8 @@ namespace fgimpact
     if (record.fields)
       {
         check->evaluate(record.fields->displacement(), record.t);
+        if (elastic_check)
+          elastic_check->evaluate(record.fields->displacement(), record.t);
         fields_seen = true;
       }
   }
@@ -71,6 +86,8 @@ namespace fgimpact
   {
     out.put(check->metal_peak());
     out.put(check->ceramic_peak());
+    if (elastic_check)
+      out.put(elastic_check->metal_peak());
   }
 
 
@@ -86,6 +103,14 @@ namespace fgimpact
       if (!(peak->ratio >= 0.))
         peak->ratio = 0.;
     check->set_peaks(metal, ceramic);
+    if (elastic_check)
+      {
+        StrengthPeak elastic;
+        in.get(elastic);
+        if (!(elastic.ratio >= 0.))
+          elastic.ratio = 0.;
+        elastic_check->set_peaks(elastic, StrengthPeak::unchecked());
+      }
   }
 
 
@@ -95,9 +120,12 @@ namespace fgimpact
   {
     yield_peak   = check->metal_peak();
     tension_peak = check->ceramic_peak();
+    elastic_yield_peak =
+      elastic_check ? elastic_check->metal_peak() : yield_peak;
     // No fields (the study's convolution engine): nothing was scanned.
     if (!fields_seen)
-      yield_peak = tension_peak = StrengthPeak::unchecked();
+      yield_peak = tension_peak = elastic_yield_peak =
+        StrengthPeak::unchecked();
   }
 
 
@@ -126,6 +154,8 @@ namespace fgimpact
         const double   s = peaks.von_mises * p0;
         if (Y > 0. && !(s / Y <= yield_peak.ratio))
           yield_peak = {s / Y, s, Y, x, results.time_of_peak_force};
+        if (Y > 0. && !(s / Y <= elastic_yield_peak.ratio))
+          elastic_yield_peak = {s / Y, s, Y, x, results.time_of_peak_force};
       }
     else
       {
@@ -145,6 +175,7 @@ namespace fgimpact
     if (setup.point_force)
       add_hertz_contact_stress();
     results.yield_peak            = yield_peak;
+    results.elastic_yield_peak    = elastic_yield_peak;
     results.tension_peak          = tension_peak;
     results.stress_fields_checked = fields_seen;
     // Hertz: 1/E* = 1/Q_plate + 1/Q_ball, so a rigid ball raises E* by

@@ -60,6 +60,20 @@ namespace fgimpact
                                           plate.get_material());
     n_dofs   = fe.n_dofs_per_cell();
     n_points = quadrature.size();
+    const QGauss<1> gauss(fe.degree + 1);
+    for (const auto &p : gauss.get_points())
+      gauss_1d.push_back(p[0]);
+    for (unsigned int q = 0; q < n_points; ++q)
+      {
+        std::array<unsigned int, 3> index{};
+        for (unsigned int d = 0; d < 3; ++d)
+          for (unsigned int i = 0; i < gauss_1d.size(); ++i)
+            if (std::abs(quadrature.point(q)[d] - gauss_1d[i]) < 1e-12)
+              index[d] = i;
+        gauss_index.push_back(index);
+      }
+    cell_of_active.assign(
+      plate.get_dof_handler().get_triangulation().n_active_cells(), -1);
 
     const auto &map = u_ghosted.trilinos_vector().Map();
     std::map<std::array<double, 3>, unsigned int> tables;
@@ -91,6 +105,7 @@ namespace fgimpact
               local_index[first + s * 3 + c] = map.LID(
                 static_cast<TrilinosWrappers::types::int_type>(cell_dofs[i]));
             }
+          cell_of_active[cell->active_cell_index()] = table.size();
           table.push_back(it->second);
           active_index.push_back(cell->active_cell_index());
           properties.values(cell, E, nu, rho);
@@ -99,6 +114,8 @@ namespace fgimpact
     committed.resize(yield.size());
     trial.resize(yield.size());
     trial_work.assign(yield.size(), 0.);
+    trial_utilization.assign(yield.size(), 0.);
+    utilization.assign(yield.size(), 0.);
     plastic_cell.assign(table.size(), false);
   }
 
@@ -218,8 +235,9 @@ namespace fgimpact
           {
             for (unsigned int q = 0; q < n_points; ++q)
               {
-                trial[c * n_points + q]      = PlasticState();
-                trial_work[c * n_points + q] = 0;
+                trial[c * n_points + q]             = PlasticState();
+                trial_work[c * n_points + q]        = 0;
+                trial_utilization[c * n_points + q] = 0;
               }
             continue;
           }
@@ -327,6 +345,14 @@ namespace fgimpact
           lambda[k], mu[k], yield[k], hardening[k], strain, old, false);
         trial[k]      = update.state;
         trial_work[k] = update.plastic_work * weights[k];
+        // The returned stress over the new yield stress (1 on the yield
+        // surface): kept for the VTU's cell data of plastic points.
+        trial_utilization[k] =
+          update.state.equivalent_plastic_strain > 0. ?
+            std::sqrt(1.5) * deviator(update.stress).norm() /
+              (yield[k] +
+               hardening[k] * update.state.equivalent_plastic_strain) :
+            0.;
         const double sigma_y =
           yield[k] + hardening[k] * old.equivalent_plastic_strain;
         const double s_trial =
@@ -390,6 +416,7 @@ namespace fgimpact
           {
             const unsigned int k = c * n_points + q;
             committed[k]         = trial[k];
+            utilization[k]       = trial_utilization[k];
             local_work += trial_work[k];
             local_max = std::max(local_max, trial[k].equivalent_plastic_strain);
             plastic   = plastic || trial[k].equivalent_plastic_strain > 0.;
@@ -422,6 +449,84 @@ namespace fgimpact
           result[active_index[c]],
           committed[c * n_points + q].equivalent_plastic_strain);
     return result;
+  }
+
+
+
+  Vector<float>
+  PlasticPlate::cell_yield_utilization() const
+  {
+    Vector<float> result(
+      plate.get_dof_handler().get_triangulation().n_active_cells());
+    for (unsigned int c = 0; c < table.size(); ++c)
+      if (plastic_cell[c])
+        for (unsigned int q = 0; q < n_points; ++q)
+          {
+            const unsigned int k = c * n_points + q;
+            result[active_index[c]] =
+              std::max<float>(result[active_index[c]], utilization[k]);
+          }
+    return result;
+  }
+
+
+
+  bool
+  PlasticPlate::holds_plastic_strain(const unsigned int active_cell_index) const
+  {
+    const int c = active_cell_index < cell_of_active.size() ?
+                    cell_of_active[active_cell_index] :
+                    -1;
+    return c >= 0 && plastic_cell[c];
+  }
+
+
+
+  PlasticState
+  PlasticPlate::plastic_state(const unsigned int active_cell_index,
+                              const Point<3>    &unit_point) const
+  {
+    PlasticState state;
+    if (!holds_plastic_strain(active_cell_index))
+      return state;
+    const unsigned int c = cell_of_active[active_cell_index];
+    // The 1D Lagrange polynomials through the Gauss points, at each
+    // coordinate of the point.
+    const unsigned int                 n = gauss_1d.size();
+    std::array<std::vector<double>, 3> L;
+    for (unsigned int d = 0; d < 3; ++d)
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          double l = 1;
+          for (unsigned int j = 0; j < n; ++j)
+            if (j != i)
+              l *= (unit_point[d] - gauss_1d[j]) / (gauss_1d[i] - gauss_1d[j]);
+          L[d].push_back(l);
+        }
+    for (unsigned int q = 0; q < n_points; ++q)
+      {
+        const auto  &i     = gauss_index[q];
+        const double w     = L[0][i[0]] * L[1][i[1]] * L[2][i[2]];
+        const auto  &point = committed[c * n_points + q];
+        state.plastic_strain += w * point.plastic_strain;
+        state.equivalent_plastic_strain += w * point.equivalent_plastic_strain;
+      }
+    // An extrapolation can undershoot; the equivalent strain is >= 0.
+    state.equivalent_plastic_strain =
+      std::max(state.equivalent_plastic_strain, 0.);
+    return state;
+  }
+
+
+
+  double
+  PlasticPlate::yield_stress(const double z,
+                             const double equivalent_plastic_strain) const
+  {
+    if (!strength.metal_rich(z))
+      return std::numeric_limits<double>::infinity();
+    return strength.yield_strength(z) +
+           strength.hardening_modulus(z) * equivalent_plastic_strain;
   }
 
 

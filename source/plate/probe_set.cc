@@ -171,6 +171,7 @@ namespace fgimpact
                      const std::vector<ProbePoint> &probe_points)
     : mpi_communicator(plate.get_mpi_communicator())
     , weights(probe_points.size())
+    , plastic_correction(plate)
   {
     const auto &g = plate.get_geometry();
     for (const auto &point : probe_points)
@@ -337,6 +338,24 @@ namespace fgimpact
           fe_values.reinit(cell);
           properties.values(cell, E, nu, rho);
           cell->get_dof_indices(dofs);
+          // The same points for a plastic run's correction.
+          for (unsigned int q = 0; q < sdofs.size(); ++q)
+            {
+              std::vector<std::pair<unsigned, double>> factors;
+              for (unsigned int p = 0; p < n_points; ++p)
+                if (ghosted[1 + p](sdofs[q]) != 0.)
+                  factors.emplace_back(p,
+                                       ghosted[1 + p](sdofs[q]) /
+                                         ghosted[0](sdofs[q]));
+              const auto cut = cut_planes.find(sdofs[q]);
+              if (!factors.empty())
+                plastic_correction.add_point(cell,
+                                             support.point(q),
+                                             factors,
+                                             cut == cut_planes.end() ?
+                                               0u :
+                                               cut->second);
+            }
           for (unsigned int q = 0; q < sdofs.size(); ++q)
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
               {
@@ -480,6 +499,7 @@ namespace fgimpact
         for (unsigned int s = 0; s < 6; ++s)
           local[15 * p + 9 + s] = dot(weights[p][3 + s], u);
       }
+    plastic_correction.add_to(u, local, 15, 9);
     local[15 * n] =
       dot(reaction_stiffness, u) + (lumped_mass ? 0. : dot(reaction_mass, a));
     Utilities::MPI::sum(ArrayView<const double>(local),

@@ -108,6 +108,7 @@ namespace fgimpact
         fgimpact::displacement_weights(plate,
                                        location,
                                        "A probe point lies outside the plate."))
+    , plastic_correction(plate)
   {
     const auto &fe = plate.get_fe();
 
@@ -138,6 +139,7 @@ namespace fgimpact
                               update_values | update_gradients);
         fe_values.reinit(cell);
         cell->get_dof_indices(local_dofs);
+        plastic_correction.add_point(cell, unit_point, {{0u, w}});
 
         std::vector<double>  E, nu, rho;
         PropertyInterpolator properties(fe.base_element(0),
@@ -206,7 +208,17 @@ namespace fgimpact
   SymmetricTensor<2, 3>
   PointProbe::stress(const TrilinosWrappers::MPI::Vector &u) const
   {
-    const auto            values = apply(stress_weights, u);
+    auto values = apply(stress_weights, u);
+    if (plastic_correction.active())
+      {
+        std::vector<double> local(6, 0.), global(6);
+        plastic_correction.add_to(u, local, 0, 0);
+        Utilities::MPI::sum(ArrayView<const double>(local),
+                            mpi_communicator,
+                            ArrayView<double>(global));
+        for (unsigned int s = 0; s < 6; ++s)
+          values[s] += global[s];
+      }
     SymmetricTensor<2, 3> sigma;
     for (unsigned int s = 0; s < 6; ++s)
       sigma[voigt[s][0]][voigt[s][1]] = values[s];

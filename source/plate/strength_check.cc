@@ -48,6 +48,7 @@ namespace fgimpact
                                           plate.get_material());
     const unsigned int         n_dofs = fe.n_dofs_per_cell();
     n_points = n_scalar = support.size();
+    unit_support        = support.get_points();
 
     const auto &map = u_ghosted.trilinos_vector().Map();
     std::map<std::array<double, 3>, unsigned int> tables;
@@ -87,6 +88,7 @@ namespace fgimpact
                       fe_values.shape_grad_component(i, q, c)[d];
             }
           table.push_back(it->second);
+          active_index.push_back(cell->active_cell_index());
           local_index.insert(local_index.end(),
                              cell_index.begin(),
                              cell_index.end());
@@ -165,7 +167,10 @@ namespace fgimpact
       {
         for (unsigned int i = 0; i < n_dofs; ++i)
           cell_u[i] = values[local_index[c * n_dofs + i]];
-        if (can_skip(c, cell_u))
+        // A cell with plastic strain is not bounded by its elastic strain.
+        const bool plastic_cell =
+          plasticity && plasticity->holds_plastic_strain(active_index[c]);
+        if (!plastic_cell && can_skip(c, cell_u))
           continue;
         const double *const grad = gradients[table[c]].data();
         for (unsigned int q = 0; q < n_points; ++q)
@@ -183,7 +188,23 @@ namespace fgimpact
                   for (unsigned int d = 0; d < 3; ++d)
                     G[a][d] += us[a] * g[d];
               }
-            check_point(k, G, t);
+            double yield_stress = 0.;
+            if (plasticity && metal[k])
+              yield_stress = plasticity->yield_stress(points[k][2], 0.);
+            if (plastic_cell)
+              {
+                // eps - eps_p: the symmetric part of G loses eps_p.
+                const PlasticState state =
+                  plasticity->plastic_state(active_index[c], unit_support[q]);
+                for (unsigned int a = 0; a < 3; ++a)
+                  for (unsigned int d = 0; d < 3; ++d)
+                    G[a][d] -= state.plastic_strain[a][d];
+                if (metal[k])
+                  yield_stress =
+                    plasticity->yield_stress(points[k][2],
+                                             state.equivalent_plastic_strain);
+              }
+            check_point(k, G, t, yield_stress);
           }
       }
   }
@@ -264,9 +285,18 @@ namespace fgimpact
 
 
   void
+  StrengthCheck::set_plasticity(const PlasticPlate &plastic)
+  {
+    plasticity = &plastic;
+  }
+
+
+
+  void
   StrengthCheck::check_point(const unsigned int k,
                              const double       G[3][3],
-                             const double       t)
+                             const double       t,
+                             const double       yield_stress)
   {
     // sigma = lambda tr(eps) 1 + 2 mu eps: von Mises = 2 mu sqrt(3/2)
     // |dev eps|, and sigma_1 = lambda tr(eps) + 2 mu eps_1 with
@@ -283,7 +313,13 @@ namespace fgimpact
     StrengthPeak &peak = metal[k] ? metal_local : ceramic_local;
     double        stress;
     if (metal[k])
-      stress = two_mu[k] * std::sqrt(1.5) * dev;
+      {
+        stress = two_mu[k] * std::sqrt(1.5) * dev;
+        // A plastic run: the extrapolated stress returned onto the yield
+        // surface, as the VTU's (J2Plasticity::admissible_stress()).
+        if (yield_stress > 0.)
+          stress = std::min(stress, yield_stress);
+      }
     else
       {
         const double mean = lambda[k] * tr + two_mu[k] * tr / 3.;
@@ -300,9 +336,10 @@ namespace fgimpact
         eps[1][2] = e12;
         stress    = lambda[k] * tr + two_mu[k] * eigenvalues(eps)[0];
       }
-    const double       ratio = stress * inverse_strength[k];
-    const StrengthPeak candidate{
-      ratio, stress, 1. / inverse_strength[k], points[k], t};
+    const double inverse =
+      yield_stress > 0. ? 1. / yield_stress : inverse_strength[k];
+    const double       ratio = stress * inverse;
+    const StrengthPeak candidate{ratio, stress, 1. / inverse, points[k], t};
     if (precedes(candidate, peak))
       peak = candidate;
   }

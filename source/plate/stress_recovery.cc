@@ -98,6 +98,50 @@ namespace fgimpact
 
 
 
+  void
+  StressRecovery::set_plasticity(const PlasticPlate &plastic)
+  {
+    plasticity          = &plastic;
+    const MPI_Comm comm = plate.get_mpi_communicator();
+    std::map<types::global_dof_index, Point<3>> support;
+    DoFTools::map_dofs_to_support_points(plate.get_mapping(),
+                                         dof_handler,
+                                         support);
+    support_z.assign(owned.n_elements(), 0.);
+    for (const auto &[dof, x] : support)
+      if (owned.is_element(dof))
+        support_z[owned.index_within_set(dof)] = x[2];
+    plastic_sum.reinit(owned, relevant, comm, /*vector_writable=*/true);
+    for (unsigned int f = 0; f < 2; ++f)
+      {
+        plastic_owned[f].reinit(owned, comm);
+        plastic_ghosted[f].reinit(owned, relevant, comm);
+      }
+  }
+
+
+
+  SymmetricTensor<2, 3>
+  StressRecovery::carried_stress(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const Point<3>                            &unit_point,
+    const double                               E,
+    const double                               nu,
+    const SymmetricTensor<2, 3>               &eps,
+    double                                    &eps_bar_sum) const
+  {
+    const PlasticState state =
+      plasticity->plastic_state(cell->active_cell_index(), unit_point);
+    eps_bar_sum += state.equivalent_plastic_strain;
+    const double z =
+      plate.get_mapping().transform_unit_to_real_cell(cell, unit_point)[2];
+    return J2Plasticity::admissible_stress(
+      HookeLaw::stress(E, nu, eps - state.plastic_strain),
+      plasticity->yield_stress(z, state.equivalent_plastic_strain));
+  }
+
+
+
   AffineConstraints<double>
   scalar_hanging_constraints(const DoFHandler<3> &dof_handler)
   {
@@ -172,6 +216,8 @@ namespace fgimpact
 
     for (auto &v : sums)
       v = 0.;
+    if (plasticity)
+      plastic_sum = 0.;
     for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -187,8 +233,14 @@ namespace fgimpact
           scalar_cell->get_dof_indices(dofs);
           for (unsigned int q = 0; q < points.size(); ++q)
             {
+              double                      eps_bar = 0;
               const SymmetricTensor<2, 3> sigma =
-                HookeLaw::stress(E[q], nu[q], eps[q]);
+                plasticity ?
+                  carried_stress(
+                    cell, points.point(q), E[q], nu[q], eps[q], eps_bar) :
+                  HookeLaw::stress(E[q], nu[q], eps[q]);
+              if (plasticity)
+                plastic_sum(dofs[q]) += eps_bar;
               for (unsigned int s = 0; s < 6; ++s)
                 {
                   const unsigned int a = component[s][0], b = component[s][1];
@@ -199,6 +251,8 @@ namespace fgimpact
         }
     for (unsigned int s = 0; s < 12; ++s)
       sums[s].compress(VectorOperation::add);
+    if (plasticity)
+      plastic_sum.compress(VectorOperation::add);
   }
 
 
@@ -230,6 +284,17 @@ namespace fgimpact
         for (unsigned int k = 0; k < 3; ++k)
           owned_values[principal_1 + k](dof) = principal[k];
 
+        if (plasticity)
+          {
+            const double eps_bar = plastic_sum(dof) * w;
+            // The support point's height (m) gives its yield strength.
+            const double sigma_y =
+              plasticity->yield_stress(support_z[owned.index_within_set(dof)],
+                                       eps_bar);
+            plastic_owned[0](dof) = eps_bar;
+            plastic_owned[1](dof) =
+              std::isfinite(sigma_y) ? sigma_y * 1e-6 : 0.;
+          }
         const double abs_zz = std::abs(sigma[2][2]);
         owned_values[peak_von_mises](dof) =
           n_recovered == 0 ?
@@ -257,6 +322,12 @@ namespace fgimpact
         hanging.distribute(owned_values[f]);
         ghosted[f] = owned_values[f];
       }
+    if (plasticity)
+      for (unsigned int f = 0; f < 2; ++f)
+        {
+          hanging.distribute(plastic_owned[f]);
+          plastic_ghosted[f] = plastic_owned[f];
+        }
     ++n_recovered;
   }
 } // namespace fgimpact

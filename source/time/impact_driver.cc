@@ -383,19 +383,24 @@ namespace fgimpact
                                               results,
                                               summary_file,
                                               plasticity != nullptr);
+    if (plasticity)
+      monitor->set_plasticity(*plasticity);
     for (const auto &observer : observers)
       monitor->add_row_observer(observer);
     monitor->add_field_output(scene.impact_point(),
                               impactor.radius(),
                               plasticity.get());
+    // The plastic results first: the validity line the ValidityMonitor
+    // prints at the end reads the largest plastic strain.
+    if (plasticity)
+      monitor->add(std::make_unique<PlasticityReport>(
+        *plasticity, results, 1. / scene.share(), impactor.initial_velocity()));
     monitor->add(std::make_unique<ValidityMonitor>(
       plate,
       validity_setup(parameters, scene, *contact, results),
       results,
-      pcout));
-    if (plasticity)
-      monitor->add(std::make_unique<PlasticityReport>(
-        *plasticity, results, 1. / scene.share(), impactor.initial_velocity()));
+      pcout,
+      plasticity.get()));
     monitor->start(resume);
     // Rank 0 alone has opened history.csv (and probes.csv): every rank
     // learns whether that worked before the first collective output.

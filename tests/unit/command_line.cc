@@ -188,12 +188,17 @@ main()
                             "velocity=1,2'");
     const double diff = csv_difference(read("cli_study/case_001/history.csv"),
                                        history("cli_edited"));
+    // A verdict, not the difference (in units of the last printed digit).
+    // The case runs as a convolution (Study/Method = auto), which agrees
+    // with the time loop to 1e-11 relative (study_convolution): a value at
+    // a rounding boundary may print one unit of its last digit apart.
     std::printf("study case V0 = 2 against the separate run: history.csv "
-                "differs by at most %.1f in the last printed digit\n",
-                diff);
+                "within one unit of every last printed digit: %s\n",
+                diff <= 1.01 ? "yes" : "NO");
     check("--study: exit 0, study.csv with a header and 2 cases, the case's "
           "history.csv equal to the separate run's",
-          code == 0 && n_lines(read("cli_study/study.csv")) == 3 && diff == 0.);
+          code == 0 && n_lines(read("cli_study/study.csv")) == 3 &&
+            diff <= 1.01);
   }
 
   // A study from the .prm's Study subsection, two lists zipped, through
@@ -214,9 +219,9 @@ main()
     const double diff     = csv_difference(read("cli_zip/case_001/history.csv"),
                                        history("cli_zip_one"));
     std::printf("Study subsection, zip, time loop: case 1 against the "
-                "separate run: history.csv differs by at most %.1f in the "
-                "last printed digit\n",
-                diff);
+                "separate run: history.csv the same in every printed digit: "
+                "%s\n",
+                diff == 0. ? "yes" : "NO");
     check("Study subsection (zip, time loop): exit 0, 2 cases in study.csv, "
           "case 1 equal to the separate run",
           code == 0 && code_one == 0 &&
@@ -371,12 +376,13 @@ main()
     const double diff =
       csv_difference(read("cli_tab_study/case_001/history.csv"),
                      history("cli_tab"));
+    // A convolution case, as above: one unit of a last digit at most.
     std::printf("tabulated study case V0 = 2 against the separate run: "
-                "history.csv differs by at most %.1f in the last printed "
-                "digit\n",
-                diff);
+                "history.csv within one unit of every last printed digit: "
+                "%s\n",
+                diff <= 1.01 ? "yes" : "NO");
     check("... and so do a study's cases (case V0 = 2 equal to the run)",
-          study_code == 0 && diff == 0.);
+          study_code == 0 && diff <= 1.01);
   }
 
   // Provenance and the log.
@@ -496,5 +502,5 @@ main()
             contains(read("cli.stderr"), "Output/Probe points"));
   }
   std::printf("%s\n", all_ok ? "OK" : "FAILED");
-  return 0;
+  return all_ok ? 0 : 1;
 }

@@ -135,7 +135,7 @@ main(int argc, char *argv[])
     {
       std::printf("(2) skipped under the sanitizers\n");
       std::printf("%s\n", ok ? "all checks passed" : "FAILED");
-      return 0;
+      return ok ? 0 : 1;
     }
   malloc_trim(0);
   const double now = mapped();
@@ -186,4 +186,5 @@ main(int argc, char *argv[])
                level5_summary.count("wall_time_s") == 1 &&
                  !std::filesystem::exists("out/convergence/level_6"));
   std::printf("%s\n", ok ? "all checks passed" : "FAILED");
+  return ok ? 0 : 1;
 }

@@ -140,14 +140,15 @@ main(int argc, char *argv[])
       const double       quarter = disc_displacement(true, levels, p, c);
       error[k]                   = whole / exact - 1;
       const double symmetry      = std::abs(quarter / whole - 1);
+      // The quarter's difference is round-off: its verdict, not its digits.
       std::printf("disc under uniform pressure, level %u: centre %.5f um "
                   "(Boussinesq %.5f um, error %+.3f %%), quarter against "
-                  "whole %.1e (limit 1e-12)\n",
+                  "whole below 1e-12: %s\n",
                   levels,
                   whole * 1e6,
                   exact * 1e6,
                   100 * error[k],
-                  symmetry);
+                  symmetry < 1e-12 ? "yes" : "NO");
       ok = ok && symmetry < 1e-12;
     }
   std::printf("disc: error ratio level 5 / level 6 %.2f (limit > 1.5), "

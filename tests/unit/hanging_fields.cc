@@ -246,11 +246,12 @@ main(int argc, char **argv)
       bool hanging_ok = check.vertices.size() > 100;
       for (unsigned int f = 0; f < n_fields; ++f)
         {
+          // The verdict only: the difference is float32 rounding and
+          // round-off, whose digits depend on the CPU.
           const double error = check.largest[f] / check.scale[f];
           const bool   good  = error < 1e-6;
-          std::printf("   %-18s %.1e (< 1e-6: %s)\n",
+          std::printf("   %-18s < 1e-6: %s\n",
                       field_names[f],
-                      error,
                       good ? "yes" : "NO");
           hanging_ok = hanging_ok && good;
         }
@@ -328,17 +329,17 @@ main(int argc, char **argv)
           ++rows;
         }
       const bool same = rows == 61 && largest_u <= 2e-6 && largest_v <= 2e-6;
+      // The differences are the last printed digit of probes.csv (round-off
+      // decides it): the verdict only.
       std::printf("3. probe on the hanging vertex (%.3f, %.3f, %.3f) mm "
                   "(u_z down to %.4f um) and 1e-9 m beside it, %u rows: "
-                  "largest |difference| of u %.6f um, of v %.6f m/s "
-                  "(<= 2e-6: %s)\n",
+                  "largest |difference| of u (um) and of v (m/s) <= 2e-6: "
+                  "%s\n",
                   vertex[0] * 1e3,
                   vertex[1] * 1e3,
                   vertex[2] * 1e3,
                   uz_peak,
                   rows,
-                  largest_u,
-                  largest_v,
                   same ? "yes" : "NO");
       ok = ok && same;
       std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");

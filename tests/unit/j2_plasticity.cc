@@ -89,16 +89,18 @@ main()
       worst              = std::max(worst, std::abs(p.update.stress[0][0]));
       const double eps_p = state.equivalent_plastic_strain;
       const double exact_work = Y * eps_p + 0.5 * H * eps_p * eps_p;
+      // Verdicts for the round-off-sized errors and the iteration count
+      // (their digits depend on the CPU).
       std::printf("uniaxial, H = %.0f GPa: largest |sigma_11 - closed form| "
-                  "%.2e MPa (limit 1e-6), plastic strain %.6e (closed form "
-                  "%.6e), plastic work error %.1e (limit 1e-12), Newton at "
-                  "most %u iterations\n",
+                  "below 1e-6 MPa: %s, plastic strain %.6e (closed form "
+                  "%.6e), plastic work error below 1e-12: %s, Newton at most "
+                  "1 iteration: %s\n",
                   H * 1e-9,
-                  worst * 1e-6,
+                  worst < 1. ? "yes" : "NO",
                   eps_p,
                   5 * eps_y - sigma_max / E,
-                  std::abs(work / exact_work - 1),
-                  most_iterations);
+                  std::abs(work / exact_work - 1) < 1e-12 ? "yes" : "NO",
+                  most_iterations <= 1 ? "yes" : "NO");
       ok = ok && worst < 1. && std::abs(p.update.stress[0][0]) < 1. &&
            std::abs(eps_p / (5 * eps_y - sigma_max / E) - 1) < 1e-9 &&
            std::abs(work / exact_work - 1) < 1e-12 && most_iterations <= 1;
@@ -138,10 +140,10 @@ main()
             std::max(worst, (fd - from_tangent).norm() / exact.tangent.norm());
         }
     std::printf("consistent tangent at a plastic state (yielding %s): "
-                "relative difference to central differences %.1e (limit "
-                "1e-6)\n",
+                "relative difference to central differences below 1e-6: "
+                "%s\n",
                 exact.yielding ? "yes" : "no",
-                worst);
+                worst < 1e-6 ? "yes" : "NO");
     ok = ok && exact.yielding && worst < 1e-6;
   }
 

@@ -88,8 +88,13 @@ main()
   std::mt19937 rng(20261123);
   bool         ok = true;
 
-  std::printf("random SPD, m   max |lambda - enumerated| / max lambda   "
-              "iterations   penetration\n");
+  // Verdicts, not the numbers: the errors are round-off of LAPACK's
+  // Cholesky (its digits depend on the CPU and the BLAS kernel), and an
+  // iteration count may change with it; the active set's convergence
+  // (without the projected Gauss-Seidel fallback) is what matters.
+  std::printf("random SPD, m   max |lambda - enumerated| / max lambda < "
+              "1e-10   active set converged (no fallback)   penetration < "
+              "1e-12\n");
   for (const unsigned int m : {3u, 6u, 9u, 12u})
     for (unsigned int trial = 0; trial < 3; ++trial)
       {
@@ -103,12 +108,12 @@ main()
         diff -= exact;
         const double error =
           diff.linfty_norm() / std::max(exact.linfty_norm(), 1e-300);
-        std::printf("%2u  %.1e   %u   %.1e\n",
+        std::printf("%2u  %s   %s   %s\n",
                     m,
-                    std::max(error, 1e-16),
-                    s.iterations,
-                    std::max(s.penetration, 0.));
-        ok = ok && error < 1e-10 && s.penetration < 1e-12;
+                    error < 1e-10 ? "yes" : "NO",
+                    s.used_fallback ? "NO" : "yes",
+                    s.penetration < 1e-12 ? "yes" : "NO");
+        ok = ok && error < 1e-10 && !s.used_fallback && s.penetration < 1e-12;
       }
 
   // A Delassus-like matrix: the compliance of a 1D chain of springs on an
@@ -138,19 +143,18 @@ main()
       n_active += (lambda[j] > 0.);
       ok = ok && lambda[j] >= 0.;
     }
-  std::printf("Delassus-like, m = %u: %u active, %u iterations, fallback %s, "
-              "max penetration / |q| %.1e, max |lambda g| / (|lambda| |q|) "
-              "%.1e\n",
+  const bool feasible      = worst_g < 1e-12 * q.linfty_norm(),
+             complementary = worst_complementarity <
+                             1e-12 * lambda.linfty_norm() * q.linfty_norm();
+  std::printf("Delassus-like, m = %u: %u active, fallback %s, max "
+              "penetration / |q| < 1e-12: %s, max |lambda g| / (|lambda| "
+              "|q|) < 1e-12: %s\n",
               m,
               n_active,
-              s.iterations,
               s.used_fallback ? "yes" : "no",
-              std::max(worst_g / q.linfty_norm(), 1e-16),
-              std::max(worst_complementarity /
-                         (lambda.linfty_norm() * q.linfty_norm()),
-                       1e-16));
-  ok = ok && worst_g < 1e-12 * q.linfty_norm() &&
-       worst_complementarity < 1e-12 * lambda.linfty_norm() * q.linfty_norm();
+              feasible ? "yes" : "NO",
+              complementary ? "yes" : "NO");
+  ok = ok && !s.used_fallback && feasible && complementary;
 
   // Warm start from the converged set: one iteration.
   const LcpStatistics again = solve_lcp(A, q, lambda, active);
@@ -194,16 +198,16 @@ main()
           }
       }
     std::printf("columns on demand, m = %u: %u active (farthest %u), %u "
-                "columns asked for, max |lambda - lambda_whole| = %.1e, "
-                "%u iterations\n",
+                "columns asked for, lambda bitwise lambda_whole: %s, "
+                "fallback %s\n",
                 m,
                 n_active,
                 farthest,
                 valid,
-                difference,
-                t.iterations);
+                difference == 0. ? "yes" : "NO",
+                t.used_fallback ? "yes" : "no");
     ok = ok && difference == 0. && valid == (farthest + 64) / 64 * 64 &&
-         valid < m && set_lazy == set_whole;
+         valid < m && set_lazy == set_whole && !t.used_fallback;
   }
 
   std::printf("%s\n", ok ? "OK" : "FAILED");

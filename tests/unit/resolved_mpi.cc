@@ -61,13 +61,16 @@ main(int argc, char *argv[])
         worst = std::max(worst, difference / scale);
     }
   const bool ok = worst < 1e-9;
+  // The peak to 1e-6 relative and the difference as a verdict: both
+  // solvers' round-off (1e-12 here) depends on the CPU, and the
+  // distributed MUMPS is not bit-reproducible from run to run.
   if (rank == 0)
-    std::printf("resolved sphere, 2 ranks against 1: peak %.4f N, %u "
+    std::printf("resolved sphere, 2 ranks against 1: peak %.2f N, %u "
                 "candidates; largest relative difference of a history "
-                "column %.1e (limit 1e-9)\n%s\n",
+                "column below 1e-9: %s\n%s\n",
                 together.results.peak_contact_force,
                 together.results.n_contact_candidates,
-                std::max(worst, 1e-16),
+                ok ? "yes" : "NO",
                 ok ? "OK" : "FAILED");
   return ok ? 0 : 1;
 }

@@ -110,13 +110,35 @@ namespace
     return entries;
   }
 
-  /// Equal strings, or for the round-off measures within 1e-9.
+  /// The unit of the last printed digit of a fixed-point number ("12.340"
+  /// gives 0.001), or 0 for any other text.
+  double
+  last_digit_unit(const std::string &text)
+  {
+    if (text.empty() ||
+        text.find_first_not_of("+-.0123456789") != std::string::npos)
+      return 0.;
+    const auto dot = text.find('.');
+    return dot == std::string::npos ?
+             1. :
+             std::pow(10., -static_cast<double>(text.size() - dot - 1));
+  }
+
+  /// Equal strings; for the round-off measures within 1e-9; for numbers
+  /// printed alike, at most one unit of their last printed digit apart:
+  /// the two ways agree to 1e-11 relative, and a round-off difference that
+  /// crosses a rounding boundary changes the last digit by one (it did on
+  /// an AVX-512 CPU).
   bool
   same(const std::string &key, const std::string &a, const std::string &b)
   {
     if (key == "impulse_identity_error" || key == "max_relative_energy_drift")
       return std::abs(std::stod(a) - std::stod(b)) < 1e-9;
-    return a == b;
+    if (a == b)
+      return true;
+    const double unit = last_digit_unit(a);
+    return unit > 0. && unit == last_digit_unit(b) &&
+           std::abs(std::stod(a) - std::stod(b)) <= 1.5 * unit;
   }
 
   std::vector<std::string>
@@ -207,20 +229,22 @@ main(int argc, char **argv)
     {
       const auto rows = engine_rows(
         "subsection Geometry\n set Symmetry = " + symmetry + "\nend\n");
+      // The verdict, not the measured difference: that is round-off (below
+      // 5e-12 here, 1e-11 on an AVX-512 CPU), its digits the machine's.
       std::printf("history rows, engine (Symmetry = %s) against separate "
                   "whole-plate runs (max over the columns of max |difference| "
-                  "/ max |value|, units of 1e-9):\n",
+                  "/ max |value|):\n",
                   symmetry.c_str());
       for (unsigned int i = 0; i < cases.size(); ++i)
         {
           const double worst = history_difference(rows[i], separate[i].history);
           std::printf("  case %u (V0 = %.0f m/s, rho_i = %.0f kg/m^3): %zu "
-                      "rows, %.2f\n",
+                      "rows, below 1e-9: %s\n",
                       i,
                       cases[i].first,
                       cases[i].second,
                       rows[i].size(),
-                      worst * 1e9);
+                      worst < 1e-9 ? "yes" : "NO");
           ok = ok && worst < 1e-9;
         }
     }

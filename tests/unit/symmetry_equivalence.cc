@@ -6,8 +6,9 @@
 // local refinement),
 // the Hertz mid-plane contact and the resolved sphere with two levels of
 // local refinement; static point and sphere loads; and the one-line
-// refusals naming what breaks the symmetry.  The largest differences are
-// printed (round-off: numdiff's absolute 1e-6 treats them as 0).
+// refusals naming what breaks the symmetry.  Each column's verdict is
+// printed, not its largest difference: that is round-off, whose digits
+// depend on the CPU and the BLAS kernel.
 
 #include <deal.II/base/mpi.h>
 
@@ -134,10 +135,14 @@ namespace
           {
             const double d = column_difference(whole, model, c);
             worst          = std::max(worst, d);
-            std::printf("    %-28s %.1e\n", column_names[c], d);
+            std::printf("    %-28s below 1e-9: %s\n",
+                        column_names[c],
+                        d < 1e-9 ? "yes" : "NO");
           }
         const double s = summary_difference(whole.results, model.results);
-        std::printf("    %-28s %.1e\n", "summary (physical entries)", s);
+        std::printf("    %-28s below 1e-9: %s\n",
+                    "summary (physical entries)",
+                    s < 1e-9 ? "yes" : "NO");
         same = same && worst < 1e-9 && s < 1e-9;
         std::printf("  %s: history and summary equal to 1e-9: %s (%u vs %u "
                     "DoFs)\n",
@@ -221,10 +226,9 @@ namespace
         worst = std::max(worst, relative(value, summaries["quarter"][key]));
     const bool ok = worst < 1e-9 && summaries["none"].size() > 0;
     std::printf("%s: quarter vs none, %zu static entries, max relative "
-                "difference %.1e: %s\n",
+                "difference below 1e-9: %s\n",
                 name.c_str(),
                 summaries["none"].size(),
-                worst,
                 ok ? "yes" : "NO");
     return ok;
   }

@@ -10,8 +10,9 @@
 // stress, strain, von Mises and principal fields.  The recovered fields on
 // the cut planes test StressRecovery's symmetry: there the shear components
 // odd under the reflection must vanish, as the whole plate's average of
-// both sides gives.  The largest differences are printed (float data:
-// relative to each data set's largest magnitude).
+// both sides gives.  The verdicts on the largest differences are printed
+// (float data: relative to each data set's largest magnitude), not the
+// differences, whose digits are round-off and depend on the CPU.
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
@@ -187,11 +188,10 @@ main(int argc, char **argv)
   bool ok = names == part_names && matched == whole.size() &&
             mirror.size() == whole.size() && vertex_error < 1e-12;
   std::printf("whole plate %zu cells, quarter mirrored %zu patches, matched "
-              "%u, largest vertex distance %.1e m: %s\n",
+              "%u, largest vertex distance below 1e-12 m: %s\n",
               whole.size(),
               mirror.size(),
               matched,
-              vertex_error,
               ok ? "yes" : "NO");
   unsigned int component = 0;
   for (unsigned int r = 0; r < names.size(); ++r)
@@ -200,10 +200,10 @@ main(int argc, char **argv)
       const double rel = scale[r] > 0 ? diff[r] / scale[r] : diff[r];
       const bool   hit = rel < 1e-5;
       ok               = ok && hit;
-      std::printf("  %-22s component %u: max relative difference %.1e: %s\n",
+      std::printf("  %-22s component %u: max relative difference below "
+                  "1e-5: %s\n",
                   names[r].c_str(),
                   component,
-                  rel,
                   hit ? "yes" : "NO");
     }
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");

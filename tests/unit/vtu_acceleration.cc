@@ -70,9 +70,10 @@ main(int argc, char **argv)
         }
     }
   const bool rule = worst < 1e-5 * scale && scale > 0;
+  // The verdict: the residual is float32 rounding, its digits the CPU's.
   std::printf("v_{n+1} - v_n = dt/2 (a_n + a_{n+1}) at every point of 20 "
-              "snapshot pairs: largest residual / largest change %.1e: %s\n",
-              worst / scale,
+              "snapshot pairs: largest residual / largest change below "
+              "1e-5: %s\n",
               rule ? "yes" : "NO");
 
   // (2) The mid-plane centre (0.1, 0.05, 0.01) m against probes.csv at

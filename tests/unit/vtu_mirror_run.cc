@@ -141,9 +141,11 @@ main(int argc, char **argv)
   const bool extents_ok = low_q == low_w && high_q == high_w;
   const bool plate_ok =
     extents_ok && plate[0] < 1e-5 && plate[1] < 1e-5 && plate[2] < 1e-5;
+  // Verdicts, not the differences: those are round-off, whose digits
+  // depend on the CPU and the BLAS kernel.
   std::printf("plate: extents (%.1f, %.1f, %.1f)-(%.1f, %.1f, %.1f) mm the "
               "whole plate's: %s; %zu points against %zu, largest "
-              "difference of u_x, u_y, u_z / largest %.1e %.1e %.1e: %s\n",
+              "difference of u_x, u_y, u_z / largest below 1e-5: %s\n",
               low_q[0] * 1e-4,
               low_q[1] * 1e-4,
               low_q[2] * 1e-4,
@@ -153,9 +155,6 @@ main(int argc, char **argv)
               extents_ok ? "yes" : "NO",
               quarter.size(),
               whole.size(),
-              plate[0],
-              plate[1],
-              plate[2],
               plate_ok ? "yes" : "NO");
 
   // (2) The contact nodes.
@@ -167,14 +166,11 @@ main(int argc, char **argv)
   for (const auto &[k, value] : nodes_w)
     active += value[0] > 0;
   std::printf("contact nodes: %zu against %zu (%u in contact), largest "
-              "difference of force, pressure, u_z / largest %.1e %.1e "
-              "%.1e: %s\n",
+              "difference of force, pressure, u_z / largest below 1e-6: "
+              "%s\n",
               nodes_q.size(),
               nodes_w.size(),
               active,
-              nodes[0],
-              nodes[1],
-              nodes[2],
               nodes_ok && active > 0 ? "yes" : "NO");
   return plate_ok && nodes_ok && active > 0 ? 0 : 1;
 }

@@ -53,6 +53,15 @@ namespace fgimpact
            const SymmetricTensor<2, 3> &strain,
            const PlasticState          &old_state,
            const bool                   with_tangent = true);
+
+    /// sigma with its deviator scaled onto the yield surface where its von
+    /// Mises stress exceeds yield_stress (Pa; infinite: unchanged).  The
+    /// recovered (extrapolated) stress of a plastic run: a nodal value
+    /// extrapolated from admissible Gauss-point stresses can overshoot the
+    /// yield surface, which no material point can.
+    static SymmetricTensor<2, 3>
+    admissible_stress(const SymmetricTensor<2, 3> &sigma,
+                      const double                 yield_stress);
   };
 } // namespace fgimpact
 

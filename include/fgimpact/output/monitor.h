@@ -132,6 +132,11 @@ namespace fgimpact
                   SummaryFile            &summary,
                   const bool              plastic = false);
 
+    /// A plastic run: the probes' stresses are the ones the material
+    /// carries, as the VTU's.
+    void
+    set_plasticity(const PlasticPlate &plasticity);
+
     /// Receive every history row (the CSV's columns and units, before
     /// rounding) on every rank.
     void
@@ -247,6 +252,8 @@ namespace fgimpact
     SummaryFile       &summary;
 
     PointProbe mid_probe, top_probe;
+    /// The Output/Probe points (owned by their ProbeWriter), or null.
+    ProbeSet *probe_set = nullptr;
     /// The stepper's fields with the constraints distributed: every
     /// probe, VTU snapshot and peak field reads these.
     PlateFields fields;

@@ -117,6 +117,15 @@ namespace fgimpact
 
 
 
+  /// summary.json's text: the provenance comments of `preamble` ("# key
+  /// value" lines) as the object "provenance", then every entry in order,
+  /// a number as a JSON number, none/inf/nan as null, other text as a
+  /// string; json.load() and pandas.read_json(typ="series") read it.
+  std::string
+  summary_json(const std::string &preamble, const SummaryEntries &entries);
+
+
+
   /**
    * summary.txt of one run, the one object that writes it: rank 0 writes
    * the file (SummaryWriter: atomically), every rank keeps the entries of

@@ -56,10 +56,19 @@ namespace fgimpact
     UpdateFlags
     get_needed_update_flags() const override;
 
+    /// A plastic run: the stress is C (eps - eps_p).
+    void
+    set_plasticity(const PlasticPlate &plasticity)
+    {
+      plastic = &plasticity;
+    }
+
   private:
+    const Mapping<3>          &mapping;
     const PropertyInterpolator properties;
     const HookeLaw             hooke;
     const bool                 with_stress, with_material;
+    const PlasticPlate        *plastic = nullptr;
   };
 
 
@@ -114,13 +123,13 @@ namespace fgimpact
   class VtuWriter
   {
   public:
-    /// Material/Plasticity = J2: the cell field equivalent_plastic_strain
-    /// (the largest of each cell's Gauss points) in every snapshot.
+    /// Material/Plasticity = J2: every stress written is C (eps - eps_p)
+    /// (StressRecovery::set_plasticity()), and every snapshot has the cell
+    /// fields equivalent_plastic_strain and von_mises_over_yield (the
+    /// largest of each cell's Gauss points) and the recovered point fields
+    /// equivalent_plastic_strain_nodal and yield_stress_MPa.
     void
-    set_plasticity(const PlasticPlate &plasticity)
-    {
-      plastic = &plasticity;
-    }
+    set_plasticity(const PlasticPlate &plasticity);
 
     VtuWriter(const PlateModel                                 &plate,
               const std::string                                &directory,
@@ -249,7 +258,7 @@ namespace fgimpact
     const DataOutBase::VtkFlags::ZlibCompressionLevel compression;
     const PlasticPlate                               *plastic = nullptr;
     /// Its cell values at the snapshot being written.
-    Vector<double> plastic_strain;
+    Vector<double> plastic_strain, yield_utilization;
   };
 } // namespace fgimpact
 

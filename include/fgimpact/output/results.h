@@ -88,8 +88,12 @@ namespace fgimpact
     /// largest principal stress over the tensile strength in the
     /// ceramic-rich part, where and when; ratio NaN when not checked (a
     /// strength of 0, or no such part).
-    StrengthPeak yield_peak   = StrengthPeak::unchecked();
-    StrengthPeak tension_peak = StrengthPeak::unchecked();
+    StrengthPeak yield_peak = StrengthPeak::unchecked();
+    /// The von Mises stress an elastic metal would carry (C eps, the
+    /// plastic strain not taken off) over the initial yield strength: in
+    /// an elastic run the same as yield_peak.
+    StrengthPeak elastic_yield_peak = StrengthPeak::unchecked();
+    StrengthPeak tension_peak       = StrengthPeak::unchecked();
     /// How much a rigid ball raises Hertz's E* above the elastic ball's
     /// of Impactor/Young's modulus (relative; 0 for an elastic ball, NaN
     /// when not reported).

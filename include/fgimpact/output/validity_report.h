@@ -64,10 +64,15 @@ namespace fgimpact
   class ValidityMonitor : public Postprocessor
   {
   public:
+    /// With `plasticity` (Material/Plasticity = J2) the stresses checked
+    /// are those the material carries, C (eps - eps_p), and a second
+    /// check keeps the elastic stress C eps over the initial yield
+    /// strength (ImpactResults::elastic_yield_peak).
     ValidityMonitor(const PlateModel         &plate,
                     const ValiditySetup      &setup,
                     ImpactResults            &results,
-                    const ConditionalOStream &pcout);
+                    const ConditionalOStream &pcout,
+                    const PlasticPlate       *plasticity = nullptr);
 
     std::string
     name() const override
@@ -105,9 +110,11 @@ namespace fgimpact
     const ValiditySetup            setup;
     const GradedStrength           strength;
     std::unique_ptr<StrengthCheck> check;
+    /// A plastic run: the elastic stress's check (no plastic strain).
+    std::unique_ptr<StrengthCheck> elastic_check;
     ImpactResults                 &results;
     const ConditionalOStream      &pcout;
-    StrengthPeak                   yield_peak, tension_peak;
+    StrengthPeak                   yield_peak, tension_peak, elastic_yield_peak;
     /// Whether any step brought the fields (not in the study's
     /// convolution engine).
     bool fields_seen = false;

@@ -142,6 +142,38 @@ namespace fgimpact
     Vector<float>
     cell_plastic_strain() const;
 
+    /// The committed state's von Mises stress over the current yield
+    /// stress (Y + H eps_bar) per active cell, the largest of its Gauss
+    /// points (0 where no point is plastic or the cell is not locally
+    /// owned), indexed as cell_plastic_strain(): the return map's own
+    /// verdict, at most 1 up to the iteration's tolerance.
+    Vector<float>
+    cell_yield_utilization() const;
+
+    /// Whether the locally owned active cell (active_cell_index() of this
+    /// rank's triangulation) holds committed plastic strain.
+    bool
+    holds_plastic_strain(const unsigned int active_cell_index) const;
+
+    /**
+     * The committed plastic strain eps_p and equivalent plastic strain of
+     * the locally owned active cell at the point `unit_point` of its
+     * reference cell: the tensor-product Lagrange interpolant through its
+     * Gauss points (trilinear for Q1; at a vertex the extrapolation of
+     * the Gauss-point values that Abaqus and ANSYS use for nodal
+     * results).  Zero for a cell without plastic strain.  With it, every
+     * stress the program writes is sigma = C(x) (eps(x) - eps_p(x)).
+     */
+    PlasticState
+    plastic_state(const unsigned int active_cell_index,
+                  const Point<3>    &unit_point) const;
+
+    /// The current yield stress Y(z) + H(z) eps_bar (Pa) at height z (m)
+    /// for the equivalent plastic strain eps_bar (infinite where the
+    /// plate is ceramic-rich, i.e. elastic).
+    double
+    yield_stress(const double z, const double equivalent_plastic_strain) const;
+
     /// The committed state (this rank's points) and the work.
     void
     save(CheckpointWriter &out) const;
@@ -211,13 +243,23 @@ namespace fgimpact
     std::vector<int>                     local_index;
     std::vector<unsigned int>            active_index;
     std::vector<double>                  skip_strain;
+    /// Per active cell of this rank's triangulation: its index c in the
+    /// tables above, or -1 (not metal-rich, not locally owned).
+    std::vector<int> cell_of_active;
+    /// The Gauss points' 1D coordinates (unit cell) and, per point q, the
+    /// index of each of its coordinates among them (for plastic_state()).
+    std::vector<double>                      gauss_1d;
+    std::vector<std::array<unsigned int, 3>> gauss_index;
     /// Per point: Lame's constants, yield strength, hardening (Pa).
     std::vector<double> lambda, mu, yield, hardening;
     /// Per point: the committed and the trial state; per cell: whether
     /// any point of it is plastic (committed).
     std::vector<PlasticState> committed, trial;
     std::vector<double>       trial_work; // J/m^3 times the point's volume
-    std::vector<bool>         plastic_cell;
+    /// Per point: von Mises over the yield stress of the trial and the
+    /// committed state where plastic (0 elsewhere).
+    std::vector<double> trial_utilization, utilization;
+    std::vector<bool>   plastic_cell;
 
     TrilinosWrappers::MPI::Vector  u_distributed, u_ghosted;
     std::unique_ptr<Epetra_Import> importer;

@@ -8,6 +8,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/plate/plastic_stress_correction.h>
 #include <fgimpact/plate/plate_model.h>
 #include <fgimpact/plate/probes.h>
 
@@ -118,6 +119,14 @@ namespace fgimpact
     std::vector<double>
     row(const double t, const ProbeValues &values) const;
 
+    /// A plastic run: the stresses are the ones the material carries, as
+    /// the VTU's (PlasticStressCorrection).
+    void
+    set_plasticity(const PlasticPlate &plasticity)
+    {
+      plastic_correction.set_plasticity(plasticity);
+    }
+
     const std::vector<Point<3>> &
     locations() const
     {
@@ -148,7 +157,8 @@ namespace fgimpact
     /// stress components xx, yy, zz, xy, xz, yz (Pa per m).
     std::vector<std::array<Weights, 9>> weights;
     /// The reaction's stiffness (on u) and mass (on a) parts.
-    Weights reaction_stiffness, reaction_mass;
+    Weights                 reaction_stiffness, reaction_mass;
+    PlasticStressCorrection plastic_correction;
   };
 } // namespace fgimpact
 

@@ -7,6 +7,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/plate/plastic_stress_correction.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <array>
@@ -82,6 +83,14 @@ namespace fgimpact
     SymmetricTensor<2, 3>
     stress(const TrilinosWrappers::MPI::Vector &u) const;
 
+    /// A plastic run: the stress is the one the material carries, as the
+    /// VTU's (PlasticStressCorrection).
+    void
+    set_plasticity(const PlasticPlate &plasticity)
+    {
+      plastic_correction.set_plasticity(plasticity);
+    }
+
   private:
     using Weights = std::vector<std::pair<types::global_dof_index, double>>;
 
@@ -95,7 +104,8 @@ namespace fgimpact
     MPI_Comm               mpi_communicator;
     std::array<Weights, 3> displacement_weights;
     /// Independent stress components in the order xx, yy, zz, yz, xz, xy.
-    std::array<Weights, 6> stress_weights;
+    std::array<Weights, 6>  stress_weights;
+    PlasticStressCorrection plastic_correction;
   };
 } // namespace fgimpact
 

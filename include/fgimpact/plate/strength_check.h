@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <fgimpact/material/strength.h>
+#include <fgimpact/plate/plastic_plate.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <Epetra_Import.h>
@@ -61,6 +62,15 @@ namespace fgimpact
     void
     set_peaks(const StrengthPeak &metal, const StrengthPeak &ceramic);
 
+    /// A plastic run: the stress checked is the one the material carries,
+    /// C (eps - eps_p), with each cell's plastic strain at its support
+    /// points (PlasticPlate::plastic_state()), and a metal point's
+    /// strength is its current yield stress Y(z) + H(z) eps_bar.  Without
+    /// it (and in an elastic run) the stress is C eps: what an elastic
+    /// material would carry.
+    void
+    set_plasticity(const PlasticPlate &plasticity);
+
   private:
     /// The cell data for the cells that are checked.
     void
@@ -77,9 +87,14 @@ namespace fgimpact
     void
     add_point(const Point<3> &x, const double E, const double nu);
 
-    /// The point k's stress from its displacement gradient G at time t.
+    /// The point k's stress from its displacement gradient G at time t
+    /// (with the plastic strain taken off), against its strength, or for
+    /// a plastic metal point against `yield_stress` (Pa) if positive.
     void
-    check_point(const unsigned int k, const double G[3][3], const double t);
+    check_point(const unsigned int k,
+                const double       G[3][3],
+                const double       t,
+                const double       yield_stress = 0.);
 
     StrengthPeak
     global_peak(const StrengthPeak &local, const unsigned int n_local) const;
@@ -119,6 +134,11 @@ namespace fgimpact
     /// its DoFs in the order [s * 3 + component].
     std::vector<unsigned int> table;
     std::vector<int>          local_index;
+    /// Per checked cell: its active_cell_index() (for the plastic state).
+    std::vector<unsigned int> active_index;
+    /// The scalar element's unit support points (the points checked).
+    std::vector<Point<3>> unit_support;
+    const PlasticPlate   *plasticity = nullptr;
     /// Per checked cell and point: Lame's lambda and 2 mu (Pa), 1/strength
     /// (1/Pa, 0 if the check is off), whether metal-rich, the point (m).
     std::vector<double>   lambda, two_mu, inverse_strength;

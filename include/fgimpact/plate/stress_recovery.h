@@ -8,6 +8,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/plate/plastic_plate.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <array>
@@ -90,6 +91,31 @@ namespace fgimpact
 
     explicit StressRecovery(const PlateModel &plate);
 
+    /// A plastic run (Material/Plasticity = J2): every recovered stress
+    /// is C (eps - eps_p), with each cell's plastic strain at its support
+    /// points (PlasticPlate::plastic_state()), and the nodal averages of
+    /// the equivalent plastic strain and of the current yield stress are
+    /// recovered too (plastic_fields()).  The strain fields stay the total
+    /// strain.
+    void
+    set_plasticity(const PlasticPlate &plasticity);
+
+    /// Whether set_plasticity() was called.
+    bool
+    plastic() const
+    {
+      return plasticity != nullptr;
+    }
+
+    /// A plastic run's recovered equivalent plastic strain (continuous,
+    /// for ParaView's Contour) and current yield stress Y(z) + H(z)
+    /// eps_bar (MPa; 0 in the ceramic-rich, elastic part), ghosted.
+    const std::array<TrilinosWrappers::MPI::Vector, 2> &
+    plastic_fields() const
+    {
+      return plastic_ghosted;
+    }
+
     /// Recover all fields from the ghosted displacement u (m) and update
     /// the peak fields.
     void
@@ -123,18 +149,38 @@ namespace fgimpact
     void
     accumulate_cell_values(const TrilinosWrappers::MPI::Vector &u_ghosted);
 
+    /// A plastic run's stress at a cell's unit point from the total
+    /// strain eps: C (eps - eps_p) (E in Pa), returned onto the yield
+    /// surface of the point's current yield stress where the
+    /// extrapolation overshoots it (J2Plasticity::admissible_stress());
+    /// adds the point's eps_bar to eps_bar_sum.
+    SymmetricTensor<2, 3>
+    carried_stress(const DoFHandler<3>::active_cell_iterator &cell,
+                   const Point<3>                            &unit_point,
+                   const double                               E,
+                   const double                               nu,
+                   const SymmetricTensor<2, 3>               &eps,
+                   double &eps_bar_sum) const;
+
     /// The owned fields from the sums: averages (odd components zero on a
     /// cut plane), von Mises, principal stresses and the peaks.
     void
     average_and_derive();
 
-    const PlateModel &plate;
-    DoFHandler<3>     dof_handler;
-    IndexSet          owned, relevant;
+    const PlateModel   &plate;
+    const PlasticPlate *plasticity = nullptr;
+    DoFHandler<3>       dof_handler;
+    IndexSet            owned, relevant;
     /// 1 / (number of cells sharing each owned scalar DoF).
     TrilinosWrappers::MPI::Vector inverse_count;
     /// Per-cell sums (writable ghosts), 6 stress + 6 strain components.
-    std::array<TrilinosWrappers::MPI::Vector, 12>       sums;
+    std::array<TrilinosWrappers::MPI::Vector, 12> sums;
+    /// A plastic run: the sums of eps_bar, and the owned and ghosted
+    /// plastic fields.
+    TrilinosWrappers::MPI::Vector                plastic_sum;
+    std::array<TrilinosWrappers::MPI::Vector, 2> plastic_owned, plastic_ghosted;
+    /// The height (m) of each owned scalar DoF, in the order of `owned`.
+    std::vector<double>                                 support_z;
     std::array<TrilinosWrappers::MPI::Vector, n_fields> owned_values;
     std::array<TrilinosWrappers::MPI::Vector, n_fields> ghosted;
     unsigned int                                        n_recovered = 0;

@@ -1,0 +1,128 @@
+// The plastic part of the probes' stresses (plastic_stress_correction.h).
+
+#include <deal.II/base/quadrature.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <fgimpact/material/constitutive_law.h>
+#include <fgimpact/material/plasticity.h>
+#include <fgimpact/plate/plastic_stress_correction.h>
+#include <fgimpact/plate/stress_recovery.h>
+
+namespace fgimpact
+{
+  namespace
+  {
+    /// (row, column) of the six components in probes.csv's order.
+    constexpr unsigned int component[6][2] =
+      {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+  } // namespace
+
+
+
+  PlasticStressCorrection::PlasticStressCorrection(const PlateModel &plate)
+    : plate(plate)
+  {}
+
+
+
+  void
+  PlasticStressCorrection::add_point(
+    const DoFHandler<3>::active_cell_iterator      &cell,
+    const Point<3>                                 &unit_point,
+    const std::vector<std::pair<unsigned, double>> &weights,
+    const unsigned int                              planes)
+  {
+    const auto         &fe = plate.get_fe();
+    const Quadrature<3> point(std::vector<Point<3>>{unit_point});
+    FEValues<3>         fe_values(plate.get_mapping(),
+                          fe,
+                          point,
+                          update_gradients | update_quadrature_points);
+    fe_values.reinit(cell);
+    PropertyInterpolator properties(fe.base_element(0),
+                                    point.get_points(),
+                                    plate.get_material());
+    std::vector<double>  E, nu, rho;
+    properties.values(cell, E, nu, rho);
+
+    Record                               record{cell->active_cell_index(),
+                  unit_point,
+                  E[0],
+                  nu[0],
+                  fe_values.quadrature_point(0)[2],
+                  planes,
+                  weights,
+                  {},
+                  {}};
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    cell->get_dof_indices(dofs);
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      {
+        record.local_index.push_back(static_cast<int>(dofs[i]));
+        const unsigned int    c = fe.system_to_component_index(i).first;
+        const auto            g = fe_values.shape_grad(i, 0);
+        SymmetricTensor<2, 3> eps;
+        for (unsigned int d = 0; d < 3; ++d)
+          eps[c][d] += (c == d ? 1. : 0.5) * g[d];
+        record.strain.push_back(eps);
+      }
+    records.push_back(std::move(record));
+  }
+
+
+
+  void
+  PlasticStressCorrection::set_plasticity(const PlasticPlate &plastic)
+  {
+    plasticity = &plastic;
+    u_ghosted.reinit(plate.locally_owned_dofs(),
+                     plate.locally_relevant_dofs(),
+                     plate.get_mpi_communicator());
+    // The global DoFs of the records as local indices of u_ghosted.
+    const auto &map = u_ghosted.trilinos_vector().Map();
+    for (auto &record : records)
+      for (auto &index : record.local_index)
+        index = map.LID(static_cast<TrilinosWrappers::types::int_type>(index));
+  }
+
+
+
+  void
+  PlasticStressCorrection::add_to(const TrilinosWrappers::MPI::Vector &u,
+                                  std::vector<double>                 &local,
+                                  const unsigned int                   stride,
+                                  const unsigned int offset) const
+  {
+    if (!plasticity)
+      return;
+    if (!importer)
+      importer =
+        std::make_unique<Epetra_Import>(u_ghosted.trilinos_vector().Map(),
+                                        u.trilinos_vector().Map());
+    const int error = u_ghosted.trilinos_vector().Import(u.trilinos_vector(),
+                                                         *importer,
+                                                         Insert);
+    AssertThrow(error == 0, ExcTrilinosError(error));
+    const double *const values = u_ghosted.trilinos_vector()[0];
+    for (const auto &record : records)
+      {
+        SymmetricTensor<2, 3> eps;
+        for (unsigned int i = 0; i < record.strain.size(); ++i)
+          eps += values[record.local_index[i]] * record.strain[i];
+        const PlasticState state =
+          plasticity->plastic_state(record.active_index, record.unit_point);
+        const SymmetricTensor<2, 3> elastic =
+          HookeLaw::stress(record.E, record.nu, eps);
+        const SymmetricTensor<2, 3> carried = J2Plasticity::admissible_stress(
+          HookeLaw::stress(record.E, record.nu, eps - state.plastic_strain),
+          plasticity->yield_stress(record.z, state.equivalent_plastic_strain));
+        const SymmetricTensor<2, 3> difference = carried - elastic;
+        for (const auto &[slot, factor] : record.weights)
+          for (unsigned int s = 0; s < 6; ++s)
+            if (!odd_under_reflection(s, record.planes))
+              local[slot * stride + offset + s] +=
+                factor * difference[component[s][0]][component[s][1]];
+      }
+  }
+} // namespace fgimpact

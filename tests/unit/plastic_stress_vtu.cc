@@ -1,0 +1,159 @@
+// A plastic run writes the stress the metal carries, sigma = C (eps -
+// eps_p), read back from the files users read (issue 37, item 2).  The
+// default scene with the resolved sphere on a J2 face, quarter plate,
+// contact refinement level 3, End time = auto, a VTU snapshot every 10
+// steps and at the peak force:
+//  1. In every snapshot, wherever the recovered equivalent plastic strain
+//     is positive, the recovered von Mises stress is at most the written
+//     current yield stress Y(z) + H(z) eps_bar (1e-5 relative: the VTU's
+//     float32); before the fix it was 10 x the yield strength.
+//  2. The return map's own verdict, the cell field von_mises_over_yield
+//     (the Gauss points' von Mises over their yield stress), is at most 1
+//     (1e-5).
+//  3. summary.txt: max_von_mises_over_yield (the stress carried) is at
+//     most 1 (to its 4 printed digits), elastic_von_mises_over_yield (the
+//     elastic trial's) above 1, and probe_top_peak_von_mises_MPa (the
+//     probe at the impact point) at most yield_strength_at_peak_MPa's
+//     hardened range (the top face is pure metal: Y_m plus
+//     H eps_bar_max with the defaults Y_m = 275 MPa, H_m = 0.3 GPa).
+//  4. A yield strength no stress reaches (1e11 Pa): the snapshots' stress
+//     fields equal the elastic run's (1e-6 of the largest value).
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <test_tools.h>
+#include <vtu_reader.h>
+
+using namespace dealii;
+
+namespace
+{
+  /// The scene with `extra` settings into out_NAME; its summary.txt.
+  std::map<std::string, std::string>
+  impact(const std::string &name, const std::string &extra)
+  {
+    const std::string directory = "out_" + name;
+    fgimpact_tests::remove_output(directory);
+    fgimpact_tests::run_quietly(
+      FGIMPACT_SOURCE_DIR "/prm/default.prm",
+      "subsection Geometry\n set Symmetry = quarter\n"
+      " set Contact refinement levels = 3\nend\n"
+      "subsection Contact\n set Model = resolved sphere\nend\n"
+      "subsection Time integration\n set End time = auto\nend\n"
+      "subsection Output\n set Directory = " +
+        directory +
+        "\n set VTU interval = 10\n set VTU compression = none\n"
+        " set Fields = stress, von_mises\n set Log interval = 0\n"
+        " set Print timing = false\nend\n" +
+        extra);
+    return fgimpact_tests::read_summary(directory + "/summary.txt");
+  }
+
+  /// The snapshots' piece files (one rank: vtu/solution_*.vtu), sorted.
+  std::vector<std::string>
+  snapshots(const std::string &directory)
+  {
+    std::vector<std::string> files;
+    for (const auto &entry :
+         std::filesystem::directory_iterator(directory + "/vtu"))
+      {
+        const std::string file = entry.path().filename().string();
+        if (file.rfind("solution_", 0) == 0 && file.size() > 4 &&
+            file.substr(file.size() - 4) == ".vtu")
+          files.push_back(directory + "/vtu/" + file);
+      }
+    std::sort(files.begin(), files.end());
+    return files;
+  }
+
+  const std::string j2 = "subsection Material\n set Plasticity = J2\nend\n";
+} // namespace
+
+int
+main(int argc, char *argv[])
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  bool                             ok = true;
+
+  // 1.-2. The snapshots of the J2 run.
+  const auto   plastic          = impact("j2", j2);
+  const auto   files            = snapshots("out_j2");
+  unsigned int n_plastic_points = 0;
+  bool         below_yield = true, cells_below = true;
+  for (const auto &file : files)
+    {
+      const auto vm    = fgimpact_tests::read_array(file, "von_mises_MPa");
+      const auto yield = fgimpact_tests::read_array(file, "yield_stress_MPa");
+      const auto eps_bar =
+        fgimpact_tests::read_array(file, "equivalent_plastic_strain_nodal");
+      for (std::size_t i = 0; i < vm.size(); ++i)
+        if (eps_bar[i] > 0.f)
+          {
+            ++n_plastic_points;
+            below_yield = below_yield && vm[i] <= yield[i] * (1. + 1e-5);
+          }
+      for (const float r :
+           fgimpact_tests::read_array(file, "von_mises_over_yield"))
+        cells_below = cells_below && r <= 1. + 1e-5;
+    }
+  std::printf("J2 run, %s snapshots: von Mises <= the written yield stress "
+              "at every point with plastic strain (%s such points): %s\n",
+              files.size() >= 10 ? "at least 10" : "FEWER THAN 10",
+              n_plastic_points > 100 ? "more than 100" : "FEWER THAN 100",
+              below_yield ? "yes" : "NO");
+  std::printf("the cells' von_mises_over_yield (Gauss points) <= 1: %s\n",
+              cells_below ? "yes" : "NO");
+  ok = ok && files.size() >= 10 && n_plastic_points > 100 && below_yield &&
+       cells_below;
+
+  // 3. summary.txt.
+  const double carried = std::stod(plastic.at("max_von_mises_over_yield"));
+  const double elastic = std::stod(plastic.at("elastic_von_mises_over_yield"));
+  const double probe   = std::stod(plastic.at("probe_top_peak_von_mises_MPa"));
+  const double hardened =
+    275e6 + 0.3e9 * std::stod(plastic.at("max_equivalent_plastic_strain"));
+  const bool summary_ok =
+    carried <= 1. && elastic > 1. && probe * 1e6 <= hardened * (1. + 1e-4);
+  std::printf("summary.txt: max_von_mises_over_yield <= 1: %s; "
+              "elastic_von_mises_over_yield > 1: %s; the top probe's peak von "
+              "Mises within the top face's hardened yield stress: %s\n",
+              carried <= 1. ? "yes" : "NO",
+              elastic > 1. ? "yes" : "NO",
+              probe * 1e6 <= hardened * (1. + 1e-4) ? "yes" : "NO");
+  ok = ok && summary_ok;
+
+  // 4. The elastic limit.
+  impact("elastic", "");
+  impact("stiff",
+         "subsection Material\n set Plasticity = J2\n"
+         " set Metal yield strength = 1e11\nend\n");
+  const auto a = snapshots("out_elastic"), b = snapshots("out_stiff");
+  bool       same = a.size() == b.size() && !a.empty();
+  for (std::size_t f = 0; same && f < a.size(); ++f)
+    for (const std::string field :
+         {"sigma_xx_MPa", "sigma_zz_MPa", "sigma_xz_MPa", "von_mises_MPa"})
+      {
+        const auto  x       = fgimpact_tests::read_array(a[f], field);
+        const auto  y       = fgimpact_tests::read_array(b[f], field);
+        float       largest = 0, difference = 0;
+        std::size_t n = std::min(x.size(), y.size());
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            largest    = std::max(largest, std::abs(x[i]));
+            difference = std::max(difference, std::abs(x[i] - y[i]));
+          }
+        same = same && x.size() == y.size() && difference <= 1e-6 * largest;
+      }
+  std::printf("yield strength 1e11 Pa: every snapshot's stress fields equal "
+              "the elastic run's to 1e-6: %s\n",
+              same ? "yes" : "NO");
+  ok = ok && same;
+
+  std::printf("%s\n", ok ? "all checks passed" : "CHECK FAILED");
+  return ok ? 0 : 1;
+}
