@@ -126,4 +126,20 @@ PY
 check "json.load reads summary.json: summary.txt's keys, numbers and text" \
   json_matches "$work/run"
 check "... and a study case's summary.json" json_matches "$work/study/case_001"
+
+# A static study writes its results (issue 37): study.csv has the static
+# keys, and the linear plate's mid-plane deflection doubles with the load.
+"$build/fgimpact" tests/run/default_small.prm -s "Problem type=static" \
+  -s "Output/Directory=$work/static" -s "Output/VTU interval=0" \
+  -s "Output/Print timing=false" --study "Static/Pressure=1e6,2e6" >/dev/null
+static_linear() { # FILE
+  "$python" - "$1" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1], newline="")))
+w = [float(r["static_deflection_mid_um"]) for r in rows]
+sys.exit(0 if len(w) == 2 and w[0] > 0 and abs(w[1] - 2 * w[0]) <= 1.5e-6 else 1)
+PY
+}
+check "a static study's study.csv: the deflection, linear in the load (to its printed 1e-6 um)" \
+  static_linear "$work/static/study.csv"
 exit $failed

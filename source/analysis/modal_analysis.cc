@@ -361,6 +361,22 @@ namespace fgimpact
 
 
 
+  SummaryWriter
+  ModalAnalysis::summary() const
+  {
+    SummaryWriter out;
+    out.add_text("status", "completed");
+    for (unsigned int j = 0; j < modes.size(); ++j)
+      out.add("frequency_" + std::to_string(j + 1) + "_Hz",
+              modes[j].frequency,
+              4);
+    out.add("n_dofs", plate.n_dofs(), 0);
+    out.add("subspace_iterations", iterations, 0);
+    return out;
+  }
+
+
+
   void
   ModalAnalysis::write_output(
     const std::string                                &directory,
@@ -370,10 +386,8 @@ namespace fgimpact
     // Rank 0 writes, every rank learns the outcome before the collective
     // VTU output (a failure on rank 0 alone must not leave rank 1 waiting).
     run_on_root(plate.get_mpi_communicator(), [&]() {
-      std::string   csv = "mode,frequency_Hz,w_energy_fraction\n";
-      SummaryWriter summary;
-      summary.add_text("status", "completed");
-      char line[200];
+      std::string csv = "mode,frequency_Hz,w_energy_fraction\n";
+      char        line[200];
       for (unsigned int j = 0; j < modes.size(); ++j)
         {
           std::snprintf(line,
@@ -383,14 +397,9 @@ namespace fgimpact
                         modes[j].frequency,
                         modes[j].w_fraction);
           csv += line;
-          summary.add("frequency_" + std::to_string(j + 1) + "_Hz",
-                      modes[j].frequency,
-                      4);
         }
-      summary.add("n_dofs", plate.n_dofs(), 0);
-      summary.add("subspace_iterations", iterations, 0);
       write_file_atomically(directory + "/frequencies.csv", csv);
-      summary.write(directory + "/summary.txt");
+      summary().write(directory + "/summary.txt");
     });
     // Mode shapes scaled to a unit maximum displacement, as VTU "time"
     // steps 1..N, the mode numbers (ParaView's time bar then steps through

@@ -117,6 +117,8 @@ namespace fgimpact
                                0.,
                                NewtonControl(),
                                state);
+        check_indentation_contact(state,
+                                  "at load step " + std::to_string(step));
         if (state.candidates_exhausted)
           {
             AssertThrow(contact.grow_candidates(),

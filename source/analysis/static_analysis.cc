@@ -18,6 +18,20 @@
 namespace fgimpact
 {
   void
+  check_indentation_contact(const ContactState &state, const std::string &where)
+  {
+    AssertThrow(state.newton_iterations != numbers::invalid_unsigned_int,
+                ExcMessage("Static/Load = sphere: the contact's "
+                           "complementarity problem (active set, then "
+                           "projected Gauss-Seidel) was not solved " +
+                           where +
+                           "; raise Geometry/Contact refinement levels or "
+                           "lower Static/Indentation."));
+  }
+
+
+
+  void
   StaticAnalysis::Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Static");
@@ -189,6 +203,7 @@ namespace fgimpact
                                0.,
                                NewtonControl(),
                                state);
+        check_indentation_contact(state, "at the full indentation");
         if (!state.candidates_exhausted)
           break;
         AssertThrow(contact.grow_candidates(),
@@ -273,6 +288,50 @@ namespace fgimpact
 
 
 
+  SummaryWriter
+  StaticAnalysis::summary() const
+  {
+    SummaryWriter     out;
+    const std::string where[3] = {"bottom", "mid", "top"};
+    out.add_text("status", "completed");
+    for (unsigned int k = 0; k < 3; ++k)
+      out.add("static_deflection_" + where[k] + "_um",
+              results.deflection[k] * 1e6,
+              6);
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        out.add("sigma_xx_" + where[k] + "_MPa", results.sigma_xx[k] * 1e-6, 6);
+        out.add("sigma_yy_" + where[k] + "_MPa", results.sigma_yy[k] * 1e-6, 6);
+        out.add("sigma_zz_" + where[k] + "_MPa", results.sigma_zz[k] * 1e-6, 6);
+      }
+    if (parameters.load == Load::sphere)
+      {
+        out.add("static_indentation_um", parameters.indentation * 1e6, 6);
+        out.add("static_contact_force_N", results.contact_force, 6);
+        out.add("contact_radius_mm", results.contact_radius * 1e3, 6);
+        out.add("max_contact_pressure_MPa", results.max_pressure * 1e-6, 6);
+        out.add("n_contact_nodes", results.n_contact_nodes, 0);
+        const auto &p = results.plastic;
+        if (p.modelled)
+          {
+            out.add("mean_contact_pressure_MPa",
+                    results.contact_force / p.contact_area * 1e-6,
+                    6);
+            out.add("plastic_dissipation_J", p.dissipation, 9);
+            out.add("permanent_indentation_um",
+                    p.permanent_indentation * 1e6,
+                    5);
+            out.add("max_equivalent_plastic_strain", p.max_plastic_strain, 6);
+            out.add("first_yield_contact_force_N", p.first_yield_force, 4);
+            out.add("plate_iterations", p.iterations, 0);
+          }
+      }
+    out.add("n_dofs", results.n_dofs, 0);
+    return out;
+  }
+
+
+
   void
   StaticAnalysis::write_output(
     const std::string                                &directory,
@@ -282,51 +341,13 @@ namespace fgimpact
     // Rank 0 writes, every rank learns the outcome before the collective
     // VTU output (a failure on rank 0 alone must not leave rank 1 waiting).
     run_on_root(plate.get_mpi_communicator(), [&]() {
-      SummaryWriter     out;
-      const std::string where[3] = {"bottom", "mid", "top"};
-      out.add_text("status", "completed");
-      for (unsigned int k = 0; k < 3; ++k)
-        out.add("static_deflection_" + where[k] + "_um",
-                results.deflection[k] * 1e6,
-                6);
-      for (unsigned int k = 0; k < 3; ++k)
-        {
-          out.add("sigma_xx_" + where[k] + "_MPa",
-                  results.sigma_xx[k] * 1e-6,
-                  6);
-          out.add("sigma_yy_" + where[k] + "_MPa",
-                  results.sigma_yy[k] * 1e-6,
-                  6);
-          out.add("sigma_zz_" + where[k] + "_MPa",
-                  results.sigma_zz[k] * 1e-6,
-                  6);
-        }
       if (parameters.load == Load::sphere)
         {
-          out.add("static_indentation_um", parameters.indentation * 1e6, 6);
-          out.add("static_contact_force_N", results.contact_force, 6);
-          out.add("contact_radius_mm", results.contact_radius * 1e3, 6);
-          out.add("max_contact_pressure_MPa", results.max_pressure * 1e-6, 6);
-          out.add("n_contact_nodes", results.n_contact_nodes, 0);
           write_pressure_csv(directory + "/contact_pressure.csv");
-          const auto &p = results.plastic;
-          if (p.modelled)
-            {
-              out.add("mean_contact_pressure_MPa",
-                      results.contact_force / p.contact_area * 1e-6,
-                      6);
-              out.add("plastic_dissipation_J", p.dissipation, 9);
-              out.add("permanent_indentation_um",
-                      p.permanent_indentation * 1e6,
-                      5);
-              out.add("max_equivalent_plastic_strain", p.max_plastic_strain, 6);
-              out.add("first_yield_contact_force_N", p.first_yield_force, 4);
-              out.add("plate_iterations", p.iterations, 0);
-              write_load_curve(directory + "/load_curve.csv");
-            }
+          if (results.plastic.modelled)
+            write_load_curve(directory + "/load_curve.csv");
         }
-      out.add("n_dofs", results.n_dofs, 0);
-      out.write(directory + "/summary.txt");
+      summary().write(directory + "/summary.txt");
     });
     TrilinosWrappers::MPI::Vector zero;
     plate.initialize_vector(zero);

@@ -144,6 +144,8 @@ namespace fgimpact
         analysis.write_output(parameters.output.directory,
                               parameters.output.vtu_compression,
                               parameters.output.vtu_fields);
+        // The entries on every rank, for a study's study.csv.
+        summary.keep(analysis.summary());
         const auto &r = analysis.get_results();
         char        line[300];
         std::snprintf(line,
@@ -198,6 +200,8 @@ namespace fgimpact
         analysis.write_output(parameters.output.directory,
                               parameters.output.vtu_compression,
                               parameters.output.vtu_fields);
+        // The entries on every rank, for a study's study.csv.
+        summary.keep(analysis.summary());
         pcout << "  " << analysis.get_modes().size() << " modes after "
               << analysis.n_iterations() << " subspace iterations:\n";
         for (unsigned int j = 0; j < analysis.get_modes().size(); ++j)

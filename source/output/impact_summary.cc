@@ -465,6 +465,21 @@ namespace fgimpact
                 },
                 W),
               number(
+                "crater_diameter_mm",
+                4,
+                [](const R &r) { return r.plastic.crater_diameter * 1e3; },
+                W),
+              number(
+                "plastic_zone_depth_mm",
+                4,
+                [](const R &r) { return r.plastic.plastic_zone_depth * 1e3; },
+                W),
+              number(
+                "plastic_zone_radius_mm",
+                4,
+                [](const R &r) { return r.plastic.plastic_zone_radius * 1e3; },
+                W),
+              number(
                 "max_equivalent_plastic_strain",
                 6,
                 [](const R &r) { return r.plastic.max_plastic_strain; },

@@ -1,22 +1,51 @@
 // What a plastic plate leaves, for summary.txt (plasticity_report.h).
 
+#include <deal.II/base/mpi.h>
+
 #include <fgimpact/output/plasticity_report.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <set>
 
 namespace fgimpact
 {
   PlasticityReport::PlasticityReport(const PlasticPlate &plasticity,
+                                     const PlateModel   &plate,
                                      ImpactResults      &results,
                                      const double        whole,
-                                     const double        V0)
+                                     const double        V0,
+                                     const Point<3>     &impact_point,
+                                     const double        radius)
     : plasticity(plasticity)
     , results(results)
     , whole(whole)
     , V0(V0)
+    , impact_point(impact_point)
+    , top(plate.get_geometry().thickness())
+    , mpi_communicator(plate.get_mpi_communicator())
   {
-    results.plastic.modelled = true;
+    results.plastic.modelled                    = true;
+    const double                      tolerance = 1e-9 * top;
+    const auto                       &owned     = plate.locally_owned_dofs();
+    std::set<types::global_dof_index> seen;
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const Point<3> &x = cell->vertex(v);
+            const double    r = impact_point[0] - x[0];
+            if (std::abs(x[2] - top) < tolerance &&
+                std::abs(x[1] - impact_point[1]) < tolerance &&
+                r > -tolerance && r <= radius)
+              {
+                const auto dof = cell->vertex_dof_index(v, 2);
+                if (owned.is_element(dof) && seen.insert(dof).second)
+                  line.emplace_back(dof, std::max(r, 0.));
+              }
+          }
+    line_deflection.assign(line.size(), 0.);
   }
 
 
@@ -36,6 +65,10 @@ namespace fgimpact
         r.first_yield_time  = last_time + theta * (record.t - last_time);
         r.first_yield_force = last_force + theta * (force - last_force);
       }
+    if (record.fields)
+      for (unsigned int i = 0; i < line.size(); ++i)
+        line_deflection[i] = -record.fields->displacement()(line[i].first);
+    W_mid       = s.W_mid;
     last_ratio  = ratio;
     last_time   = record.t;
     last_force  = force;
@@ -68,6 +101,35 @@ namespace fgimpact
                           &results.plastic.first_yield_time,
                           &results.plastic.first_yield_force})
       in.get(*value);
+  }
+
+
+
+  void
+  PlasticityReport::close_output()
+  {
+    auto      &r          = results.plastic;
+    const auto zone       = plasticity.plastic_zone_extent(impact_point, top);
+    r.plastic_zone_depth  = zone[0];
+    r.plastic_zone_radius = zone[1];
+    // The thinning along the line, from every rank, by distance; the rim
+    // is its first change of sign (linear between the two nodes).
+    std::vector<std::pair<double, double>> local;
+    for (unsigned int i = 0; i < line.size(); ++i)
+      local.emplace_back(line[i].second, line_deflection[i] - W_mid);
+    std::vector<std::pair<double, double>> profile;
+    for (const auto &part : Utilities::MPI::all_gather(mpi_communicator, local))
+      profile.insert(profile.end(), part.begin(), part.end());
+    std::sort(profile.begin(), profile.end());
+    r.crater_diameter = std::numeric_limits<double>::quiet_NaN();
+    for (unsigned int i = 1; i < profile.size(); ++i)
+      if (profile[i - 1].second > 0. && profile[i].second <= 0.)
+        {
+          const auto [r0, d0] = profile[i - 1];
+          const auto [r1, d1] = profile[i];
+          r.crater_diameter   = 2. * (r0 + d0 / (d0 - d1) * (r1 - r0));
+          break;
+        }
   }
 
 

@@ -185,6 +185,7 @@ namespace fgimpact
                                   std::numeric_limits<double>::infinity());
         hardening.push_back(plastic ? strength.hardening_modulus(z) : 0.);
         weights.push_back(fe_values.JxW(q));
+        position.push_back(fe_values.quadrature_point(q));
         // von Mises = sqrt(3/2) 2 mu |dev eps| <= sqrt(6) mu |grad u|.
         skip = std::min(skip, yield.back() / (std::sqrt(6.) * mu.back()));
       }
@@ -515,6 +516,26 @@ namespace fgimpact
     state.equivalent_plastic_strain =
       std::max(state.equivalent_plastic_strain, 0.);
     return state;
+  }
+
+
+
+  std::array<double, 2>
+  PlasticPlate::plastic_zone_extent(const Point<3> &centre,
+                                    const double    top) const
+  {
+    double depth = 0, radius = 0;
+    for (unsigned int k = 0; k < committed.size(); ++k)
+      if (committed[k].equivalent_plastic_strain > 0.)
+        {
+          const Point<3> &x = position[k];
+          depth             = std::max(depth, top - x[2]);
+          radius =
+            std::max(radius, std::hypot(x[0] - centre[0], x[1] - centre[1]));
+        }
+    const MPI_Comm comm = plate.get_mpi_communicator();
+    return {
+      {Utilities::MPI::max(depth, comm), Utilities::MPI::max(radius, comm)}};
   }
 
 

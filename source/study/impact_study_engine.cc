@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <fgimpact/app/run_control.h>
@@ -407,8 +409,19 @@ namespace fgimpact
         monitor.record(n + 1, t, response.plate_sample(), ball, state);
       }
     monitor.close_output();
-    AssertThrow(monitor.output_failure().empty(),
-                ExcOutputFailure(monitor.output_failure()));
+    // A failed write on any rank (rank 0 writes history.csv): every rank
+    // agrees and throws the failing rank's message, so none is left
+    // waiting in the next collective call.
+    const MPI_Comm comm = plate.get_mpi_communicator();
+    if (Utilities::MPI::max(monitor.output_failure().empty() ? 0 : 1, comm))
+      {
+        std::string message;
+        for (const auto &m :
+             Utilities::MPI::all_gather(comm, monitor.output_failure()))
+          if (message.empty())
+            message = m;
+        AssertThrow(false, ExcOutputFailure(message));
+      }
     monitor.finish(ball,
                    n_steps,
                    "completed",

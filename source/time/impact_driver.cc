@@ -393,8 +393,14 @@ namespace fgimpact
     // The plastic results first: the validity line the ValidityMonitor
     // prints at the end reads the largest plastic strain.
     if (plasticity)
-      monitor->add(std::make_unique<PlasticityReport>(
-        *plasticity, results, 1. / scene.share(), impactor.initial_velocity()));
+      monitor->add(
+        std::make_unique<PlasticityReport>(*plasticity,
+                                           plate,
+                                           results,
+                                           1. / scene.share(),
+                                           impactor.initial_velocity(),
+                                           scene.impact_point(),
+                                           impactor.radius()));
     monitor->add(std::make_unique<ValidityMonitor>(
       plate,
       validity_setup(parameters, scene, *contact, results),

@@ -18,6 +18,10 @@
 //     H eps_bar_max with the defaults Y_m = 275 MPa, H_m = 0.3 GPa).
 //  4. A yield strength no stress reaches (1e11 Pa): the snapshots' stress
 //     fields equal the elastic run's (1e-6 of the largest value).
+//  5. The crater's diameter in summary.txt equals the one of the last
+//     snapshot's top face (where the thinning W_top(r) - W_mid changes
+//     sign along y = y_c), and the plastic zone's depth and radius lie
+//     within the snapshot's plastic cells, less than an element inside.
 
 #include <deal.II/base/mpi.h>
 
@@ -126,6 +130,76 @@ main(int argc, char *argv[])
               elastic > 1. ? "yes" : "NO",
               probe * 1e6 <= hardened * (1. + 1e-4) ? "yes" : "NO");
   ok = ok && summary_ok;
+
+  // 5. The crater and the plastic zone, against the last snapshot (End
+  // time 200 us, a multiple of the VTU interval).
+  {
+    const auto s = impact("crater",
+                          j2 + "subsection Time integration\n set End time = "
+                               "2e-4\nend\nsubsection Output\n set Fields = "
+                               "displacement\n set VTU interval = 50\nend\n");
+    // Step 200's pieces (a mirrored part writes two).
+    const double h = 0.02, xc = 0.1, yc = 0.05, tol = 1e-7; // m (float32)
+    double       W_mid = 0;
+    std::vector<std::pair<double, double>> line;
+    double                                 depth = 0, radius = 0;
+    for (const auto &file : snapshots("out_crater"))
+      {
+        if (file.find("solution_00200") == std::string::npos)
+          continue;
+        const auto x = fgimpact_tests::read_points(file);
+        const auto u = fgimpact_tests::read_array(file, "displacement_m");
+        const auto eps =
+          fgimpact_tests::read_array(file, "equivalent_plastic_strain");
+        // W_mid under the impact point, the top face's deflection along
+        // y = y_c, x <= x_c, and the vertices of the plastic cells.
+        for (std::size_t i = 0; i < x.size() / 3; ++i)
+          {
+            const double px = x[3 * i], py = x[3 * i + 1], pz = x[3 * i + 2];
+            if (std::abs(px - xc) < tol && std::abs(py - yc) < tol &&
+                std::abs(pz - h / 2) < tol)
+              W_mid = -u[3 * i + 2];
+            if (std::abs(pz - h) < tol && std::abs(py - yc) < tol &&
+                px <= xc + tol)
+              line.emplace_back(std::max(xc - px, 0.), -u[3 * i + 2]);
+            if (eps[i] > 0.f)
+              {
+                depth  = std::max(depth, h - pz);
+                radius = std::max(radius, std::hypot(px - xc, py - yc));
+              }
+          }
+      }
+    std::sort(line.begin(), line.end());
+    double diameter = std::nan("");
+    for (std::size_t i = 1; i < line.size(); ++i)
+      {
+        const double d0 = line[i - 1].second - W_mid,
+                     d1 = line[i].second - W_mid;
+        if (d0 > 0. && d1 <= 0.)
+          {
+            diameter =
+              2. * (line[i - 1].first +
+                    d0 / (d0 - d1) * (line[i].first - line[i - 1].first));
+            break;
+          }
+      }
+    const double written = std::stod(s.at("crater_diameter_mm")) * 1e-3;
+    const double zone_d  = std::stod(s.at("plastic_zone_depth_mm")) * 1e-3;
+    const double zone_r  = std::stod(s.at("plastic_zone_radius_mm")) * 1e-3;
+    const double element = std::stod(s.at("element_size_under_ball_mm")) * 1e-3;
+    const bool   crater_ok = std::abs(diameter - written) < 1e-6;
+    // A Gauss point lies inside its cell: the zone reaches into the
+    // deepest (farthest) plastic cell, by less than one element size.
+    const bool zone_ok = zone_d <= depth + tol && zone_d > depth - element &&
+                         zone_r <= radius + tol && zone_r > radius - element;
+    std::printf("crater: summary.txt's crater_diameter_mm equals the last "
+                "snapshot's top-face profile's to 1e-3 mm: %s; the plastic "
+                "zone's depth and radius within the snapshot's plastic cells, "
+                "less than an element inside: %s\n",
+                crater_ok ? "yes" : "NO",
+                zone_ok ? "yes" : "NO");
+    ok = ok && crater_ok && zone_ok;
+  }
 
   // 4. The elastic limit.
   impact("elastic", "");

@@ -6,6 +6,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
 #include <fgimpact/plate/linear_solver.h>
 #include <fgimpact/plate/plate_model.h>
@@ -70,6 +71,11 @@ namespace fgimpact
     {
       return iterations;
     }
+
+    /// summary.txt's entries (every rank): SummaryFile::keep() gives
+    /// them to a study on every rank, write_output() writes them.
+    SummaryWriter
+    summary() const;
 
     /// frequencies.csv, summary.txt and one VTU per mode shape.
     void

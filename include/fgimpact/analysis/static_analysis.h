@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <fgimpact/contact/resolved_contact.h>
+#include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
 #include <fgimpact/plate/linear_solver.h>
 #include <fgimpact/plate/plastic_plate.h>
@@ -30,6 +31,14 @@ namespace fgimpact
     /// E_i/(1 - nu_i^2) of an elastic sphere (Pa); infinite: rigid.
     double modulus = std::numeric_limits<double>::infinity();
   };
+
+  /// Static/Load = sphere: stop with one line if the contact's
+  /// complementarity problem was not solved (ContactState's
+  /// newton_iterations invalid), as an impact step does; `where` names
+  /// the load step.
+  void
+  check_indentation_contact(const ContactState &state,
+                            const std::string  &where);
 
   /**
    * Static deflection of the plate, K u = f, under a load on the top face:
@@ -136,6 +145,11 @@ namespace fgimpact
     {
       return u;
     }
+
+    /// summary.txt's entries (every rank): SummaryFile::keep() gives
+    /// them to a study on every rank, write_output() writes them.
+    SummaryWriter
+    summary() const;
 
     /// Write summary.txt and a VTU file of the fields into directory.
     void

@@ -151,6 +151,15 @@ namespace fgimpact
     void
     write_failed(const SummaryWriter &content);
 
+    /// Keep `content` as the last write's entries without writing (the
+    /// ranks that do not write a file their rank 0 wrote: a study reads
+    /// its cases' results from memory on every rank).
+    void
+    keep(const SummaryWriter &content)
+    {
+      last = content;
+    }
+
     /// The entries of the last write (none before).
     const SummaryEntries &
     entries() const

@@ -4,6 +4,10 @@
 #include <fgimpact/output/postprocessor.h>
 #include <fgimpact/output/results.h>
 #include <fgimpact/plate/plastic_plate.h>
+#include <fgimpact/plate/plate_model.h>
+
+#include <utility>
+#include <vector>
 
 namespace fgimpact
 {
@@ -15,17 +19,24 @@ namespace fgimpact
    * the last elastic step and the first plastic one), the permanent
    * indentation (the plate's thinning under the impact point at the end,
    * W_top - W_mid: the top face's dent once the ball has left; its
-   * bending does not thin it) and the coefficient of restitution
-   * (departure over impact velocity).
+   * bending does not thin it), the crater's diameter (where the top
+   * face's thinning W(r) - W_mid along a line from the impact point
+   * changes sign at the rim), the plastic zone's depth and radius, and
+   * the coefficient of restitution (departure over impact velocity).
    */
   class PlasticityReport : public Postprocessor
   {
   public:
-    /// whole: 1 / the part's share; V0: the impact velocity (m/s).
+    /// whole: 1 / the part's share; V0: the impact velocity (m/s);
+    /// impact_point: on the top face (m); radius: how far from it along
+    /// the top face's line y = y_c, x <= x_c the crater's rim is sought (m).
     PlasticityReport(const PlasticPlate &plasticity,
+                     const PlateModel   &plate,
                      ImpactResults      &results,
                      const double        whole,
-                     const double        V0);
+                     const double        V0,
+                     const Point<3>     &impact_point,
+                     const double        radius);
 
     std::string
     name() const override
@@ -42,10 +53,23 @@ namespace fgimpact
     void
     load(CheckpointReader &in) override;
 
+    /// The crater's diameter and the plastic zone (collective).
+    void
+    close_output() override;
+
     void
     finish(const ImpactorState &ball) override;
 
   private:
+    /// The locally owned z DoFs of the top face's vertices on the line
+    /// y = y_c, x <= x_c within the radius, with their distance (m).
+    std::vector<std::pair<types::global_dof_index, double>> line;
+    /// Their last deflections W = -u_z (m).
+    std::vector<double> line_deflection;
+    const Point<3>      impact_point;
+    const double        top;
+    const MPI_Comm      mpi_communicator;
+    double              W_mid = 0; // m, the last step's
     const PlasticPlate &plasticity;
     ImpactResults      &results;
     const double        whole, V0;

@@ -109,7 +109,14 @@ namespace fgimpact
       bool   modelled              = false;
       double dissipation           = 0; // J, the plastic work
       double permanent_indentation = 0; // m, W_top - W_mid at the end
-      double max_plastic_strain    = 0; // equivalent plastic strain
+      /// m: where the top face's thinning changes sign (NaN: no rim
+      /// within the line searched); the deepest and the farthest Gauss
+      /// point with plastic strain, below the top face and from the
+      /// impact axis.
+      double crater_diameter     = std::numeric_limits<double>::quiet_NaN();
+      double plastic_zone_depth  = 0;
+      double plastic_zone_radius = 0;
+      double max_plastic_strain  = 0; // equivalent plastic strain
       double first_yield_time  = std::numeric_limits<double>::quiet_NaN(); // s
       double first_yield_force = std::numeric_limits<double>::quiet_NaN(); // N
       double restitution       = std::numeric_limits<double>::quiet_NaN();

@@ -168,6 +168,13 @@ namespace fgimpact
     plastic_state(const unsigned int active_cell_index,
                   const Point<3>    &unit_point) const;
 
+    /// The plastic zone of the committed state: the largest depth below
+    /// the top face z = `top` (m) and the largest horizontal distance
+    /// from `centre` (m) of a Gauss point with plastic strain, over all
+    /// ranks (0 and 0 without one).  Collective.
+    std::array<double, 2>
+    plastic_zone_extent(const Point<3> &centre, const double top) const;
+
     /// The current yield stress Y(z) + H(z) eps_bar (Pa) at height z (m)
     /// for the equivalent plastic strain eps_bar (infinite where the
     /// plate is ceramic-rich, i.e. elastic).
@@ -252,6 +259,8 @@ namespace fgimpact
     std::vector<std::array<unsigned int, 3>> gauss_index;
     /// Per point: Lame's constants, yield strength, hardening (Pa).
     std::vector<double> lambda, mu, yield, hardening;
+    /// Per point: its position (m).
+    std::vector<Point<3>> position;
     /// Per point: the committed and the trial state; per cell: whether
     /// any point of it is plastic (committed).
     std::vector<PlasticState> committed, trial;
