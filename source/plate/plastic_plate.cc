@@ -60,18 +60,7 @@ namespace fgimpact
                                           plate.get_material());
     n_dofs   = fe.n_dofs_per_cell();
     n_points = quadrature.size();
-    const QGauss<1> gauss(fe.degree + 1);
-    for (const auto &p : gauss.get_points())
-      gauss_1d.push_back(p[0]);
-    for (unsigned int q = 0; q < n_points; ++q)
-      {
-        std::array<unsigned int, 3> index{};
-        for (unsigned int d = 0; d < 3; ++d)
-          for (unsigned int i = 0; i < gauss_1d.size(); ++i)
-            if (std::abs(quadrature.point(q)[d] - gauss_1d[i]) < 1e-12)
-              index[d] = i;
-        gauss_index.push_back(index);
-      }
+    setup_interpolation(quadrature);
     cell_of_active.assign(
       plate.get_dof_handler().get_triangulation().n_active_cells(), -1);
 
@@ -433,121 +422,6 @@ namespace fgimpact
     // starts from the committed plastic strain's own load.
     committed_force = new_force;
     force           = new_force;
-  }
-
-
-
-  Vector<float>
-  PlasticPlate::cell_plastic_strain() const
-  {
-    // DataOut's size: this rank's triangulation (ghost and artificial
-    // cells included), not the global count.
-    Vector<float> result(
-      plate.get_dof_handler().get_triangulation().n_active_cells());
-    for (unsigned int c = 0; c < table.size(); ++c)
-      for (unsigned int q = 0; q < n_points; ++q)
-        result[active_index[c]] = std::max<float>(
-          result[active_index[c]],
-          committed[c * n_points + q].equivalent_plastic_strain);
-    return result;
-  }
-
-
-
-  Vector<float>
-  PlasticPlate::cell_yield_utilization() const
-  {
-    Vector<float> result(
-      plate.get_dof_handler().get_triangulation().n_active_cells());
-    for (unsigned int c = 0; c < table.size(); ++c)
-      if (plastic_cell[c])
-        for (unsigned int q = 0; q < n_points; ++q)
-          {
-            const unsigned int k = c * n_points + q;
-            result[active_index[c]] =
-              std::max<float>(result[active_index[c]], utilization[k]);
-          }
-    return result;
-  }
-
-
-
-  bool
-  PlasticPlate::holds_plastic_strain(const unsigned int active_cell_index) const
-  {
-    const int c = active_cell_index < cell_of_active.size() ?
-                    cell_of_active[active_cell_index] :
-                    -1;
-    return c >= 0 && plastic_cell[c];
-  }
-
-
-
-  PlasticState
-  PlasticPlate::plastic_state(const unsigned int active_cell_index,
-                              const Point<3>    &unit_point) const
-  {
-    PlasticState state;
-    if (!holds_plastic_strain(active_cell_index))
-      return state;
-    const unsigned int c = cell_of_active[active_cell_index];
-    // The 1D Lagrange polynomials through the Gauss points, at each
-    // coordinate of the point.
-    const unsigned int                 n = gauss_1d.size();
-    std::array<std::vector<double>, 3> L;
-    for (unsigned int d = 0; d < 3; ++d)
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          double l = 1;
-          for (unsigned int j = 0; j < n; ++j)
-            if (j != i)
-              l *= (unit_point[d] - gauss_1d[j]) / (gauss_1d[i] - gauss_1d[j]);
-          L[d].push_back(l);
-        }
-    for (unsigned int q = 0; q < n_points; ++q)
-      {
-        const auto  &i     = gauss_index[q];
-        const double w     = L[0][i[0]] * L[1][i[1]] * L[2][i[2]];
-        const auto  &point = committed[c * n_points + q];
-        state.plastic_strain += w * point.plastic_strain;
-        state.equivalent_plastic_strain += w * point.equivalent_plastic_strain;
-      }
-    // An extrapolation can undershoot; the equivalent strain is >= 0.
-    state.equivalent_plastic_strain =
-      std::max(state.equivalent_plastic_strain, 0.);
-    return state;
-  }
-
-
-
-  std::array<double, 2>
-  PlasticPlate::plastic_zone_extent(const Point<3> &centre,
-                                    const double    top) const
-  {
-    double depth = 0, radius = 0;
-    for (unsigned int k = 0; k < committed.size(); ++k)
-      if (committed[k].equivalent_plastic_strain > 0.)
-        {
-          const Point<3> &x = position[k];
-          depth             = std::max(depth, top - x[2]);
-          radius =
-            std::max(radius, std::hypot(x[0] - centre[0], x[1] - centre[1]));
-        }
-    const MPI_Comm comm = plate.get_mpi_communicator();
-    return {
-      {Utilities::MPI::max(depth, comm), Utilities::MPI::max(radius, comm)}};
-  }
-
-
-
-  double
-  PlasticPlate::yield_stress(const double z,
-                             const double equivalent_plastic_strain) const
-  {
-    if (!strength.metal_rich(z))
-      return std::numeric_limits<double>::infinity();
-    return strength.yield_strength(z) +
-           strength.hardening_modulus(z) * equivalent_plastic_strain;
   }
 
 

@@ -80,6 +80,13 @@ namespace fgimpact
       return "validity";
     }
 
+    /// 2: a plastic run's section also holds the elastic check's peak.
+    std::uint32_t
+    checkpoint_version() const override
+    {
+      return 2;
+    }
+
     void
     execute(const StepRecord &record) override;
 

@@ -191,6 +191,10 @@ namespace fgimpact
     void
     setup();
 
+    /// gauss_1d and gauss_index of the cells' quadrature (QGauss<3>).
+    void
+    setup_interpolation(const Quadrature<3> &quadrature);
+
     /// The shape gradient tables of a new cell extent (fe_values on a cell
     /// of that extent, m).
     void
