@@ -193,6 +193,43 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// value as a JSON number (its text, a leading '+' dropped, which
+    /// JSON does not allow), or "" if it is not one by JSON's grammar
+    /// -?(0|[1-9]d*)(.d+)?([eE][+-]?d+)?.
+    std::string
+    json_number(const std::string &value)
+    {
+      const std::string v =
+        (!value.empty() && value[0] == '+') ? value.substr(1) : value;
+      std::size_t i      = (!v.empty() && v[0] == '-') ? 1 : 0;
+      const auto  digits = [&v, &i]() {
+        const std::size_t start = i;
+        while (i < v.size() && v[i] >= '0' && v[i] <= '9')
+          ++i;
+        return i - start;
+      };
+      const std::size_t first = i;
+      bool valid = digits() > 0 && !(v[first] == '0' && i - first > 1);
+      if (valid && i < v.size() && v[i] == '.')
+        {
+          ++i;
+          valid = digits() > 0;
+        }
+      if (valid && i < v.size() && (v[i] == 'e' || v[i] == 'E'))
+        {
+          ++i;
+          if (i < v.size() && (v[i] == '+' || v[i] == '-'))
+            ++i;
+          valid = digits() > 0;
+        }
+      return valid && i == v.size() ? v : std::string();
+    }
+  } // namespace
+
+
+
   std::string
   summary_json(const std::string &preamble, const SummaryEntries &entries)
   {
@@ -219,32 +256,8 @@ namespace fgimpact
       if (value == "none" || value == "inf" || value == "-inf" ||
           value == "nan" || value == "-nan")
         return std::string("null");
-      // JSON's number grammar, -?(0|[1-9]d*)(.d+)?([eE][+-]?d+)?, after
-      // dropping a leading '+' (which JSON does not allow).
-      const std::string v =
-        (!value.empty() && value[0] == '+') ? value.substr(1) : value;
-      std::size_t i      = (!v.empty() && v[0] == '-') ? 1 : 0;
-      const auto  digits = [&v, &i]() {
-        const std::size_t start = i;
-        while (i < v.size() && v[i] >= '0' && v[i] <= '9')
-          ++i;
-        return i - start;
-      };
-      const std::size_t first = i;
-      bool valid = digits() > 0 && !(v[first] == '0' && i - first > 1);
-      if (valid && i < v.size() && v[i] == '.')
-        {
-          ++i;
-          valid = digits() > 0;
-        }
-      if (valid && i < v.size() && (v[i] == 'e' || v[i] == 'E'))
-        {
-          ++i;
-          if (i < v.size() && (v[i] == '+' || v[i] == '-'))
-            ++i;
-          valid = digits() > 0;
-        }
-      return valid && i == v.size() ? v : quoted(value);
+      const std::string number = json_number(value);
+      return number.empty() ? quoted(value) : number;
     };
     // The provenance comments ("# key value") as one object.
     std::string text      = "{\n  \"provenance\": {";

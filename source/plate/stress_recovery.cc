@@ -125,6 +125,7 @@ namespace fgimpact
   StressRecovery::carried_stress(
     const DoFHandler<3>::active_cell_iterator &cell,
     const Point<3>                            &unit_point,
+    const double                               z,
     const double                               E,
     const double                               nu,
     const SymmetricTensor<2, 3>               &eps,
@@ -133,8 +134,6 @@ namespace fgimpact
     const PlasticState state =
       plasticity->plastic_state(cell->active_cell_index(), unit_point);
     eps_bar_sum += state.equivalent_plastic_strain;
-    const double z =
-      plate.get_mapping().transform_unit_to_real_cell(cell, unit_point)[2];
     return J2Plasticity::admissible_stress(
       HookeLaw::stress(E, nu, eps - state.plastic_strain),
       plasticity->yield_stress(z, state.equivalent_plastic_strain));
@@ -205,7 +204,7 @@ namespace fgimpact
     FEValues<3>          fe_values(plate.get_mapping(),
                           plate.get_fe(),
                           points,
-                          update_gradients);
+                          update_gradients | update_quadrature_points);
     PropertyInterpolator properties(scalar_fe,
                                     points.get_points(),
                                     plate.get_material());
@@ -235,10 +234,14 @@ namespace fgimpact
             {
               double                      eps_bar = 0;
               const SymmetricTensor<2, 3> sigma =
-                plasticity ?
-                  carried_stress(
-                    cell, points.point(q), E[q], nu[q], eps[q], eps_bar) :
-                  HookeLaw::stress(E[q], nu[q], eps[q]);
+                plasticity ? carried_stress(cell,
+                                            points.point(q),
+                                            fe_values.quadrature_point(q)[2],
+                                            E[q],
+                                            nu[q],
+                                            eps[q],
+                                            eps_bar) :
+                             HookeLaw::stress(E[q], nu[q], eps[q]);
               if (plasticity)
                 plastic_sum(dofs[q]) += eps_bar;
               for (unsigned int s = 0; s < 6; ++s)

@@ -149,14 +149,15 @@ namespace fgimpact
     void
     accumulate_cell_values(const TrilinosWrappers::MPI::Vector &u_ghosted);
 
-    /// A plastic run's stress at a cell's unit point from the total
-    /// strain eps: C (eps - eps_p) (E in Pa), returned onto the yield
-    /// surface of the point's current yield stress where the
+    /// A plastic run's stress at a cell's unit point (at height z, m)
+    /// from the total strain eps: C (eps - eps_p) (E in Pa), returned onto
+    /// the yield surface of the point's current yield stress where the
     /// extrapolation overshoots it (J2Plasticity::admissible_stress());
     /// adds the point's eps_bar to eps_bar_sum.
     SymmetricTensor<2, 3>
     carried_stress(const DoFHandler<3>::active_cell_iterator &cell,
                    const Point<3>                            &unit_point,
+                   const double                               z,
                    const double                               E,
                    const double                               nu,
                    const SymmetricTensor<2, 3>               &eps,
