@@ -6,6 +6,7 @@
 #include <fgimpact/output/checkpoint.h>
 #include <fgimpact/output/monitor.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <map>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/statfs.h>
 #include <unistd.h>
 
@@ -151,6 +153,19 @@ namespace fgimpact
       std::abort(); // not reached
     }
 
+    /// The refusal of a lock file that is a symbolic link (it would be
+    /// written through, into whatever file it points to).
+    std::string
+    symbolic_link_lock(const std::string &directory)
+    {
+      return "Output/Directory '" + directory + "': its lock file " +
+             lock_file_name +
+             " is a symbolic link; remove it (the lock is never written "
+             "through a link).";
+    }
+
+
+
     /// The lock files this process holds (directory -> descriptor): one
     /// writer per output directory.
     std::map<std::string, int> &
@@ -271,6 +286,17 @@ namespace fgimpact
     AssertThrow(directory.size() <= 1024,
                 ExcMessage(where + " is longer than 1024 characters (" +
                            std::to_string(directory.size()) + ")."));
+    // A newline, tab or NUL in a file name breaks every script and log
+    // that lists it.
+    AssertThrow(std::none_of(directory.begin(),
+                             directory.end(),
+                             [](const char c) {
+                               const auto byte = static_cast<unsigned char>(c);
+                               return byte < 0x20 || byte == 0x7f;
+                             }),
+                ExcMessage("Output/Directory contains a control character "
+                           "(a newline, tab or NUL byte); choose a name "
+                           "without one."));
     // The directory, or the nearest ancestor that exists: a directory the
     // program may write into, on a real file system.
     std::error_code error;
@@ -308,10 +334,12 @@ namespace fgimpact
   check_output_directory_free(const std::string &directory)
   {
     const std::string name = directory + "/" + lock_file_name;
-    const int         fd   = ::open(name.c_str(), O_RDWR | O_CLOEXEC);
+    const int fd = ::open(name.c_str(), O_RDWR | O_CLOEXEC | O_NOFOLLOW);
+    AssertThrow(fd >= 0 || errno != ELOOP,
+                ExcMessage(symbolic_link_lock(directory)));
     if (fd < 0)
       return; // no lock file: nobody has run there (or it is not usable,
-              // which prepare_output_directory() reports)
+              // which lock_output_directory() reports)
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
       refuse_busy(directory, fd);
     ::close(fd); // releases the probe's lock
@@ -329,11 +357,26 @@ namespace fgimpact
     if (held_locks().count(key) > 0)
       return; // this process holds it already (a study's directory)
     const std::string name = directory + "/" + lock_file_name;
-    const int fd = ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    // O_NOFOLLOW: a lock file that is a symbolic link (to a user's file,
+    // say) is refused, never written through; so is one that is not a
+    // regular file.
+    const int fd =
+      ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    AssertThrow(fd >= 0 || errno != ELOOP,
+                ExcMessage(symbolic_link_lock(directory)));
     AssertThrow(fd >= 0,
                 ExcMessage("Output/Directory '" + directory +
                            "': cannot create the lock file " + name + ": " +
                            std::strerror(errno)));
+    struct stat lock_status;
+    if (::fstat(fd, &lock_status) != 0 || !S_ISREG(lock_status.st_mode))
+      {
+        ::close(fd);
+        AssertThrow(false,
+                    ExcMessage("Output/Directory '" + directory +
+                               "': the lock file " + name +
+                               " is not a regular file; remove it."));
+      }
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
       refuse_busy(directory, fd);
     // The holder's process id, for the message above; the kernel releases

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <string>
 
@@ -22,6 +23,19 @@ namespace fgimpact
                          const double               end_time,
                          const std::string         &end_time_name)
     {
+      // The files are named for the time in whole ns: two times that round
+      // to the same ns would write one file listed twice in the PVD.
+      for (unsigned int i = 1; i < times.size(); ++i)
+        if (std::llround(times[i] * 1e9) == std::llround(times[i - 1] * 1e9))
+          {
+            std::ostringstream text;
+            text << std::setprecision(10)
+                 << "Output/Snapshot times: " << times[i - 1] * 1e6 << " and "
+                 << times[i] * 1e6
+                 << " us name the same file (the time in whole ns); give "
+                    "times at least 1 ns apart.";
+            AssertThrow(false, ExcMessage(text.str()));
+          }
       for (const double t : times)
         AssertThrow(
           t <= end_time * (1. + 1e-12),

@@ -111,15 +111,25 @@ namespace fgimpact
     struct rlimit limit;
     if (getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur != RLIM_INFINITY)
       {
+        // OpenBLAS maps a 128 MB work buffer (134238208 bytes, measured in
+        // its blas_memory_alloc) at the first dense factorization call,
+        // and when that mmap fails under ulimit -v it retries forever
+        // (seen with 0.3.21: 100 % CPU, no return to our code, so no stop
+        // signal is ever acted on).  Counted as used: the run is refused
+        // in one line instead.
+        const double blas_buffer = 134238208.;
         const double used =
           std::max(0., proc_kilobytes("/proc/self/status", "VmSize"));
-        const double left = static_cast<double>(limit.rlim_cur) - used;
+        const double left =
+          static_cast<double>(limit.rlim_cur) - used - blas_buffer;
         if (left < available.bytes)
           {
             available.bytes  = std::max(0., left);
             available.source = "address-space limit RLIMIT_AS (ulimit -v) " +
                                gigabytes(static_cast<double>(limit.rlim_cur)) +
-                               " minus " + gigabytes(used) + " mapped";
+                               " minus " + gigabytes(used) +
+                               " mapped and OpenBLAS's " +
+                               gigabytes(blas_buffer) + " work buffer";
           }
       }
     return available;

@@ -19,6 +19,7 @@
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace fgimpact
@@ -68,6 +69,19 @@ namespace fgimpact
           std::cerr << "fgimpact: warning: " << warning << std::endl;
     }
 
+    /// parameters.prm (expanded), written atomically by rank 0.
+    void
+    write_parameters_file(const fgimpact::OutputParameters &output,
+                          const dealii::ParameterHandler   &prm)
+    {
+      std::ostringstream parameters;
+      prm.print_parameters(parameters, dealii::ParameterHandler::PRM);
+      fgimpact::write_file_atomically(output.directory + "/parameters.prm",
+                                      parameters.str());
+    }
+
+
+
     /**
      * Rank 0, before the run: clean the output directory (Output/Overwrite;
      * before log.txt is opened, so that the earlier run's log goes and this
@@ -93,13 +107,14 @@ namespace fgimpact
         argc, argv, dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
       logger.open(output.directory + "/log.txt", provenance, resume);
       fgimpact::SummaryWriter::set_preamble(provenance);
-      std::ostringstream parameters;
-      prm.print_parameters(parameters, dealii::ParameterHandler::PRM);
-      fgimpact::write_file_atomically(output.directory + "/parameters.prm",
-                                      parameters.str());
+      // Resuming: parameters.prm once the resume is accepted
+      // (CheckpointSettings::on_resume_accepted).
       if (!resume)
-        fgimpact::write_file_atomically(output.directory + "/input.prm",
-                                        input.original());
+        {
+          write_parameters_file(output, prm);
+          fgimpact::write_file_atomically(output.directory + "/input.prm",
+                                          input.original());
+        }
     }
 
 
@@ -121,11 +136,14 @@ namespace fgimpact
       checkpoint.parameters_text = text.str();
       if (!options.resume_directory.empty())
         fgimpact::run_on_root(MPI_COMM_WORLD, [&]() {
-          fgimpact::check_resume(options.resume_directory,
-                                 checkpoint.parameters_text,
-                                 Utilities::MPI::n_mpi_processes(
-                                   MPI_COMM_WORLD));
+          checkpoint.resume_step =
+            fgimpact::check_resume(options.resume_directory,
+                                   checkpoint.parameters_text,
+                                   Utilities::MPI::n_mpi_processes(
+                                     MPI_COMM_WORLD));
         });
+      checkpoint.resume_step =
+        Utilities::MPI::max(checkpoint.resume_step, MPI_COMM_WORLD);
       return checkpoint;
     }
 
@@ -345,6 +363,17 @@ namespace fgimpact
                                 (file == "-" ? "standard input" : file));
       }
 
+    // --study-case names a case of a study: without one it would be
+    // ignored without a word.
+    if (options.study_case >= 0 && study.entries.empty())
+      return report_failure(
+        std::make_exception_ptr(std::runtime_error(
+          "--study-case " + std::to_string(options.study_case) +
+          " needs a study (Study/Entries or --study); without one there is "
+          "no case to run.")),
+        root,
+        1);
+
     // A study (Study/Entries or --study): its own cases and outputs.
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
@@ -365,7 +394,11 @@ namespace fgimpact
                     ExcMessage("--resume: an Accuracy = converged run is a "
                                "sequence of runs and cannot be resumed; "
                                "run it again."));
-        checkpoint = checkpoint_settings(options, prm);
+        checkpoint                    = checkpoint_settings(options, prm);
+        checkpoint.on_resume_accepted = [&]() {
+          run_on_root(MPI_COMM_WORLD,
+                      [&]() { write_parameters_file(parameters.output, prm); });
+        };
       }
     catch (...)
       {

@@ -160,6 +160,11 @@ namespace fgimpact
         text = message_of(e);
         code = 2;
       }
+    catch (const ExcResumeRefused &e)
+      {
+        text = message_of(e);
+        code = 1;
+      }
     catch (const ExceptionBase &e)
       {
         text = message_of(e);

@@ -407,7 +407,7 @@ namespace fgimpact
 
 
 
-  void
+  unsigned int
   check_resume(const std::string &directory,
                const std::string &parameters_text,
                const unsigned int n_ranks)
@@ -448,6 +448,7 @@ namespace fgimpact
                            ": parameters changed since the checkpoint would "
                            "change the results: " +
                            changed + "; run anew instead"));
+    return header.step;
   }
 
 

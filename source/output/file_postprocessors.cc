@@ -7,6 +7,7 @@
 #include <fgimpact/output/postprocessors.h>
 
 #include <cmath>
+#include <filesystem>
 
 namespace fgimpact
 {
@@ -133,6 +134,24 @@ namespace fgimpact
     std::uint64_t length = 0;
     in.get(length);
     resume_length = length;
+    // Checked here, before start() truncates any file to its checkpoint
+    // length: a resume that cannot continue every file touches none.
+    if (!root || length == 0)
+      return;
+    try
+      {
+        std::error_code error;
+        AssertThrow(std::filesystem::file_size(filename, error) >= length &&
+                      !error,
+                    ExcMessage(filename +
+                               " is shorter than at the checkpoint (" +
+                               std::to_string(length) +
+                               " bytes): it cannot be continued"));
+      }
+    catch (const ExceptionBase &e)
+      {
+        keep_failure(e);
+      }
   }
 
 
@@ -505,6 +524,11 @@ namespace fgimpact
     out.put(peak_written);
     if (interpolator)
       interpolator->save(out);
+    // The peak fields so far (version 3); a writer lost to a failure
+    // above has none.
+    out.put(vtu != nullptr);
+    if (vtu)
+      vtu->save_peaks(out);
   }
 
 
@@ -521,6 +545,10 @@ namespace fgimpact
     in.get(peak_written);
     if (interpolator)
       interpolator->load(in);
+    bool peaks = false;
+    in.get(peaks);
+    if (peaks && vtu)
+      vtu->load_peaks(in);
   }
 
 

@@ -145,6 +145,11 @@ namespace fgimpact
                 resume->section(section_name(*p), p->checkpoint_version());
               p->load(section);
             }
+        // A file that cannot be continued: none is opened (the driver
+        // refuses the resume, every file as it was).
+        if (Utilities::MPI::max(output_failure().empty() ? 0 : 1,
+                                plate.get_mpi_communicator()) > 0)
+          return;
       }
     for (const auto &p : postprocessors)
       p->start();

@@ -18,13 +18,13 @@ namespace fgimpact
                                      const double        V0,
                                      const Point<3>     &impact_point,
                                      const double        radius)
-    : plasticity(plasticity)
+    : impact_point(impact_point)
+    , top(plate.get_geometry().thickness())
+    , mpi_communicator(plate.get_mpi_communicator())
+    , plasticity(plasticity)
     , results(results)
     , whole(whole)
     , V0(V0)
-    , impact_point(impact_point)
-    , top(plate.get_geometry().thickness())
-    , mpi_communicator(plate.get_mpi_communicator())
   {
     results.plastic.modelled                    = true;
     const double                      tolerance = 1e-9 * top;

@@ -6,6 +6,7 @@
 #include <deal.II/numerics/data_out.h>
 
 #include <fgimpact/app/run_control.h>
+#include <fgimpact/output/checkpoint.h>
 #include <fgimpact/output/mirrored_data_out.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
@@ -286,6 +287,31 @@ namespace fgimpact
         DataOutBase::write_pvd_record(pvd, times_and_names);
         write_file_atomically(directory + "/solution.pvd", pvd.str());
       }
+  }
+
+
+
+  void
+  VtuWriter::save_peaks(CheckpointWriter &out) const
+  {
+    const bool peaks = fields.peak && recovery;
+    out.put(peaks);
+    if (peaks)
+      recovery->save_peaks(out);
+  }
+
+
+
+  void
+  VtuWriter::load_peaks(CheckpointReader &in)
+  {
+    bool peaks = false;
+    in.get(peaks);
+    AssertThrow(peaks == (fields.peak && recovery),
+                ExcMessage("--resume: the checkpoint's peak fields do not "
+                           "match Output/Fields"));
+    if (peaks)
+      recovery->load_peaks(in);
   }
 
 

@@ -285,8 +285,6 @@ namespace fgimpact
   EffectiveMatrixSolver::initialize(const TrilinosWrappers::SparseMatrix &A,
                                     const DoFHandler<3> *dof_handler)
   {
-    // METIS (the orderings) swallows SIGTERM: stop signals wait here.
-    const DeferStopSignals defer;
     matrix        = &A;
     resolved_type = parameters.type;
     const unsigned int n_ranks =
@@ -301,6 +299,9 @@ namespace fgimpact
       initialize_cholmod(A, n_ranks);
     if (resolved_type == "klu" || resolved_type == "mumps")
       {
+        // METIS (MUMPS's ordering) swallows SIGTERM: stop signals wait
+        // until the factorization is done.
+        const DeferStopSignals defer;
         amesos = std::make_unique<TrilinosWrappers::SolverDirect>(
           amesos_control,
           TrilinosWrappers::SolverDirect::AdditionalData(
@@ -308,7 +309,11 @@ namespace fgimpact
         amesos->initialize(A);
       }
     else if (resolved_type == "cg")
-      initialize_preconditioner(A, dof_handler);
+      {
+        // ML's aggregation may call METIS too.
+        const DeferStopSignals defer;
+        initialize_preconditioner(A, dof_handler);
+      }
   }
 
 
@@ -326,7 +331,13 @@ namespace fgimpact
     std::vector<double> values;
     lower_triangle(A, rows, columns, values);
     cholmod = std::make_unique<Cholmod>(parameters.cholmod_ordering);
-    cholmod->analyze(A.m(), rows, columns, values);
+    {
+      // METIS (the ordering) swallows SIGTERM: stop signals wait until the
+      // analysis is done; during the numeric factorization below they only
+      // set the flag, which the caller acts on right after it.
+      const DeferStopSignals defer;
+      cholmod->analyze(A.m(), rows, columns, values);
+    }
     // The factor against what is left now (mesh, matrices and vectors
     // are allocated): CHOLMOD's numeric factorization needs the factor
     // plus a small workspace.

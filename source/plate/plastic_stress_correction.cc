@@ -11,15 +11,6 @@
 
 namespace fgimpact
 {
-  namespace
-  {
-    /// (row, column) of the six components in probes.csv's order.
-    constexpr unsigned int component[6][2] =
-      {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
-  } // namespace
-
-
-
   PlasticStressCorrection::PlasticStressCorrection(const PlateModel &plate)
     : plate(plate)
   {}
@@ -122,7 +113,8 @@ namespace fgimpact
           for (unsigned int s = 0; s < 6; ++s)
             if (!odd_under_reflection(s, record.planes))
               local[slot * stride + offset + s] +=
-                factor * difference[component[s][0]][component[s][1]];
+                factor *
+                difference[stress_component[s][0]][stress_component[s][1]];
       }
   }
 } // namespace fgimpact

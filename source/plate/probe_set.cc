@@ -19,10 +19,6 @@ namespace fgimpact
 {
   namespace
   {
-    /// (row, column) of the six stress components in probes.csv's order.
-    constexpr unsigned int component[6][2] =
-      {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
-
     const std::string entry = "Output/Probe points";
 
     [[noreturn]] void
@@ -378,8 +374,9 @@ namespace fgimpact
                     if (factor != 0.)
                       for (unsigned int s = 0; s < 6; ++s)
                         if (!odd_under_reflection(s, planes))
-                          w[p][s](dofs[i]) +=
-                            factor * sigma[component[s][0]][component[s][1]];
+                          w[p][s](dofs[i]) += factor *
+                                              sigma[stress_component[s][0]]
+                                                   [stress_component[s][1]];
                   }
               }
         }
@@ -518,7 +515,8 @@ namespace fgimpact
             acc[c] = global[15 * p + 6 + c];
           }
         for (unsigned int s = 0; s < 6; ++s)
-          sigma[component[s][0]][component[s][1]] = global[15 * p + 9 + s];
+          sigma[stress_component[s][0]][stress_component[s][1]] =
+            global[15 * p + 9 + s];
         values.displacement.push_back(d);
         values.velocity.push_back(vel);
         values.acceleration.push_back(acc);
@@ -566,8 +564,9 @@ namespace fgimpact
         for (unsigned int c = 0; c < 3; ++c)
           row.push_back(values.acceleration[p][c]);
         for (unsigned int s = 0; s < 6; ++s)
-          row.push_back(values.stress[p][component[s][0]][component[s][1]] *
-                        1e-6);
+          row.push_back(
+            values.stress[p][stress_component[s][0]][stress_component[s][1]] *
+            1e-6);
       }
     return row;
   }

@@ -5,6 +5,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <fgimpact/material/constitutive_law.h>
+#include <fgimpact/output/checkpoint.h>
 #include <fgimpact/plate/stress_recovery.h>
 
 #include <algorithm>
@@ -12,21 +13,12 @@
 
 namespace fgimpact
 {
-  namespace
-  {
-    /// (row, column) of the six independent components in field order.
-    constexpr unsigned int component[6][2] =
-      {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
-  } // namespace
-
-
-
   bool
   odd_under_reflection(const unsigned int s, const unsigned int planes)
   {
     for (unsigned int d = 0; d < 2; ++d)
       if ((planes & (1u << d)) &&
-          ((component[s][0] == d) != (component[s][1] == d)))
+          ((stress_component[s][0] == d) != (stress_component[s][1] == d)))
         return true;
     return false;
   }
@@ -186,7 +178,8 @@ namespace fgimpact
   {
     SymmetricTensor<2, 3> sigma;
     for (unsigned int s = 0; s < 6; ++s)
-      sigma[component[s][0]][component[s][1]] = ghosted[s](dof) * 1e6;
+      sigma[stress_component[s][0]][stress_component[s][1]] =
+        ghosted[s](dof) * 1e6;
     return sigma;
   }
 
@@ -246,7 +239,8 @@ namespace fgimpact
                 plastic_sum(dofs[q]) += eps_bar;
               for (unsigned int s = 0; s < 6; ++s)
                 {
-                  const unsigned int a = component[s][0], b = component[s][1];
+                  const unsigned int a = stress_component[s][0],
+                                     b = stress_component[s][1];
                   sums[s](dofs[q]) += sigma[a][b] * 1e-6;
                   sums[6 + s](dofs[q]) += eps[q][a][b];
                 }
@@ -278,7 +272,7 @@ namespace fgimpact
             const double value = odd * sums[s](dof) * w;
             owned_values[stress_xx + s](dof) = value;
             owned_values[strain_xx + s](dof) = odd * sums[6 + s](dof) * w;
-            sigma[component[s][0]][component[s][1]] = value;
+            sigma[stress_component[s][0]][stress_component[s][1]] = value;
           }
         const SymmetricTensor<2, 3> s  = deviator(sigma);
         const double                vm = std::sqrt(1.5 * (s * s));
@@ -332,5 +326,28 @@ namespace fgimpact
           plastic_ghosted[f] = plastic_owned[f];
         }
     ++n_recovered;
+  }
+
+
+
+  void
+  StressRecovery::save_peaks(CheckpointWriter &out) const
+  {
+    out.put(n_recovered);
+    out.put(owned_values[peak_von_mises]);
+    out.put(owned_values[peak_abs_stress_zz]);
+  }
+
+
+
+  void
+  StressRecovery::load_peaks(CheckpointReader &in)
+  {
+    in.get(n_recovered);
+    for (const auto f : {peak_von_mises, peak_abs_stress_zz})
+      {
+        in.get(owned_values[f]);
+        ghosted[f] = owned_values[f];
+      }
   }
 } // namespace fgimpact

@@ -8,7 +8,9 @@
 // (a checkpoint at the stop only), and a plastic plate (Material/
 // Plasticity = J2) with the resolved sphere.  Also: resume with a changed
 // parameter, on a different number of MPI ranks, or without a checkpoint is
-// refused with one line naming the cause, exit code 1, nothing changed.
+// refused with one line naming the cause, exit code 1, nothing changed;
+// so is a resume with End time before the checkpoint, or whose probes.csv
+// is shorter than at the checkpoint.
 
 #include "checkpoint_resume.h"
 
@@ -73,8 +75,25 @@ namespace
            c.summary_differing == 0 && c.files > 0 && c.files_differing == 0;
   }
 
-  /// A refused resume: exit code 1, one line naming `expected`, the
-  /// directory's history.csv untouched.
+  /// Every file of a directory (and of its vtu/ and checkpoint/) but
+  /// log.txt, which a refused resume continues, and the lock: name ->
+  /// content.
+  std::map<std::string, std::string>
+  contents(const std::string &directory)
+  {
+    std::map<std::string, std::string> files;
+    for (const auto &entry : fs::recursive_directory_iterator(directory))
+      {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_regular_file() && name != "log.txt" && name[0] != '.')
+          files[entry.path().string()] = read(entry.path().string());
+      }
+    return files;
+  }
+
+  /// A refused resume: exit code 1, one line naming `expected`, every file
+  /// of the directory but log.txt untouched (summary.txt and
+  /// parameters.prm too).
   bool
   refused(const std::string              &what,
           const std::vector<std::string> &args,
@@ -82,16 +101,17 @@ namespace
           const std::string              &directory,
           const std::string              &expected)
   {
-    const std::string before = read(directory + "/history.csv");
+    const auto        before = contents(directory);
     const int         code   = run(args, n_ranks, "refused.log");
     const std::string log    = read("refused.log");
     unsigned int      ours   = 0;
     for (const auto &line : lines_of(log))
       ours += (line.rfind("fgimpact: error", 0) == 0);
     const bool named     = log.find(expected) != std::string::npos;
-    const bool untouched = read(directory + "/history.csv") == before;
+    const auto after     = contents(directory);
+    const bool untouched = after == before && !before.empty();
     std::printf("resume %s: exit code %d, one error line %s, names '%s' "
-                "%s, history.csv untouched %s\n",
+                "%s, every file but log.txt untouched %s\n",
                 what.c_str(),
                 code,
                 ours == 1 ? "yes" : "NO",
@@ -99,7 +119,12 @@ namespace
                 named ? "yes" : "NO",
                 untouched ? "yes" : "NO");
     if (!(code == 1 && ours == 1 && named && untouched))
-      std::printf("  %s\n", log.c_str());
+      {
+        std::printf("  %s\n", log.c_str());
+        for (const auto &[name, text] : after)
+          if (before.count(name) == 0 || before.at(name) != text)
+            std::printf("  changed: %s\n", name.c_str());
+      }
     return code == 1 && ours == 1 && named && untouched;
   }
 
@@ -163,6 +188,32 @@ namespace
                 untouched ? "yes" : "NO",
                 third);
     return ok && killed && untouched && third == 0;
+  }
+
+  /// A lock file that is a symbolic link to a user's file: refused (exit
+  /// code 1, one line naming it), the user's file unchanged.
+  bool
+  symlinked_lock(const std::string &prm)
+  {
+    fs::remove_all("linked");
+    fs::create_directory("linked");
+    std::ofstream("users_file.txt") << "a user's data\n";
+    fs::create_symlink(fs::absolute("users_file.txt"), "linked/.fgimpact.lock");
+    {
+      std::ofstream out("linked.prm");
+      out << prm << "subsection Output\n set Directory = linked\nend\n";
+    }
+    const int         code = run({"linked.prm"}, 1, "linked.log");
+    const std::string log  = read("linked.log");
+    const bool        one  = lines_of(log).size() == 1 &&
+                     log.find("symbolic link") != std::string::npos;
+    const bool kept = read("users_file.txt") == "a user's data\n";
+    std::printf("a lock file linked to a user's file: exit code %d, one line "
+                "naming the link %s, the user's file unchanged %s\n",
+                code,
+                one ? "yes" : "NO",
+                kept ? "yes" : "NO");
+    return code == 1 && one && kept;
   }
 
   /// A damaged byte in a checkpoint's header (its step) is refused as
@@ -245,10 +296,14 @@ main()
        ok;
 
   // A plastic plate: the plastic state at the Gauss points is part of the
-  // state (and the first-yield bookkeeping of the summary).
+  // state (and the first-yield bookkeeping of the summary); the peak
+  // fields (peak_fields.pvtu) are the maxima over the whole run, the
+  // snapshots before the kill included.
   ok = kill_and_resume("plastic",
                        resolved +
-                         "subsection Material\n set Plasticity = J2\nend\n",
+                         "subsection Material\n set Plasticity = J2\nend\n"
+                         "subsection Output\n set Fields = displacement, "
+                         "peak\nend\n",
                        1,
                        random.kill_point(60)) &&
        ok;
@@ -279,6 +334,28 @@ main()
        ok;
 
   ok = damaged_header("killed_hertz_node") && ok;
+  // Refused once the set-up knows the step count: before parameters.prm
+  // or summary.txt is written.
+  ok =
+    refused(
+      "with End time before the checkpoint",
+      {"--resume", "killed_hertz_node", "-s", "Time integration/End time=4e-6"},
+      1,
+      "killed_hertz_node",
+      "after Time integration/End time") &&
+    ok;
+  // A file that cannot be continued: no file is cut back to its
+  // checkpoint length (history.csv was), summary.txt keeps its status.
+  fs::remove_all("short_probes");
+  fs::copy("killed_hertz_node", "short_probes", fs::copy_options::recursive);
+  fs::resize_file("short_probes/probes.csv", 10);
+  ok = refused("with probes.csv shorter than at the checkpoint",
+               {"--resume", "short_probes"},
+               1,
+               "short_probes",
+               "probes.csv is shorter than at the checkpoint") &&
+       ok;
+  ok = symlinked_lock(small_plate) && ok;
   ok = one_writer(small_plate + "subsection Time integration\n set End time "
                                 "= 50000e-6\nend\n") &&
        ok;

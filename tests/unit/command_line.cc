@@ -343,6 +343,25 @@ main()
             !fs::exists("cli#x"));
   }
 
+  // A newline in a path breaks every listing of it: refused (a directory
+  // "cli_nl\nx" was created and run into).
+  {
+    const int code =
+      run("cli_base.prm -s \"$(printf 'Output/Directory=cli_nl\\nx')\"");
+    const std::string err = read("cli.stderr");
+    check("a newline in Output/Directory (-s): exit 1, one line naming it, "
+          "nothing written",
+          code == 1 && n_lines(err) == 1 && contains(err, "Output/Directory") &&
+            !fs::exists("cli_nl\nx"));
+  }
+  // --study-case without a study was ignored without a word.
+  {
+    const int         code = run("cli_base.prm --study-case 0");
+    const std::string err  = read("cli.stderr");
+    check("--study-case without a study: exit 1, one line naming it",
+          code == 1 && n_lines(err) == 1 && contains(err, "--study-case"));
+  }
+
   // A tabulated profile given relative to its .prm (run from another
   // directory): found by the run and by a study's cases, and written into
   // parameters.prm as an absolute path (what --resume DIR reads).

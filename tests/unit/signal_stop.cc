@@ -9,7 +9,8 @@
 // (SIGPIPE): the run completes and its files are whole; a study stopped
 // in a case, and the case resumed with the command it printed; a
 // convolution study stopped while it prepares; Accuracy = converged stopped
-// in a level's run (one line, no --resume of the level).
+// in a level's run (one line, no --resume of the level); and a run under
+// an address-space limit it cannot meet refused in one line, not hung.
 
 #include <algorithm>
 #include <chrono>
@@ -20,6 +21,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -476,6 +478,72 @@ namespace
 
 
 
+namespace
+{
+  /**
+   * Under an address-space limit (ulimit -v 700000, as a user's job
+   * script might set) the run is refused in one line naming the limit,
+   * within seconds, with nothing written.  (OpenBLAS retried the mmap of
+   * its 128 MB work buffer forever there, in the factorization, deaf to
+   * SIGTERM: the run was killed after 60 s.)
+   */
+  bool
+  memory_limited()
+  {
+    {
+      std::ofstream prm("limited.prm");
+      prm << "subsection Geometry\n set Subdivisions x = 8\n set "
+             "Subdivisions y = 4\n set Subdivisions z = 2\nend\n"
+             "subsection Output\n set Directory = limited\nend\n";
+    }
+    fs::remove_all("limited");
+    std::fflush(stdout);
+    const auto  begin = std::chrono::steady_clock::now();
+    const pid_t pid   = fork();
+    if (pid == 0)
+      {
+        std::freopen("limited.stdout", "w", stdout);
+        std::freopen("limited.stderr", "w", stderr);
+        struct rlimit limit;
+        limit.rlim_cur = limit.rlim_max = 700000ul * 1024;
+        setrlimit(RLIMIT_AS, &limit);
+        execl(FGIMPACT_EXECUTABLE,
+              FGIMPACT_EXECUTABLE,
+              "limited.prm",
+              static_cast<char *>(nullptr));
+        _exit(127);
+      }
+    int  status = 0;
+    bool ended  = false;
+    while (!ended &&
+           std::chrono::steady_clock::now() - begin < std::chrono::seconds(60))
+      {
+        ended = waitpid(pid, &status, WNOHANG) == pid;
+        if (!ended)
+          std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
+    if (!ended)
+      {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+      }
+    const std::string error = read("limited.stderr");
+    const bool one_line = std::count(error.begin(), error.end(), '\n') == 1 &&
+                          error.find("RLIMIT_AS") != std::string::npos;
+    const int  code    = ended && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const bool nothing = !fs::exists("limited/summary.txt");
+    std::printf("ulimit -v 700000: ended within 60 s %s, exit code %d, one "
+                "line naming RLIMIT_AS %s, nothing written %s\n",
+                ended ? "yes" : "NO",
+                code,
+                one_line ? "yes" : "NO",
+                nothing ? "yes" : "NO");
+    return ended && code == 1 && one_line && nothing;
+  }
+} // namespace
+
+
+
 int
 main()
 {
@@ -501,8 +569,9 @@ main()
     interrupt_early("static", "set Problem type = static\n" + big, 0) && early;
   early = interrupt_early("modal", "set Problem type = modal\n" + plate, 100) &&
           early;
+  const bool limited = memory_limited();
   const bool ok = term && intr && hup && mpi && pipe && study && convolution &&
-                  converged && early;
+                  converged && early && limited;
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
   return ok ? 0 : 1;
 }

@@ -34,6 +34,11 @@ namespace fgimpact
   /// one line naming the file.
   DeclException1(ExcOutputFailure, std::string, << arg1);
 
+  /// A --resume whose output files cannot be continued (one shorter than
+  /// at the checkpoint, say): exit code 1, like bad input, and every file
+  /// left as it was.
+  DeclException1(ExcResumeRefused, std::string, << arg1);
+
   /// Thrown by the time loop after SIGINT or SIGTERM, once history.csv,
   /// summary.txt (status = interrupted) and the PVD are complete.
   struct RunInterrupted : public std::exception

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -141,6 +142,15 @@ namespace fgimpact
     /// Resume from the checkpoint in this output directory ("" = a new
     /// run).
     std::string resume_directory;
+    /// The time step of that checkpoint (check_resume(), known before the
+    /// set-up, so that a resume past End time is refused before any file
+    /// is written).
+    unsigned int resume_step = 0;
+    /// Called on every rank once a resume is accepted (the checkpoint read,
+    /// every output file found continuable), before anything is written:
+    /// the application writes parameters.prm then, so that a refused resume
+    /// leaves it as it was.
+    std::function<void()> on_resume_accepted;
   };
 
   /**
@@ -171,9 +181,10 @@ namespace fgimpact
    * of ranks, or its parameters differ from parameters_text in an entry
    * that changes the answer (every entry but Output/Directory, Log
    * interval, Print timing, Overwrite, Checkpoint interval and Time
-   * integration/End time), naming the entries.
+   * integration/End time), naming the entries.  Returns the checkpoint's
+   * time step.
    */
-  void
+  unsigned int
   check_resume(const std::string &directory,
                const std::string &parameters_text,
                const unsigned int n_ranks);

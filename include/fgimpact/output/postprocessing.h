@@ -201,6 +201,13 @@ namespace fgimpact
     void
     restore(const std::vector<std::pair<double, std::string>> &records);
 
+    /// For a checkpoint: the peak fields' state so far (a flag, then
+    /// StressRecovery::save_peaks()); load_peaks() on resume.
+    void
+    save_peaks(CheckpointWriter &out) const;
+    void
+    load_peaks(CheckpointReader &in);
+
   private:
     /// The selected Output/Fields of the ghosted copies (and a constant
     /// cell field, stored in `constant`) into data_out.

@@ -263,11 +263,12 @@ namespace fgimpact
     {
       return "vtu";
     }
-    /// 2: the PVD times in µs and the files in vtu/ (1: s, at the top).
+    /// 3: with the peak fields' state (2: without; 1: the PVD times in
+    /// s, the files at the top).
     std::uint32_t
     checkpoint_version() const override
     {
-      return 2;
+      return 3;
     }
     bool
     needs_rates(const unsigned int step) const override

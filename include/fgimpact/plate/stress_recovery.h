@@ -19,6 +19,16 @@ namespace fgimpact
 {
   using namespace dealii;
 
+  class CheckpointReader;
+  class CheckpointWriter;
+
+  /**
+   * (row, column) of the six independent stress or strain components in
+   * the order of the VTU fields and probes.csv: xx, yy, zz, xy, xz, yz.
+   */
+  inline constexpr unsigned int stress_component[6][2] =
+    {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+
   /**
    * Whether the stress or strain component s (order xx, yy, zz, xy, xz,
    * yz) changes sign under the reflections across the cut planes in
@@ -142,6 +152,20 @@ namespace fgimpact
     /// The recovered stress tensor (Pa) at a locally relevant scalar DoF.
     SymmetricTensor<2, 3>
     stress(const types::global_dof_index dof) const;
+
+    /**
+     * For a checkpoint: the number of recoveries so far and this rank's
+     * owned values of the peak fields (MPa), so that a resumed run's
+     * peak_fields hold the maxima over the whole run, not only over the
+     * snapshots after the resume.
+     */
+    void
+    save_peaks(CheckpointWriter &out) const;
+
+    /// On resume: what save_peaks() wrote (same partition: a checkpoint is
+    /// resumed on as many ranks as wrote it).
+    void
+    load_peaks(CheckpointReader &in);
 
   private:
     /// sums: every locally owned cell's stress (MPa) and strain at its
