@@ -189,6 +189,28 @@ namespace fgimpact
 
 
 
+  void
+  ConvergedRun::refuse_unfinished_contact() const
+  {
+    // A quantity without a value (the ball still in contact at the end:
+    // no contact duration, no departure velocity) changes by "inf %" at
+    // every level: the sequence would run to its last level for nothing.
+    const ImpactResults &r = sequence.back().results;
+    for (const Quantity &q : quantities_of(r))
+      AssertThrow(!q.steers || std::isfinite(q.value(r)),
+                  ExcNumericalFailure(
+                    "Accuracy = converged: " + q.key +
+                    " has no value at contact refinement level " +
+                    std::to_string(sequence.back().levels) +
+                    " (the ball is still in contact at Time integration/End "
+                    "time, " +
+                    std::to_string(static_cast<long long>(std::llround(
+                      parameters.time_integration.end_time * 1e6))) +
+                    " us); set End time = auto or a later End time."));
+  }
+
+
+
   std::pair<double, std::string>
   ConvergedRun::largest_change() const
   {
@@ -285,6 +307,7 @@ namespace fgimpact
     sequence.push_back(run_one(*first, parameters_of(first_levels, false)));
     sequence.back().wall_time += first_setup_time;
     first.reset();
+    refuse_unfinished_contact();
     std::unique_ptr<Simulator> last;
     for (unsigned int levels = first_levels + 1;
          sequence.size() < 2 || largest_change().first >= tolerance;

@@ -343,6 +343,12 @@ namespace
        " set Time step = 0\nend\n",
        1,
        "Scheme = implicit"},
+      {"Accuracy = converged with the ball still in contact at End time",
+       "set Accuracy = converged\n"
+       "subsection Contact\n set Model = resolved sphere\nend\n"
+       "subsection Time integration\n set End time = 40e-6\nend\n",
+       2,
+       "Time integration/End time"},
       {"End time neither auto nor a number",
        "subsection Time integration\n set End time = later\nend\n",
        1,

@@ -135,6 +135,12 @@ namespace fgimpact
     Level
     run_one(Simulator &simulator, const Parameters &p);
 
+    /// After the first level: a steering quantity without a value (the
+    /// ball still in contact at End time) is refused in one line naming
+    /// End time (ExcNumericalFailure: exit code 2, summary.txt failed).
+    void
+    refuse_unfinished_contact() const;
+
     /// The largest relative change of a quantity between the last two
     /// levels, and its key.
     std::pair<double, std::string>
