@@ -97,6 +97,21 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    bool blas_buffer_mapped = false;
+  }
+
+
+
+  void
+  note_blas_buffer_mapped()
+  {
+    blas_buffer_mapped = true;
+  }
+
+
+
   AvailableMemory
   available_memory()
   {
@@ -117,19 +132,21 @@ namespace fgimpact
         // (seen with 0.3.21: 100 % CPU, no return to our code, so no stop
         // signal is ever acted on).  Counted as used: the run is refused
         // in one line instead.
-        const double blas_buffer = 134238208.;
+        const double blas_buffer = blas_buffer_mapped ? 0. : 134238208.;
         const double used =
           std::max(0., proc_kilobytes("/proc/self/status", "VmSize"));
         const double left =
           static_cast<double>(limit.rlim_cur) - used - blas_buffer;
         if (left < available.bytes)
           {
-            available.bytes  = std::max(0., left);
-            available.source = "address-space limit RLIMIT_AS (ulimit -v) " +
-                               gigabytes(static_cast<double>(limit.rlim_cur)) +
-                               " minus " + gigabytes(used) +
-                               " mapped and OpenBLAS's " +
-                               gigabytes(blas_buffer) + " work buffer";
+            available.bytes = std::max(0., left);
+            available.source =
+              "address-space limit RLIMIT_AS (ulimit -v) " +
+              gigabytes(static_cast<double>(limit.rlim_cur)) + " minus " +
+              gigabytes(used) + " mapped" +
+              (blas_buffer > 0 ?
+                 " and OpenBLAS's " + gigabytes(blas_buffer) + " work buffer" :
+                 std::string());
           }
       }
     return available;

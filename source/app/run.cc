@@ -218,6 +218,22 @@ namespace fgimpact
 
 
 
+    /// --study-case names a case of a study: without one it would be
+    /// ignored without a word.  Exit code 1.
+    int
+    refuse_study_case(const int study_case, const bool root)
+    {
+      return fgimpact::report_failure(
+        std::make_exception_ptr(std::runtime_error(
+          "--study-case " + std::to_string(study_case) +
+          " needs a study (Study/Entries or --study); without one there is "
+          "no case to run.")),
+        root,
+        1);
+    }
+
+
+
     /// --validate: the input passed every check and the set-up; exit code 0.
     int
     report_valid(const fgimpact::InputFile &input_file,
@@ -363,16 +379,8 @@ namespace fgimpact
                                 (file == "-" ? "standard input" : file));
       }
 
-    // --study-case names a case of a study: without one it would be
-    // ignored without a word.
     if (options.study_case >= 0 && study.entries.empty())
-      return report_failure(
-        std::make_exception_ptr(std::runtime_error(
-          "--study-case " + std::to_string(options.study_case) +
-          " needs a study (Study/Entries or --study); without one there is "
-          "no case to run.")),
-        root,
-        1);
+      return refuse_study_case(options.study_case, root);
 
     // A study (Study/Entries or --study): its own cases and outputs.
     const unsigned int n_ranks =

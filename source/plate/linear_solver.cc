@@ -368,7 +368,10 @@ namespace fgimpact
                              "fewer Geometry/Subdivisions."));
     memory_report = report.str();
     if (resolved_type == "cholmod")
-      cholmod->factorize();
+      {
+        cholmod->factorize();
+        note_blas_buffer_mapped();
+      }
     else
       cholmod.reset();
   }

@@ -130,14 +130,7 @@ namespace fgimpact
                            std::to_string(n_steps) + " steps)"));
     pcout << "  " << stepper->description() << "; dt = " << dt * 1e6 << " us, "
           << n_steps << " steps\n";
-    // A given step that does not divide End time: the last step ends
-    // after it (a computed, explicit step never divides it: no note).
-    const auto &ti = parameters.time_integration;
-    if (!ti.auto_end_time && ti.time_step > 0 &&
-        n_steps * dt > ti.end_time * (1. + 1e-9))
-      pcout << "  note: Time integration/End time (" << ti.end_time * 1e6
-            << " us) is not a whole number of time steps of " << dt * 1e6
-            << " us: the run ends at " << n_steps * dt * 1e6 << " us\n";
+    note_end_time();
     results.model = describe_model(parameters, scene, plate, dt);
     note_contact_resolution();
     // Machine-dependent (the memory available): with the timings.
@@ -423,27 +416,47 @@ namespace fgimpact
       pcout,
       plasticity.get()));
     monitor->start(resume);
-    // A resume whose files cannot be continued is refused before anything
-    // is written: summary.txt and every other file stay as they were.
     if (resume)
-      {
-        std::string refusal;
-        for (const auto &m :
-             Utilities::MPI::all_gather(plate.get_mpi_communicator(),
-                                        monitor->output_failure()))
-          if (refusal.empty())
-            refusal = m;
-        AssertThrow(refusal.empty(),
-                    ExcResumeRefused("--resume " + parameters.output.directory +
-                                     ": " + refusal +
-                                     "; the run's files are left as they "
-                                     "were"));
-        if (checkpoint_settings.on_resume_accepted)
-          checkpoint_settings.on_resume_accepted();
-      }
+      accept_resume();
     // Rank 0 alone has opened history.csv (and probes.csv): every rank
     // learns whether that worked before the first collective output.
     stop_on_output_failure(resume ? resume->step : 0, 0.);
+  }
+
+
+
+  void
+  ImpactDriver::accept_resume() const
+  {
+    // A resume whose files cannot be continued is refused before anything
+    // is written: summary.txt and every other file stay as they were.
+    std::string refusal;
+    for (const auto &m :
+         Utilities::MPI::all_gather(plate.get_mpi_communicator(),
+                                    monitor->output_failure()))
+      if (refusal.empty())
+        refusal = m;
+    AssertThrow(refusal.empty(),
+                ExcResumeRefused("--resume " + parameters.output.directory +
+                                 ": " + refusal +
+                                 "; the run's files are left as they were"));
+    if (checkpoint_settings.on_resume_accepted)
+      checkpoint_settings.on_resume_accepted();
+  }
+
+
+
+  void
+  ImpactDriver::note_end_time() const
+  {
+    // A given step that does not divide End time: the last step ends
+    // after it (a computed, explicit step never divides it: no note).
+    const auto &ti = parameters.time_integration;
+    if (!ti.auto_end_time && ti.time_step > 0 &&
+        n_steps * dt > ti.end_time * (1. + 1e-9))
+      pcout << "  note: Time integration/End time (" << ti.end_time * 1e6
+            << " us) is not a whole number of time steps of " << dt * 1e6
+            << " us: the run ends at " << n_steps * dt * 1e6 << " us\n";
   }
 
 

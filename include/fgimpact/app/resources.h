@@ -21,8 +21,16 @@ namespace fgimpact
     std::string source; ///< "MemAvailable" or "RLIMIT_AS (ulimit -v)"
   };
 
+  /// The memory this process may still allocate (bytes): MemAvailable,
+  /// or, under an address-space limit, what the limit leaves, less
+  /// OpenBLAS's work buffer until note_blas_buffer_mapped() was called.
   AvailableMemory
   available_memory();
+
+  /// After the first dense factorization of the process: OpenBLAS's work
+  /// buffer is mapped (and counted in VmSize), not to be counted again.
+  void
+  note_blas_buffer_mapped();
 
   /// Resident set size of this process now, bytes (/proc/self/statm).
   double

@@ -127,6 +127,18 @@ namespace fgimpact
     void
     note_contact_resolution();
 
+    /// A log note when a given Time step does not divide End time (the
+    /// run ends after it, at the end of its last step).
+    void
+    note_end_time() const;
+
+    /// On resume, after the monitor has looked at the output files: a
+    /// file that cannot be continued refuses the resume (ExcResumeRefused,
+    /// every rank, nothing written); else parameters.prm is written
+    /// (CheckpointSettings::on_resume_accepted).
+    void
+    accept_resume() const;
+
     /// Restore the state of the checkpoint in the output directory (the
     /// driver's part; the monitor reads the rest); returns its reader.
     std::unique_ptr<CheckpointReader>
