@@ -76,7 +76,7 @@ namespace fgimpact
           name == "log.txt" || name == "input.prm" || name == "sphere.pvd" ||
           name == "contact.pvd" || name == "contact_pressure.csv" ||
           name == "peak_fields.pvtu" || name == "study.csv" ||
-          name == "convergence.csv")
+          name == "convergence.csv" || name == "summary.json")
         return true;
       // peak_fields.R.vtu
       if (name.rfind("peak_fields.", 0) == 0 && ends_with(name, ".vtu") &&
@@ -174,6 +174,38 @@ namespace fgimpact
       static std::map<std::string, int> locks;
       return locks;
     }
+
+    /// Accuracy = converged's convergence/level_N/: each level's own files
+    /// (and its vtu/ and checkpoint*/), then the emptied level and
+    /// convergence directories (a user's file keeps its directory).
+    void
+    remove_convergence_directory(const std::filesystem::path &convergence)
+    {
+      namespace fs = std::filesystem;
+      std::error_code error;
+      for (const auto &level : fs::directory_iterator(convergence, error))
+        {
+          const std::string name = level.path().filename().string();
+          if (!level.is_directory() || name.size() <= 6 ||
+              name.rfind("level_", 0) != 0 || !digits(name, 6, name.size() - 6))
+            continue;
+          for (const auto &entry : fs::directory_iterator(level.path(), error))
+            {
+              const std::string file = entry.path().filename().string();
+              if (entry.is_directory() &&
+                  (file == "vtu" || is_checkpoint_directory(file)))
+                remove_own_files(entry.path(),
+                                 file == "vtu" ? is_own_output :
+                                                 is_checkpoint_file);
+              else if (entry.is_regular_file() && is_own_output(file))
+                fs::remove(entry.path(), error);
+            }
+          if (fs::is_empty(level.path(), error))
+            fs::remove(level.path(), error);
+        }
+      if (fs::is_empty(convergence, error))
+        fs::remove(convergence, error);
+    }
   } // namespace
 
 
@@ -212,7 +244,8 @@ namespace fgimpact
           is_own_output(entry.path().filename().string())) ||
              (entry.is_directory() &&
               (is_checkpoint_directory(entry.path().filename().string()) ||
-               entry.path().filename() == "vtu")) ?
+               entry.path().filename() == "vtu" ||
+               entry.path().filename() == "convergence")) ?
            own :
            foreign)
           .push_back(entry.path());
@@ -220,7 +253,8 @@ namespace fgimpact
     // written: one that holds a file of the user's is refused, before
     // anything is removed.
     for (const auto &path : own)
-      if (fs::is_directory(path) && path.filename() != "vtu")
+      if (fs::is_directory(path) && path.filename() != "vtu" &&
+          path.filename() != "convergence")
         for (const auto &entry : fs::directory_iterator(path, error))
           AssertThrow(entry.is_regular_file() &&
                         is_checkpoint_file(entry.path().filename().string()),
@@ -239,6 +273,11 @@ namespace fgimpact
     // earlier run survives next to the new ones.
     for (const auto &file : own)
       {
+        if (file.filename() == "convergence")
+          {
+            remove_convergence_directory(file);
+            continue;
+          }
         if (fs::is_directory(file))
           {
             remove_own_files(file,

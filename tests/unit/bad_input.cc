@@ -84,7 +84,13 @@ namespace
             "summary.txt",
             "history.csv.tmp",
             "checkpoint/rank_0003.bin",
-            "checkpoint.old/rank_0000.bin"};
+            "checkpoint.old/rank_0000.bin",
+            "summary.json",
+            // An earlier Accuracy = converged run's levels.
+            "convergence.csv",
+            "convergence/level_9/summary.txt",
+            "convergence/level_9/vtu/solution_00020.0.vtu",
+            "convergence/level_9/checkpoint/rank_0000.bin"};
   }
 
   /// A user's files beside them, with near-miss names (kept).
@@ -102,7 +108,8 @@ namespace
             "history.csv.bak",
             "mine/solution_00000.0.vtu",
             "vtu/solution_t37.5.vtu",
-            "vtu/notes.txt"};
+            "vtu/notes.txt",
+            "convergence/level_8/notes.txt"};
   }
 
   std::string
@@ -216,6 +223,9 @@ namespace
           fs::create_directories(dir + "/checkpoint.old");
           fs::create_directories(dir + "/mine");
           fs::create_directories(dir + "/vtu");
+          fs::create_directories(dir + "/convergence/level_9/vtu");
+          fs::create_directories(dir + "/convergence/level_9/checkpoint");
+          fs::create_directories(dir + "/convergence/level_8");
           // An earlier run's files: removed.
           for (const auto &name : stale_names())
             write(dir + "/" + name, "stale\n");
@@ -720,6 +730,8 @@ namespace
             for (const auto &name : decoy_names())
               clean = clean && read(dir + "/" + name) == "mine\n";
             clean = clean && !fs::exists(dir + "/checkpoint.old/rank_0000.bin");
+            // An earlier converged run's level without a user's file went.
+            clean = clean && !fs::exists(dir + "/convergence/level_9");
           }
         if (c.name ==
             std::string("V0 = 300 m/s: beyond the small-strain model"))
