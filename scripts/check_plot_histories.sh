@@ -67,6 +67,19 @@ for format in svg pdf; do
   check "draws the 10 figures as $format" test $ok = 1
 done
 
+# A plastic run's energy.svg draws the plastic work (history.csv's
+# energy_plastic_J; the script looked for another name and left it out).
+# Text kept as text in the SVG (svg.fonttype none) to find the legend.
+"$build/fgimpact" tests/run/plastic_small.prm -s "Output/Directory=$work/plastic" \
+  -s "Output/VTU interval=0" -s "Output/Log interval=0" \
+  -s "Output/Print timing=false" >/dev/null
+mkdir -p "$work/mpl"
+echo "svg.fonttype: none" >"$work/mpl/matplotlibrc"
+MPLCONFIGDIR="$work/mpl" $plot --out "$work/plastic_svg" --format svg \
+  "$work/plastic" >/dev/null
+check "a plastic run's energy.svg draws the plastic work" \
+  grep -q "plastic work" "$work/plastic_svg/energy.svg"
+
 # scripts/plot_convergence.py on a small Accuracy = converged run (hertz
 # midplane, 10 x 6 x 2, about 1 s).
 "$build/fgimpact" tests/run/default_small.prm -s "Output/Directory=$work/conv" \

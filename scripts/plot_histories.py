@@ -26,7 +26,7 @@ Writes into DIR (created if missing), EXT = the --format:
   sigma_zz.EXT             sigma_zz at the mid-plane centre (MPa)  Fig. 5b
   energy.EXT               impactor, plate kinetic, strain, contact and
                            total energy (J) vs t (us), and the plastic
-                           work when history.csv has plastic_dissipation_J
+                           work when history.csv has energy_plastic_J
   force_indentation.EXT    contact force F (N) vs indentation (um): the
                            ball's displacement minus the plate's deflection
                            under it (every contact model), in contact (F > 0)
@@ -326,8 +326,8 @@ ENERGIES = [("energy_impactor_J", "impactor"),
             ("energy_total_J", "total"),
             # Drawn only when history.csv has it (a plastic plate, issue
             # 23): the work dissipated by plasticity.
-            ("plastic_dissipation_J", "plastic work")]
-OPTIONAL_ENERGIES = {"plastic_dissipation_J"}
+            ("energy_plastic_J", "plastic work")]
+OPTIONAL_ENERGIES = {"energy_plastic_J"}
 LINESTYLES = ["-", "--", ":", "-."]
 
 
