@@ -30,6 +30,15 @@ namespace fgimpact
     extern "C" void
     on_stop_signal(const int signal)
     {
+      // SIGXFSZ comes with every write past the file-size limit (the
+      // first VTU snapshot writes many): each write fails (EFBIG), which
+      // the run reports; it never means "stop now".
+      if (signal == SIGXFSZ)
+        {
+          if (stop_signal == 0)
+            stop_signal = signal;
+          return;
+        }
       // A second signal while the first is being honoured: the default
       // action (the user insists).  signal() and raise() are
       // async-signal-safe.

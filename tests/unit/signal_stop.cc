@@ -10,7 +10,9 @@
 // in a case, and the case resumed with the command it printed; a
 // convolution study stopped while it prepares; Accuracy = converged stopped
 // in a level's run (one line, no --resume of the level); and a run under
-// an address-space limit it cannot meet refused in one line, not hung.
+// an address-space limit it cannot meet refused in one line, not hung;
+// a file-size limit (ulimit -f) at the first VTU snapshot: a failed run
+// with its summary, not a death by SIGXFSZ.
 
 #include <algorithm>
 #include <chrono>
@@ -25,6 +27,7 @@
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
+#include <utility>
 
 namespace fs = std::filesystem;
 
@@ -487,14 +490,17 @@ namespace
    * its 128 MB work buffer forever there, in the factorization, deaf to
    * SIGTERM: the run was killed after 60 s.)
    */
-  bool
-  memory_limited()
+  /// Run the executable on prm_text into directory `limited` under the
+  /// limit `resource` = bytes; killed after 60 s.  Whether it ended by
+  /// itself, and its wait status.
+  std::pair<bool, int>
+  run_limited(const std::string &prm_text,
+              const int          resource,
+              const rlim_t       bytes)
   {
     {
       std::ofstream prm("limited.prm");
-      prm << "subsection Geometry\n set Subdivisions x = 8\n set "
-             "Subdivisions y = 4\n set Subdivisions z = 2\nend\n"
-             "subsection Output\n set Directory = limited\nend\n";
+      prm << prm_text << "subsection Output\n set Directory = limited\nend\n";
     }
     fs::remove_all("limited");
     std::fflush(stdout);
@@ -505,8 +511,8 @@ namespace
         std::freopen("limited.stdout", "w", stdout);
         std::freopen("limited.stderr", "w", stderr);
         struct rlimit limit;
-        limit.rlim_cur = limit.rlim_max = 700000ul * 1024;
-        setrlimit(RLIMIT_AS, &limit);
+        limit.rlim_cur = limit.rlim_max = bytes;
+        setrlimit(resource, &limit);
         execl(FGIMPACT_EXECUTABLE,
               FGIMPACT_EXECUTABLE,
               "limited.prm",
@@ -527,6 +533,17 @@ namespace
         kill(pid, SIGKILL);
         waitpid(pid, &status, 0);
       }
+    return {ended, status};
+  }
+
+  bool
+  memory_limited()
+  {
+    const auto [ended, status] =
+      run_limited("subsection Geometry\n set Subdivisions x = 8\n set "
+                  "Subdivisions y = 4\n set Subdivisions z = 2\nend\n",
+                  RLIMIT_AS,
+                  700000ul * 1024);
     const std::string error = read("limited.stderr");
     const bool one_line = std::count(error.begin(), error.end(), '\n') == 1 &&
                           error.find("RLIMIT_AS") != std::string::npos;
@@ -539,6 +556,37 @@ namespace
                 one_line ? "yes" : "NO",
                 nothing ? "yes" : "NO");
     return ended && code == 1 && one_line && nothing;
+  }
+
+  /**
+   * Under a file-size limit (ulimit -f 60, in kB) that the first VTU
+   * snapshot exceeds: the run fails with exit code 2, one line naming the
+   * file, and summary.txt with status = failed.  (Each of the snapshot's
+   * writes past the limit raises SIGXFSZ; the second one was taken for a
+   * user insisting and killed the run: exit 153, no summary.)
+   */
+  bool
+  file_size_limited()
+  {
+    const auto [ended, status] =
+      run_limited("subsection Geometry\n set Subdivisions x = 20\n set "
+                  "Subdivisions y = 10\n set Subdivisions z = 2\nend\n"
+                  "subsection Time integration\n set End time = 20e-6\n"
+                  "end\nsubsection Output\n set VTU interval = 1\nend\n",
+                  RLIMIT_FSIZE,
+                  60ul * 1024);
+    const std::string error = read("limited.stderr");
+    const bool one_line = std::count(error.begin(), error.end(), '\n') == 1 &&
+                          error.find("limited/") != std::string::npos;
+    const int  code = ended && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const bool failed =
+      value_of(read("limited/summary.txt"), "status") == "failed";
+    std::printf("ulimit -f 60, VTU every step: exit code %d, one line naming "
+                "the file %s, summary.txt status = failed %s\n",
+                code,
+                one_line ? "yes" : "NO",
+                failed ? "yes" : "NO");
+    return code == 2 && one_line && failed;
   }
 } // namespace
 
@@ -569,9 +617,10 @@ main()
     interrupt_early("static", "set Problem type = static\n" + big, 0) && early;
   early = interrupt_early("modal", "set Problem type = modal\n" + plate, 100) &&
           early;
-  const bool limited = memory_limited();
+  const bool memory    = memory_limited();
+  const bool file_size = file_size_limited();
   const bool ok = term && intr && hup && mpi && pipe && study && convolution &&
-                  converged && early && limited;
+                  converged && early && memory && file_size;
   std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
   return ok ? 0 : 1;
 }
