@@ -8,6 +8,7 @@
 #include <fgimpact/output/impact_summary.h>
 #include <fgimpact/output/postprocessors.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -212,9 +213,16 @@ namespace fgimpact
     if (r.n_impacts > 1)
       pcout << "  note: the impactor struck the plate " << r.n_impacts
             << " times.\n";
-    r.warnings = resolution_warnings(r, contact_model.reports_contact_area());
-    for (const auto &warning : r.warnings)
-      pcout << "  WARNING: " << warning << ".\n";
+    // After the run's own (a snapshot the automatic end left behind);
+    // each once, should this be called again.
+    for (const auto &warning :
+         resolution_warnings(r, contact_model.reports_contact_area()))
+      if (std::find(r.warnings.begin(), r.warnings.end(), warning) ==
+          r.warnings.end())
+        {
+          r.warnings.push_back(warning);
+          pcout << "  WARNING: " << warning << ".\n";
+        }
   }
 
 

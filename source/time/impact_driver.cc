@@ -12,6 +12,7 @@
 #include <csignal>
 #include <cstdio>
 #include <limits>
+#include <sstream>
 
 namespace fgimpact
 {
@@ -342,7 +343,7 @@ namespace fgimpact
             AssertThrow(write_checkpoint(steps_done) == 0,
                         ExcOutputFailure(monitor->output_failure()));
           });
-        report_end_time(stop);
+        report_end_time(stop, steps_done);
         monitor->close_output();
         if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
           stop = -1;
@@ -546,10 +547,25 @@ namespace fgimpact
 
 
   void
-  ImpactDriver::report_end_time(const int stop) const
+  ImpactDriver::report_end_time(const int stop, const unsigned int steps_done)
   {
     if (!parameters.time_integration.auto_end_time || stop != 0)
       return;
+    // Snapshot times the automatic end left behind: not written, said in
+    // the log and in summary.txt's warnings.
+    std::ostringstream dropped;
+    for (const double t : parameters.output.snapshot_times)
+      if (t > steps_done * dt * (1. + 1e-12))
+        dropped << (dropped.str().empty() ? "" : ", ") << t * 1e6;
+    if (!dropped.str().empty())
+      {
+        std::ostringstream warning;
+        warning << "Output/Snapshot times after the automatic end at "
+                << steps_done * dt * 1e6 << " us not written (" << dropped.str()
+                << " us)";
+        pcout << "  WARNING: " << warning.str() << ".\n";
+        results.warnings.push_back(warning.str());
+      }
     // (The rule may fire at the last step too.)
     if (end_time_rule.has_stopped())
       pcout << "  " << end_time_rule.reason() << '\n';

@@ -103,7 +103,7 @@ namespace fgimpact
     /// log line on why the run stopped, or a warning that it ran to the
     /// Maximum end time.
     void
-    report_end_time(const int stop) const;
+    report_end_time(const int stop, const unsigned int steps_done);
 
     /// hertz_impact_duration() with the contact law's stiffness: a lower
     /// bound of the plate's contact duration (s).
