@@ -7,7 +7,6 @@
 #include <fgimpact/output/postprocessors.h>
 
 #include <cmath>
-#include <filesystem>
 
 namespace fgimpact
 {
@@ -140,13 +139,7 @@ namespace fgimpact
       return;
     try
       {
-        std::error_code error;
-        AssertThrow(std::filesystem::file_size(filename, error) >= length &&
-                      !error,
-                    ExcMessage(filename +
-                               " is shorter than at the checkpoint (" +
-                               std::to_string(length) +
-                               " bytes): it cannot be continued"));
+        CsvWriter::check_continuable(filename, length);
       }
     catch (const ExceptionBase &e)
       {

@@ -51,15 +51,8 @@ namespace fgimpact
     if (resume_length > 0)
       {
         // Rows past the checkpoint (a run killed later) are dropped.
+        check_continuable(filename, resume_length);
         std::error_code error;
-        AssertThrow(std::filesystem::file_size(filename, error) >=
-                        resume_length &&
-                      !error,
-                    ExcMessage(filename +
-                               " is shorter than at the checkpoint "
-                               "(" +
-                               std::to_string(resume_length) +
-                               " bytes): it cannot be continued"));
         std::filesystem::resize_file(filename, resume_length, error);
         out.open(filename, std::ios::binary | std::ios::app);
         AssertThrow(out && !error,
@@ -72,6 +65,20 @@ namespace fgimpact
       buffer += (i ? "," : "") + columns[i].first;
     buffer += '\n';
     flush();
+  }
+
+
+
+  void
+  CsvWriter::check_continuable(const std::string   &filename,
+                               const std::uintmax_t resume_length)
+  {
+    std::error_code error;
+    AssertThrow(std::filesystem::file_size(filename, error) >= resume_length &&
+                  !error,
+                ExcMessage(filename + " is shorter than at the checkpoint (" +
+                           std::to_string(resume_length) +
+                           " bytes): it cannot be continued"));
   }
 
 

@@ -48,6 +48,12 @@ namespace fgimpact
     /// Flushes what is left (errors are then ignored: call flush()).
     ~CsvWriter();
 
+    /// Throws ExcMessage unless filename holds at least resume_length bytes
+    /// (a file that can be continued from a checkpoint).
+    static void
+    check_continuable(const std::string   &filename,
+                      const std::uintmax_t resume_length);
+
     void
     write_row(const std::vector<double> &values);
 
