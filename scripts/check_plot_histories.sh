@@ -38,7 +38,7 @@ trap 'rm -rf "$work"' EXIT
 help=$($plot --help) && help_ok=1 || help_ok=0
 names_all=1
 for name in contact_force impactor_velocity midplane_deflection top_deflection \
-  sigma_yy sigma_zz energy force_indentation probes departure_velocity; do
+  sigma_yy sigma_zz energy force_approach probes departure_velocity; do
   grep -q "^  $name\.EXT" <<<"$help" || names_all=0
 done
 check "--help exits 0 and lists every figure" test "$help_ok$names_all" = 11
@@ -76,9 +76,42 @@ done
 mkdir -p "$work/mpl"
 echo "svg.fonttype: none" >"$work/mpl/matplotlibrc"
 MPLCONFIGDIR="$work/mpl" $plot --out "$work/plastic_svg" --format svg \
-  "$work/plastic" >/dev/null
+  --data "$work/plastic" >/dev/null
 check "a plastic run's energy.svg draws the plastic work" \
   grep -q "plastic work" "$work/plastic_svg/energy.svg"
+
+# The force-approach figure's data read back (issue 41): its points are
+# history.csv's (impactor_displacement_um - midplane_deflection_um,
+# contact_force_N) at every sample in contact, loading and unloading, to
+# the CSV's 5 decimals; its largest approach is summary.txt's
+# max_approach_um, and exceeds the crater (permanent_indentation_um: the
+# approach holds it) and the Hertz estimate from the force
+# (max_hertz_indentation_um) is a different number, under its own name.
+figure_data_matches() { # RUN_DIR FIGURE_DIR
+  "$python" - "$1" "$2" <<'PY'
+import csv, sys
+run, fig = sys.argv[1], sys.argv[2]
+h = list(csv.DictReader(open(run + "/history.csv", newline="")))
+want = [(float(r["impactor_displacement_um"]) - float(r["midplane_deflection_um"]),
+         float(r["contact_force_N"])) for r in h if float(r["contact_force_N"]) > 0]
+got = [(float(r["x"]), float(r["y"])) for r in
+       csv.DictReader(open(fig + "/force_approach.data.csv", newline=""))]
+s = dict(l.rstrip("\n").split(" = ", 1) for l in open(run + "/summary.txt")
+         if " = " in l and not l.startswith("#"))
+worst = max(max(abs(a - c), abs(b - d)) for (a, b), (c, d) in zip(got, want))
+peak = max(a for a, _ in got)
+print("  force_approach: %d points, largest difference %.1e um or N (bound 2e-5); "
+      "largest approach %.5f um, summary %s um; crater %s um; Hertz %s um"
+      % (len(got), worst, peak, s["max_approach_um"], s["permanent_indentation_um"],
+         s["max_hertz_indentation_um"]))
+ok = len(got) == len(want) and len(got) > 10 and worst <= 2e-5 and \
+    abs(peak - float(s["max_approach_um"])) <= 2e-5 and \
+    peak > float(s["permanent_indentation_um"]) and "max_indentation_um" not in s
+sys.exit(0 if ok else 1)
+PY
+}
+check "force_approach's data: history.csv's approach and force, summary's max_approach_um" \
+  figure_data_matches "$work/plastic" "$work/plastic_svg"
 
 # scripts/plot_convergence.py on a small Accuracy = converged run (hertz
 # midplane, 10 x 6 x 2, about 1 s).

@@ -10,7 +10,7 @@ meshes=("$@")
 [ ${#meshes[@]} -gt 0 ] || meshes=(20:10:2 40:20:2 40:20:4 40:20:8 80:40:4 80:40:8)
 root=output/mesh_study
 mkdir -p "$root"
-keys="n_dofs peak_contact_force_N time_of_peak_force_us contact_duration_us departure_velocity_m_s max_indentation_um max_midplane_deflection_um max_top_deflection_um max_relative_energy_drift wall_time_s"
+keys="n_dofs peak_contact_force_N time_of_peak_force_us contact_duration_us departure_velocity_m_s max_approach_um max_midplane_deflection_um max_top_deflection_um max_relative_energy_drift wall_time_s"
 printf '| mesh |'; for k in $keys; do printf ' %s |' "$k"; done; printf '\n|---|'
 for k in $keys; do printf -- '---|'; done; printf '\n'
 for m in "${meshes[@]}"; do

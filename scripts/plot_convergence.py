@@ -22,7 +22,7 @@ QUANTITIES = [
     ("departure_velocity_m_s", "departure velocity (m/s)", "departure_velocity"),
     ("max_midplane_deflection_um", "max mid-plane deflection (µm)",
      "max_midplane_deflection"),
-    ("max_indentation_um", "max indentation (µm)", "max_indentation"),
+    ("max_approach_um", "max approach of ball and mid-plane (µm)", "max_approach"),
 ]
 
 

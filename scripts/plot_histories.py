@@ -4,7 +4,7 @@ Asemi & Salami (2015), with their energies, force-indentation curves and
 probes.
 
 Usage:
-  plot_histories.py --out DIR [--title T] [--departure]
+  plot_histories.py --out DIR [--title T] [--departure] [--data]
                     [--format png|pdf|svg] [--time-window T0 T1]
                     [--label L1] run_dir1 [--label L2] run_dir2 ...
   plot_histories.py --help
@@ -13,8 +13,10 @@ Each run_dir must contain the history.csv written by fgimpact (and, for
 --departure, summary.txt and parameters.prm). A "--label L" applies to the
 run directory that follows it; without it the label is the directory's
 basename. --format picks the file type (default png); --time-window T0 T1
-(in us, T0 < T1) restricts every time axis and the force-indentation
-curves to T0 <= t <= T1. Exit code 0, or 2 with one error line for a bad
+(in us, T0 < T1) restricts every time axis and the force-approach
+curves to T0 <= t <= T1. --data writes beside each figure NAME.EXT the
+curves it draws, NAME.data.csv (columns figure,curve,x,y: one row per
+plotted point, in the figure's units), for re-plotting elsewhere. Exit code 0, or 2 with one error line for a bad
 command line or a missing/malformed file.
 
 Writes into DIR (created if missing), EXT = the --format:
@@ -27,9 +29,11 @@ Writes into DIR (created if missing), EXT = the --format:
   energy.EXT               impactor, plate kinetic, strain, contact and
                            total energy (J) vs t (us), and the plastic
                            work when history.csv has energy_plastic_J
-  force_indentation.EXT    contact force F (N) vs indentation (um): the
-                           ball's displacement minus the plate's deflection
-                           under it (every contact model), in contact (F > 0)
+  force_approach.EXT       contact force F (N) vs the measured approach
+                           (um): the ball's displacement minus the
+                           mid-plane's deflection under it (history.csv's
+                           approach_um, every contact model), in contact
+                           (F > 0), loading and unloading
 and if a run_dir holds probes.csv (Output/Probe points):
   probes.EXT               per probe point u_z (um) and sigma_xx, sigma_zz
                            (MPa) vs t, and the support reaction (N) vs t
@@ -106,7 +110,7 @@ def parse_arguments(argv):
     out = None
     title = None
     departure = False
-    options = {"format": "png", "window": None}
+    options = {"format": "png", "window": None, "data": False}
     runs = []  # (label, directory)
     pending_label = None
     i = 0
@@ -137,6 +141,8 @@ def parse_arguments(argv):
             title = arg.split("=", 1)[1]
         elif arg == "--departure":
             departure = True
+        elif arg == "--data":
+            options["data"] = True
         elif arg == "--format" or arg.startswith("--format="):
             if arg == "--format":
                 if i + 1 >= len(argv):
@@ -291,11 +297,27 @@ def set_time_axis(ax, histories, window):
 
 
 def save(fig, out, name, options):
+    """Writes the figure (and with --data its curves' points)."""
     fig.tight_layout()
     path = os.path.join(out, "%s.%s" % (name, options["format"]))
     fig.savefig(path, dpi=130)
+    written = [path]
+    if options["data"]:
+        data = os.path.join(out, "%s.data.csv" % name)
+        with open(data, "w", newline="") as f:
+            writer = csv.writer(f, lineterminator="\n")
+            writer.writerow(["figure", "curve", "x", "y"])
+            for ax in fig.axes:
+                for line in ax.get_lines():
+                    curve = line.get_label()
+                    if curve.startswith("_"):  # guides, not data
+                        continue
+                    for x, y in zip(line.get_xdata(), line.get_ydata()):
+                        writer.writerow([name, curve, repr(float(x)),
+                                         repr(float(y))])
+        written.append(data)
     plt.close(fig)
-    return path
+    return written
 
 
 def column(history, name, run_dir, file_name="history.csv"):
@@ -315,7 +337,7 @@ def plot_time_histories(out, title, runs, histories, options):
                    TIME_LABEL, ylabel)
         set_time_axis(ax, histories, options["window"])
         ax.legend(loc="best", fontsize="small", framealpha=0.85)
-        written.append(save(fig, out, file_name, options))
+        written += save(fig, out, file_name, options)
     return written
 
 
@@ -346,31 +368,32 @@ def plot_energy(out, title, runs, histories, options):
                TIME_LABEL, "Energy (J)")
     set_time_axis(ax, histories, options["window"])
     ax.legend(loc="best", fontsize="x-small", framealpha=0.85)
-    return [save(fig, out, "energy", options)]
+    return save(fig, out, "energy", options)
 
 
-def plot_force_indentation(out, title, runs, histories, options):
-    """The indentation from the motions, the same for every contact
-    model: the ball's displacement minus the plate's deflection under the
-    ball (its contact node), not indentation_um (for resolved sphere the
-    Hertz approach (F/K)^(2/3), a function of F alone)."""
+def plot_force_approach(out, title, runs, histories, options):
+    """The measured approach, the same for every contact model: the ball's
+    displacement minus the mid-plane's deflection under the ball
+    (approach_um), not indentation_um (for resolved sphere the Hertz
+    estimate (F/K)^(2/3), a function of F alone, and for hertz node the
+    approach to one node under a point force, which grows without bound
+    as the mesh is refined). In contact (F > 0): the loading branch, and
+    the unloading one, which ends at the crater in a plastic run."""
     fig, ax = plt.subplots(figsize=(7.5, 4.8))
     for (label, run_dir), history in zip(runs, histories):
-        ball = column(history, "impactor_displacement_um", run_dir)
-        plate = column(history, "contact_node_deflection_um", run_dir)
+        approach = column(history, "approach_um", run_dir)
         force = column(history, "contact_force_N", run_dir)
-        # In contact only (F > 0).
-        points = [(w - u, f) for t, w, u, f in
-                  zip(history["t_us"], ball, plate, force)
+        points = [(a, f) for t, a, f in
+                  zip(history["t_us"], approach, force)
                   if f > 0 and in_window(t, options["window"])]
         ax.plot([p[0] for p in points], [p[1] for p in points], label=label,
                 linewidth=1.4)
-    style_axes(ax, "Force-indentation" if not title
-               else "%s\nForce-indentation" % title,
-               r"Indentation $\alpha = w_{ball} - w_{plate}$ ($\mu$m)",
+    style_axes(ax, "Force-approach" if not title
+               else "%s\nForce-approach" % title,
+               r"Approach $\delta = w_{ball} - w_{mid}$ ($\mu$m)",
                "Contact force $F$ (N)")
     ax.legend(loc="best", fontsize="small", framealpha=0.85)
-    return [save(fig, out, "force_indentation", options)]
+    return save(fig, out, "force_approach", options)
 
 
 def probe_names(probes):
@@ -410,7 +433,7 @@ def plot_probes(out, title, runs, options):
         ax.legend(loc="best", fontsize="x-small", framealpha=0.85)
     if title:
         fig.suptitle(title)
-    return [save(fig, out, "probes", options)]
+    return save(fig, out, "probes", options)
 
 
 def plot_departure(out, title, runs, options):
@@ -463,7 +486,7 @@ def plot_departure(out, title, runs, options):
     ax2.set_ylim(lo - pad, hi + pad)
     if title:
         fig.suptitle(title)
-    return [save(fig, out, "departure_velocity", options)]
+    return save(fig, out, "departure_velocity", options)
 
 
 def main(argv):
@@ -473,7 +496,7 @@ def main(argv):
     os.makedirs(out, exist_ok=True)
     written = plot_time_histories(out, title, runs, histories, options)
     written += plot_energy(out, title, runs, histories, options)
-    written += plot_force_indentation(out, title, runs, histories, options)
+    written += plot_force_approach(out, title, runs, histories, options)
     written += plot_probes(out, title, runs, options)
     if departure:
         written += plot_departure(out, title, runs, options)

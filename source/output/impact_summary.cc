@@ -338,9 +338,19 @@ namespace fgimpact
         number("departure_velocity_m_s",
                7,
                [](const R &r) { return r.departure_velocity; }),
-        number("max_indentation_um",
+        number("max_approach_um",
                5,
-               [](const R &r) { return r.max_indentation * 1e6; }),
+               [](const R &r) { return r.max_approach * 1e6; }),
+        number(
+          "max_indentation_um",
+          5,
+          [](const R &r) { return r.max_indentation * 1e6; },
+          W::contact_law),
+        number(
+          "max_hertz_indentation_um",
+          5,
+          [](const R &r) { return r.max_indentation * 1e6; },
+          W::contact_area),
         number("max_midplane_deflection_um",
                5,
                [](const R &r) { return r.max_midplane_deflection * 1e6; }),
@@ -595,6 +605,7 @@ namespace fgimpact
     for (const SummaryKey &key : impact_summary_keys())
       {
         if ((key.when == SummaryKey::When::contact_area && !contact_area) ||
+            (key.when == SummaryKey::When::contact_law && contact_area) ||
             (key.when == SummaryKey::When::instrumentation &&
              !instrumentation) ||
             (key.when == SummaryKey::When::plasticity && !r.plastic.modelled))

@@ -352,14 +352,18 @@ namespace fgimpact
                   sizeof(line),
                   "  peak force %.3f N at %.3f us; contact %s us; departure "
                   "velocity %s m/s\n"
-                  "  max indentation %.4f um, mid-plane deflection %.4f um, "
-                  "top deflection %.4f um\n"
+                  "  max %s %.4f um, approach %.4f um, mid-plane "
+                  "deflection %.4f um, top deflection %.4f um\n"
                   "  energy drift %.3e\n",
                   r.peak_contact_force,
                   r.time_of_peak_force * 1e6,
                   optional(r.contact_duration * 1e6, "%.3f").c_str(),
                   optional(r.departure_velocity, "%.6f").c_str(),
+                  contact_model.reports_contact_area() ?
+                    "Hertz indentation (from the force)" :
+                    "indentation",
                   r.max_indentation * 1e6,
+                  r.max_approach * 1e6,
                   r.max_midplane_deflection * 1e6,
                   r.max_top_deflection * 1e6,
                   r.max_energy_drift);

@@ -75,10 +75,10 @@ namespace fgimpact
        "max_midplane_deflection_um",
        1e6,
        [](const ImpactResults &r) { return r.max_midplane_deflection; }},
-      {"max_indentation",
-       "max_indentation_um",
+      {"max_approach",
+       "max_approach_um",
        1e6,
-       [](const ImpactResults &r) { return r.max_indentation; }}};
+       [](const ImpactResults &r) { return r.max_approach; }}};
     return q;
   }
 

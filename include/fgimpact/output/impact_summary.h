@@ -83,7 +83,8 @@ namespace fgimpact
     enum class When
     {
       always,
-      contact_area,
+      contact_area, // a resolved contact (a contact area)
+      contact_law,  // a Hertz law (no contact area)
       instrumentation,
       plasticity // Material/Plasticity = J2
     };

@@ -43,6 +43,12 @@ namespace fgimpact
     {
       return "results";
     }
+    /// 2: the measured approach (max_approach) added.
+    std::uint32_t
+    checkpoint_version() const override
+    {
+      return 2;
+    }
     void
     execute(const StepRecord &record) override;
     void

@@ -43,7 +43,8 @@ namespace fgimpact
     double       time_of_peak_force      = 0; // s
     double       contact_duration        = 0; // s, NaN if still in contact
     double       departure_velocity      = 0; // m/s, rebound positive
-    double       max_indentation         = 0; // m
+    double       max_indentation         = 0; // m, the contact law's alpha
+    double       max_approach            = 0; // m, w_ball - W_mid
     double       max_contact_radius      = 0; // m (resolved contact)
     double       max_contact_pressure    = 0; // Pa (resolved contact)
     unsigned int max_contact_nodes       = 0; // (resolved contact)
