@@ -61,11 +61,19 @@ namespace fgimpact
 
     struct Parameters
     {
-      Plasticity plasticity               = Plasticity::none;
-      double     metal_hardening_modulus  = 3e8; // Pa
-      double     metal_yield_strength     = 275e6;
-      double     ceramic_tensile_strength = 260e6;
-      double     tto_q                    = 4.5e9;
+      /// Material/Graded hardening.
+      enum class GradedHardening
+      {
+        tto_tangent,    // the TTO mixture's own tangent (default)
+        scaled_as_yield // H_m Y(z) / Y_m (before issue 37)
+      };
+
+      Plasticity      plasticity               = Plasticity::none;
+      GradedHardening graded_hardening         = GradedHardening::tto_tangent;
+      double          metal_hardening_modulus  = 3e8; // Pa
+      double          metal_yield_strength     = 275e6;
+      double          ceramic_tensile_strength = 260e6;
+      double          tto_q                    = 4.5e9;
 
       /// The entries, in the Material subsection.
       static void
@@ -85,10 +93,21 @@ namespace fgimpact
     double
     yield_strength(const double z) const;
 
-    /// The hardening modulus H(z) of Plasticity = J2 (Pa): the metal's
-    /// H_m scaled as the yield strength, H_m Y(z) / Y_m.
+    /// The hardening modulus H(z) of Plasticity = J2 (Pa).  TTO tangent:
+    /// the mixture's uniaxial slope of stress over plastic strain,
+    /// H = E E_t / (E - E_t), E and E_t the TTO rule's moduli of the
+    /// mixture with the metal's elastic modulus E_m and its tangent
+    /// E_m H_m / (E_m + H_m) (doc/plasticity.md); scaled as yield:
+    /// H_m Y(z) / Y_m.
     double
     hardening_modulus(const double z) const;
+
+    /// The TTO rule's modulus of the mixture at height z (m) whose metal
+    /// phase has the modulus (or tangent) E_metal (Pa), the ceramic its
+    /// elastic one: [(q + E_c) V_m E_metal + (q + E_metal) V_c E_c] /
+    /// [(q + E_c) V_m + (q + E_metal) V_c].
+    double
+    tto_modulus(const double z, const double E_metal) const;
 
     /// S_t(V_m(z)) (Pa); 0 if the check is off.
     double
