@@ -114,9 +114,10 @@ check "force_approach's data: history.csv's approach and force, summary's max_ap
   figure_data_matches "$work/plastic" "$work/plastic_svg"
 
 # scripts/plot_convergence.py on a small Accuracy = converged run (hertz
-# midplane, 10 x 6 x 2, about 1 s).
+# midplane, 10 x 6 x 2, no probes: the mid-plane probe under its point
+# force does not converge in plane; about 9 s with the base mesh's runs).
 "$build/fgimpact" tests/run/default_small.prm -s "Output/Directory=$work/conv" \
-  -s "Contact/Model=hertz midplane" -s "Accuracy=converged" \
+  -s "Contact/Model=hertz midplane" -s "Accuracy=converged" -s "Output/Probe points=" \
   -s "Output/VTU interval=0" -s "Output/Log interval=0" \
   -s "Output/Print timing=false" >/dev/null
 figure=$("$python" scripts/plot_convergence.py --format svg "$work/conv")

@@ -22,8 +22,8 @@ lines = ["| case | levels | peak force (N) | hertz node | hertz midplane | "
          "|---|---|---|---|---|---|---|---|---|---|---|"]
 for f in sorted(glob.glob(f"{out}/*/contact_convergence.csv")):
     rows = {r["quantity"]: r for r in csv.DictReader(open(f))}
-    levels = [k.split("_")[2] for k in next(iter(rows.values()))
-              if k.startswith("resolved_level_")]
+    levels = [k.split("_")[3] for k in next(iter(rows.values()))
+              if k.startswith("resolved_") and "_level_" in k]
     cells = [os.path.basename(os.path.dirname(f)), f"{levels[0]}-{levels[-1]}"]
     for q in ("peak_contact_force_N", "contact_duration_us",
               "departure_velocity_m_s"):

@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """The convergence of an Accuracy = converged run: each headline number of
 convergence.csv against the element size under the ball (one point per
-contact refinement level at the input's time step, the final run at half
-the step marked apart), with the final value and its estimated error band
-from summary.txt.
+contact refinement level on the input's mesh at its time step, the runs
+on refined base meshes as points, the final run at half the step marked
+apart), with the final value and its estimated error band from
+summary.txt.
 
 Usage: /usr/bin/python3 scripts/plot_convergence.py OUTPUT_DIR
            [--format png|pdf|svg]
@@ -49,13 +50,23 @@ def main():
         sys.exit("plot_convergence.py: matplotlib is missing (use /usr/bin/python3)")
     with open(os.path.join(args.directory, "convergence.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
-    final, levels = rows[-1], rows[:-1]
+    final = rows[-1]
+    mesh = lambda r: (r.get("subdivisions_x"), r.get("subdivisions_y"),
+                      r.get("subdivisions_z"))
+    # The contact levels on the input's mesh, and the runs on other base
+    # meshes (their element size under the ball is that of their mesh).
+    levels = [r for r in rows[:-1] if mesh(r) == mesh(rows[0])]
+    bases = [r for r in rows[:-1] if mesh(r) != mesh(rows[0])]
     s = summary(args.directory)
     fig, axes = plt.subplots(1, len(QUANTITIES), figsize=(3.6 * len(QUANTITIES), 3.4))
     for ax, (column, label, key) in zip(axes, QUANTITIES):
         h = [float(r["element_size_under_ball_mm"]) for r in levels]
         ax.plot(h, [float(r[column]) for r in levels], "o-",
                 label=f"levels, dt = {levels[0]['time_step_us']} µs")
+        if bases:
+            ax.plot([float(r["element_size_under_ball_mm"]) for r in bases],
+                    [float(r[column]) for r in bases], "^", alpha=0.7,
+                    label="other base meshes (convergence.csv)")
         value = float(final[column])
         ax.plot([float(final["element_size_under_ball_mm"])], [value], "s",
                 label=f"final, dt = {final['time_step_us']} µs")

@@ -175,9 +175,35 @@ namespace fgimpact
       return locks;
     }
 
-    /// Accuracy = converged's convergence/level_N/: each level's own files
-    /// (and its vtu/ and checkpoint*/), then the emptied level and
-    /// convergence directories (a user's file keeps its directory).
+    /// Whether name is one of Accuracy = converged's run directories:
+    /// level_N (the input's mesh) or base_NXxNYxNZ_level_N.
+    bool
+    is_convergence_run(const std::string &name)
+    {
+      const auto number = [&name](std::size_t &at) {
+        const std::size_t from = at;
+        while (at < name.size() && name[at] >= '0' && name[at] <= '9')
+          ++at;
+        return at > from;
+      };
+      std::size_t at = 0;
+      if (name.rfind("base_", 0) == 0)
+        {
+          at = 5;
+          for (const char separator : {'x', 'x', '_'})
+            if (!number(at) || at >= name.size() || name[at++] != separator)
+              return false;
+        }
+      if (name.compare(at, 6, "level_") != 0)
+        return false;
+      at += 6;
+      return number(at) && at == name.size();
+    }
+
+    /// Accuracy = converged's convergence/level_N/ and
+    /// base_NXxNYxNZ_level_N/: each run's own files (and its vtu/ and
+    /// checkpoint*/), then the emptied run and convergence directories (a
+    /// user's file keeps its directory).
     void
     remove_convergence_directory(const std::filesystem::path &convergence)
     {
@@ -186,8 +212,7 @@ namespace fgimpact
       for (const auto &level : fs::directory_iterator(convergence, error))
         {
           const std::string name = level.path().filename().string();
-          if (!level.is_directory() || name.size() <= 6 ||
-              name.rfind("level_", 0) != 0 || !digits(name, 6, name.size() - 6))
+          if (!level.is_directory() || !is_convergence_run(name))
             continue;
           for (const auto &entry : fs::directory_iterator(level.path(), error))
             {

@@ -90,7 +90,8 @@ namespace
             "convergence.csv",
             "convergence/level_9/summary.txt",
             "convergence/level_9/vtu/solution_00020.0.vtu",
-            "convergence/level_9/checkpoint/rank_0000.bin"};
+            "convergence/level_9/checkpoint/rank_0000.bin",
+            "convergence/base_20x12x4_level_3/summary.txt"};
   }
 
   /// A user's files beside them, with near-miss names (kept).
@@ -109,7 +110,8 @@ namespace
             "mine/solution_00000.0.vtu",
             "vtu/solution_t37.5.vtu",
             "vtu/notes.txt",
-            "convergence/level_8/notes.txt"};
+            "convergence/level_8/notes.txt",
+            "convergence/base_20x12_level_3/summary.txt"};
   }
 
   std::string
@@ -226,6 +228,8 @@ namespace
           fs::create_directories(dir + "/convergence/level_9/vtu");
           fs::create_directories(dir + "/convergence/level_9/checkpoint");
           fs::create_directories(dir + "/convergence/level_8");
+          fs::create_directories(dir + "/convergence/base_20x12x4_level_3");
+          fs::create_directories(dir + "/convergence/base_20x12_level_3");
           // An earlier run's files: removed.
           for (const auto &name : stale_names())
             write(dir + "/" + name, "stale\n");
@@ -736,7 +740,8 @@ namespace
               clean = clean && read(dir + "/" + name) == "mine\n";
             clean = clean && !fs::exists(dir + "/checkpoint.old/rank_0000.bin");
             // An earlier converged run's level without a user's file went.
-            clean = clean && !fs::exists(dir + "/convergence/level_9");
+            clean = clean && !fs::exists(dir + "/convergence/level_9") &&
+                    !fs::exists(dir + "/convergence/base_20x12x4_level_3");
           }
         // Not written, and said so in summary.txt's warnings (it was
         // dropped without a word).

@@ -4,17 +4,24 @@
 //      observed order recovers p); half the time step adds |q(dt/2) -
 //      q(dt)| / 3; a sequence whose changes grow, or shrink with an
 //      observed order below 1/2, falls back to the last change;
-//  (2) a whole run (hertz midplane, 10 x 6 x 2 plate, tolerance 0.1 %),
+//  (2) a whole run (hertz midplane, 10 x 6 x 2 plate, tolerance 1 %),
 //      read back from its files: convergence.csv's rows against each
-//      level's convergence/level_L/summary.txt and the final summary.txt;
-//      the sequence stops at the first level whose largest change is below
-//      the tolerance; the summary's *_error_estimate keys against the
-//      estimate recomputed here from convergence.csv;
-//      the probes' peak von Mises stresses are among the numbers, the top
-//      one (under the point force) reported but not steering;
-//  (3) the estimates against the actual error: the final numbers against
-//      a separate run two levels finer at half the final time step; every
-//      actual error below 3 times its estimate + 1e-5.
+//      run's summary.txt (convergence/level_L, convergence/base_M_level_L)
+//      and the final summary.txt; the contact levels stop at the first
+//      level whose largest change is below the tolerance, and each base
+//      mesh direction at its first doubling that changes every number by
+//      less; the summary's *_error_estimate keys, total and per source
+//      (contact levels, base mesh in plane and through the thickness,
+//      time step), against the estimates recomputed here from
+//      convergence.csv; the probe under the point force is reported but
+//      does not steer;
+//  (3) the estimates against the actual error, on meshes the run never
+//      used: the final numbers against a run with the final base mesh
+//      doubled in every direction, one contact level more and half the
+//      final time step; every steering number's actual error below its
+//      estimate;
+//  (4) a tolerance a number cannot reach within the 16-fold refinement
+//      of the base mesh is refused as soon as its changes show it.
 
 #include <deal.II/base/mpi.h>
 
@@ -102,7 +109,7 @@ namespace
     "subsection Contact\n set Model = hertz midplane\nend\n"
     "subsection Output\n set Directory = out\n set VTU interval = 0\n"
     " set Log interval = 0\n set Print timing = false\n"
-    " set Probe points = top: 0.5a, 0.5b, 1h; bottom: 0.5a, 0.5b, 0h\nend\n";
+    " set Probe points = top: 0.5a, 0.5b, 1h\nend\n";
   /// One converged number: its convergence.csv column, its summary key
   /// (without the unit), whether it steers the sequence.
   struct Number
@@ -119,7 +126,10 @@ namespace
              const std::map<std::string, std::string> &summary)
   {
     std::vector<Number> numbers;
-    for (std::size_t c = 5; c + 1 < header.size(); ++c)
+    const std::size_t   first =
+      std::find(header.begin(), header.end(), "element_size_under_ball_mm") -
+      header.begin() + 1;
+    for (std::size_t c = first; c + 1 < header.size(); ++c)
       for (const auto &[name, value] : summary)
         {
           const std::string suffix = "_error_estimate";
@@ -137,7 +147,7 @@ namespace
     return numbers;
   }
 
-  /// (3) Against a run two levels finer at half the final step.
+  /// (3) Against a run on meshes the run never used.
   bool
   part_three(const std::vector<Number>                &numbers,
              const std::vector<std::string>           &header,
@@ -148,15 +158,27 @@ namespace
     const auto column = [&](const std::string &name) {
       return std::find(header.begin(), header.end(), name) - header.begin();
     };
-    const int    finest = static_cast<int>(rows.back()[1]);
-    const double dt     = rows.back()[2] * 1e-6;
+    const auto &final = rows.back();
+    const auto  at    = [&](const char *name) {
+      return static_cast<int>(final[column(name)]);
+    };
+    const double dt = final[column("time_step_us")] * 1e-6;
     fgimpact_tests::remove_output("out");
     fgimpact_tests::run_quietly(
       "",
       scene + "subsection Geometry\n set Contact refinement levels = " +
-        std::to_string(finest + 2) +
+        std::to_string(at("contact_refinement_levels") + 1) +
+        "\n set Subdivisions x = " + std::to_string(2 * at("subdivisions_x")) +
+        "\n set Subdivisions y = " + std::to_string(2 * at("subdivisions_y")) +
+        "\n set Subdivisions z = " + std::to_string(2 * at("subdivisions_z")) +
         "\nend\nsubsection Time integration\n set Time step = " +
         Utilities::to_string(dt / 2.) + "\nend\n");
+    std::printf("(3) reference: %dx%dx%d, level %d, dt %.2f us\n",
+                2 * at("subdivisions_x"),
+                2 * at("subdivisions_y"),
+                2 * at("subdivisions_z"),
+                at("contact_refinement_levels") + 1,
+                dt / 2. * 1e6);
     const auto reference = fgimpact_tests::read_summary("out/summary.txt");
     for (const auto &q : numbers)
       {
@@ -166,12 +188,12 @@ namespace
         const double actual =
           std::abs(rows.back()[column(q.column)] - exact) / std::abs(exact);
         const double given  = std::stod(summary.at(q.key + "_error_estimate"));
-        const bool   within = actual < 3. * given + 1e-5;
-        std::printf("(3) %-29s estimate %.2e, actual error %.2e: %s\n",
+        const bool   within = actual < given;
+        // The verdict only: the digits depend on the CPU's round-off in
+        // the smallest of them.
+        std::printf("(3) %-29s actual error below the estimate: %s\n",
                     q.key.c_str(),
-                    given,
-                    actual,
-                    within ? "within 3 x estimate + 1e-5" : "NOT WITHIN");
+                    within ? "yes" : "NO");
         ok = ok && within;
       }
     return ok;
@@ -187,31 +209,44 @@ main(int argc, char *argv[])
   bool                             ok = part_one();
 
   // (2) The whole run, read back from its files.
-  const double tolerance = 1e-3;
+  const double tolerance = 1e-2;
   fgimpact_tests::remove_output("out");
   fgimpact_tests::run_quietly("",
                               scene + "set Accuracy = converged\n"
-                                      "set Accuracy tolerance = 0.001\n");
+                                      "set Accuracy tolerance = 0.01\n");
   const auto [header, rows] = read_csv("out/convergence.csv");
   const auto column         = [&](const std::string &name) {
     return std::find(header.begin(), header.end(), name) - header.begin();
   };
+  const auto level_of = [&](const std::vector<double> &row) {
+    return int(row[column("contact_refinement_levels")]);
+  };
+  const auto mesh = [&](const std::vector<double> &row) {
+    return std::to_string(int(row[column("subdivisions_x")])) + "x" +
+           std::to_string(int(row[column("subdivisions_y")])) + "x" +
+           std::to_string(int(row[column("subdivisions_z")]));
+  };
   const auto summary = fgimpact_tests::read_summary("out/summary.txt");
   const std::vector<Number> numbers  = numbers_of(header, summary);
+  const std::string         input    = mesh(rows[0]);
+  const std::size_t         last     = rows.size() - 1;
   double                    readback = 0;
   for (std::size_t i = 0; i < rows.size(); ++i)
     {
-      const bool        final = (i + 1 == rows.size());
+      const std::string level = "level_" + std::to_string(level_of(rows[i]));
       const std::string file =
-        final ? "out/summary.txt" :
-                "out/convergence/level_" +
-                  std::to_string(static_cast<int>(rows[i][1])) + "/summary.txt";
+        i == last ?
+          "out/summary.txt" :
+          "out/convergence/" +
+            (mesh(rows[i]) == input ? level :
+                                      "base_" + mesh(rows[i]) + "_" + level) +
+            "/summary.txt";
       // In units of the summary's last printed digit: at most 1/2, plus
       // the CSV's own rounding to 10 significant digits (below 0.01).
-      const auto level = fgimpact_tests::read_summary(file);
+      const auto values = fgimpact_tests::read_summary(file);
       for (const auto &q : numbers)
         {
-          const std::string &text = level.at(q.column);
+          const std::string &text = values.at(q.column);
           const std::size_t  dot  = text.find('.');
           const double       unit = std::pow(
             10., -double(dot == std::string::npos ? 0 : text.size() - dot - 1));
@@ -221,64 +256,172 @@ main(int argc, char *argv[])
                        unit);
         }
     }
-  // The largest relative change between successive levels (same dt).
-  const auto change = [&](const std::size_t i) {
+  // The chains, as summary.txt names their runs ("MESH/L"), as rows.
+  const auto chain_of = [&](const std::string &key) {
+    std::vector<std::size_t> chain;
+    std::istringstream       runs(summary.at(key));
+    for (std::string run; runs >> run;)
+      for (std::size_t i = 0; i < last; ++i)
+        if (mesh(rows[i]) + "/" + std::to_string(level_of(rows[i])) == run)
+          chain.push_back(i);
+    return chain;
+  };
+  std::vector<std::size_t> search;
+  for (std::size_t i = 0; i < last && mesh(rows[i]) == input; ++i)
+    search.push_back(i);
+  const auto levels = chain_of("error_estimate_runs_contact_levels"),
+             plane  = chain_of("error_estimate_runs_base_mesh_in_plane"),
+             thick  = chain_of("error_estimate_runs_base_mesh_thickness");
+  // The largest relative change of a steering number from row i to row j.
+  const auto change = [&](const std::size_t i, const std::size_t j) {
     double largest = 0;
     for (const auto &q : numbers)
       if (q.steers)
         largest = std::max(largest,
-                           std::abs(rows[i][column(q.column)] -
-                                    rows[i - 1][column(q.column)]) /
-                             std::abs(rows[i][column(q.column)]));
+                           std::abs(rows[j][column(q.column)] -
+                                    rows[i][column(q.column)]) /
+                             std::abs(rows[j][column(q.column)]));
     return largest;
   };
-  const std::size_t n_levels    = rows.size() - 1;
-  bool              stops_first = change(n_levels - 1) < tolerance;
-  for (std::size_t i = 1; i + 1 < n_levels; ++i)
-    stops_first = stops_first && change(i) >= tolerance;
-  // The estimates, recomputed from the CSV.
-  double estimate = 0;
+  // Each chain stops at its first change below the tolerance; the three
+  // chains start from the final run's mesh and level, one refinement
+  // each from it.
+  bool stops_first = true;
+  for (const std::vector<std::size_t> *chain :
+       {static_cast<const std::vector<std::size_t> *>(&search),
+        &levels,
+        &plane,
+        &thick})
+    for (std::size_t k = 1; k < chain->size(); ++k)
+      stops_first = stops_first && (change((*chain)[k - 1], (*chain)[k]) <
+                                    tolerance) == (k + 1 == chain->size());
+  const auto &f       = rows[last];
+  const auto  same_as = [&](const std::size_t i) {
+    return mesh(rows[i]) == mesh(f) && level_of(rows[i]) == level_of(f);
+  };
+  const bool final_run =
+    levels.size() >= 2 && plane.size() >= 2 && thick.size() >= 2 &&
+    same_as(levels[levels.size() - 2]) && same_as(plane[plane.size() - 2]) &&
+    same_as(thick[thick.size() - 2]) &&
+    f[column("time_step_us")] == 0.5 * rows[0][column("time_step_us")];
+  // The estimates, recomputed from the CSV: for each chain the difference
+  // of its last pair plus the finer one's error (Richardson with p >= 1/2
+  // over the last three, or the last change); |q(dt/2) - q(dt)| / 3.
+  const auto error_of_last = [](const std::vector<double> &v) {
+    const std::size_t k  = v.size() - 1;
+    const double      d2 = v[k] - v[k - 1];
+    if (k >= 2)
+      {
+        const double d1 = v[k - 1] - v[k - 2];
+        if (d1 * d2 > 0 && std::abs(d1 / d2) >= std::sqrt(2.)) // p >= 1/2
+          return std::abs(d2) / (std::abs(d1 / d2) - 1.);      // 2^p = d1/d2
+      }
+    return std::abs(d2);
+  };
+  double      estimate   = 0;
+  const char *sources[4] = {"contact_levels",
+                            "base_mesh_in_plane",
+                            "base_mesh_thickness",
+                            "time_step"};
   for (const auto &q : numbers)
     {
-      std::vector<double> v;
-      for (std::size_t i = 0; i < n_levels; ++i)
-        v.push_back(rows[i][column(q.column)]);
-      const double      half = rows.back()[column(q.column)];
-      const std::size_t k    = v.size() - 1;
-      const double      d1 = v[k - 1] - v[k - 2], d2 = v[k] - v[k - 1];
-      double            e = std::abs(d2);
-      if (d1 * d2 > 0 && std::abs(d1 / d2) >= std::sqrt(2.)) // p >= 1/2
-        e = std::abs(d2) / (std::abs(d1 / d2) - 1.);         // 2^p = d1/d2
-      e                  = (e + std::abs(half - v[k]) / 3.) / std::abs(half);
+      const auto values = [&](const std::vector<std::size_t> &chain) {
+        std::vector<double> v;
+        for (const std::size_t i : chain)
+          v.push_back(rows[i][column(q.column)]);
+        return v;
+      };
+      const auto coarser = [&](const std::vector<double> &v) {
+        return std::abs(v[v.size() - 1] - v[v.size() - 2]) + error_of_last(v);
+      };
+      const auto   c = values(levels), p = values(plane), t = values(thick);
+      const double half     = f[column(q.column)];
+      const double parts[4] = {coarser(c),
+                               coarser(p),
+                               coarser(t),
+                               std::abs(half - c[c.size() - 2]) / 3.};
+      double       total    = 0;
+      for (unsigned int s = 0; s < 4; ++s)
+        {
+          const double e = parts[s] / std::abs(half);
+          total += e;
+          const double given =
+            std::stod(summary.at(q.key + "_error_estimate_" + sources[s]));
+          // The CSV's 10 digits make a relative error of 1e-10 in each
+          // value, so up to 1e-9 absolute in a part made of a small
+          // difference (the time step's of the contact duration: 7e-6).
+          estimate = std::max(estimate, std::abs(given - e) / (e + 1e-4));
+        }
       const double given = std::stod(summary.at(q.key + "_error_estimate"));
-      estimate           = std::max(estimate, std::abs(given - e) / e);
+      estimate = std::max(estimate, std::abs(given - total) / (total + 1e-4));
     }
   std::string steering, reported;
   for (const auto &q : numbers)
     (q.steers ? steering : reported) += " " + q.key;
-  std::printf("(2) %zu levels (%d to %d), then dt/2; converged:%s; reported "
+  std::printf("(2) %zu levels on %s (%d to %d); chains of %zu base meshes "
+              "in plane, %zu through the thickness, %zu contact levels; the "
+              "final run on %s at level %d, dt/2; converged:%s; reported "
               "only (on the contact surface):%s\n",
-              n_levels,
-              static_cast<int>(rows[0][1]),
-              static_cast<int>(rows[n_levels - 1][1]),
+              search.size(),
+              input.c_str(),
+              level_of(rows[search.front()]),
+              level_of(rows[search.back()]),
+              plane.size(),
+              thick.size(),
+              levels.size(),
+              mesh(f).c_str(),
+              level_of(f),
               steering.c_str(),
               reported.c_str());
   // Verdicts: both differences measure rounding (to the summary's and the
   // CSV's digits), their own digits those of the values' last bits.
   std::printf("(2) convergence.csv against the summary.txt files: within "
-              "0.51 of their last digit: %s; "
-              "stops at the first level with a change below %.1f %%: %s; "
-              "the estimates recomputed from the CSV: within 1e-5 relative: "
+              "0.51 of their last digit: %s; each chain stops at its first "
+              "change below %.1f %%: %s; the final run is each chain's last "
+              "but one at half the time step: %s; the estimates (total and "
+              "per source) recomputed from the CSV: within 1e-5 relative: "
               "%s\n",
               readback <= 0.51 ? "yes" : "NO",
               100. * tolerance,
               stops_first ? "yes" : "NO",
+              final_run ? "yes" : "NO",
               estimate < 1e-5 ? "yes" : "NO");
-  ok = ok && readback <= 0.51 && stops_first && estimate < 1e-5 &&
-       numbers.size() == ConvergedRun::quantities().size() + 2 &&
+  ok = ok && readback <= 0.51 && stops_first && final_run && estimate < 1e-5 &&
+       numbers.size() == ConvergedRun::quantities().size() + 1 &&
        reported == " probe_top_peak_von_mises";
 
   ok = part_three(numbers, header, rows, summary) && ok;
+
+  // (4) A number that cannot converge within the 16-fold limit: a
+  // bottom-face stress away from the load converges at first order
+  // through the thickness (11.7 %, 5.9 % per doubling); refused after its
+  // second change, naming the direction, the number and a tolerance that
+  // can be reached.
+  std::string message;
+  fgimpact_tests::remove_output("out");
+  try
+    {
+      fgimpact_tests::run_quietly(
+        "",
+        scene + "set Accuracy = converged\nset Accuracy tolerance = 0.01\n"
+                "subsection Output\n set Probe points = quarter: 0.25a, "
+                "0.5b, 0h\nend\n");
+    }
+  catch (const std::exception &e)
+    {
+      std::istringstream words(e.what());
+      for (std::string word; words >> word;)
+        message += word + ' ';
+    }
+  const bool refused =
+    message.find("cannot be reached (through the thickness): "
+                 "probe_quarter_peak_von_mises changed by") !=
+      std::string::npos &&
+    message.find("raise Accuracy tolerance to at least") != std::string::npos;
+  std::printf("(4) a first-order probe at 1 %%: refused before the limit, "
+              "naming the direction, the number and a tolerance: %s\n",
+              refused ? "yes" : "NO");
+  ok = ok && refused;
   std::printf("%s\n", ok ? "all checks passed" : "FAILED");
   return ok ? 0 : 1;
 }

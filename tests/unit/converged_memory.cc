@@ -180,7 +180,7 @@ main(int argc, char *argv[])
            "and RLIMIT_AS",
            has(message, "Accuracy tolerance = 0.010 %") &&
              has(message, "not reached by level 5") &&
-             has(message, "level 6 does not fit (raise Accuracy tolerance)") &&
+             has(message, "level 6 on 40x20x4 does not fit (raise Accuracy tolerance)") &&
              has(message, "RLIMIT_AS"));
   ok &= report("(2) level 5's summary.txt complete, no level 6 directory",
                level5_summary.count("wall_time_s") == 1 &&

@@ -35,15 +35,33 @@ namespace fgimpact
    *     unless on the contact surface: quantities_of()).  A next level
    *     that does not fit the memory stops the run with one line naming
    *     the tolerance and the memory.
-   *  2. The finest level at half the time step, with the user's outputs,
-   *     into Output/Directory: the run whose files the user reads.
-   *  3. convergence.csv (one row per run) and, appended to summary.txt,
-   *     for each quantity its relative error estimate: from the levels,
-   *     Richardson with the observed order p where the last three values
-   *     are monotone with changes that shrink with p >= min_order
-   *     (error |d2| / (2^p - 1)), otherwise the last change |d2|; plus
-   *     the time step's, |q(dt/2) - q(dt)| / 3 (Richardson for the
-   *     second-order Newmark rule); and which method gave it.
+   *  2. The base mesh, at the finest level: Geometry/Subdivisions x and
+   *     y doubled (into convergence/base_NXxNYxNZ_level_L), and doubled
+   *     again while a number changes by the tolerance or more (the finer
+   *     mesh then becomes the base); then Subdivisions z the same way;
+   *     then the contact levels again on that base, one more while a
+   *     number changes by the tolerance or more.
+   *     The contact levels refine only near the ball: the plate's bending
+   *     and its waves are resolved by the base mesh (default scene: the
+   *     mid-plane deflection 2 % low on 40 x 20 x 4, which no contact
+   *     level changes).
+   *  3. The last level and base mesh before the last refinement of each
+   *     chain (each changed by less than the tolerance) at half the time
+   *     step, with the user's outputs, into Output/Directory: the run
+   *     whose files the user reads.
+   *  4. convergence.csv (one row per run) and, appended to summary.txt,
+   *     for each quantity its relative error estimate, the sum of one per
+   *     source, each from that source's own refinement:
+   *     - contact levels (on the final base), in plane, through the
+   *       thickness: the final run is the coarser of its chain's last
+   *       pair, so its error is bounded by their difference plus the
+   *       finer one's error (coarser_error()), Richardson with the
+   *       observed order p where the last three values are monotone with
+   *       changes that shrink with p >= min_order (|d2| / (2^p - 1)),
+   *       otherwise the last change |d2| (refinement_error()); with two
+   *       values twice their difference (first order);
+   *     - time step: |q(dt/2) - q(dt)| / 3 (Richardson for the
+   *       second-order Newmark rule).
    */
   class ConvergedRun
   {
@@ -73,10 +91,18 @@ namespace fgimpact
     std::vector<Quantity>
     quantities_of(const ImpactResults &r) const;
 
+    /// A base mesh: Geometry/Subdivisions x and y times in_plane,
+    /// Subdivisions z times thickness.
+    struct BaseMesh
+    {
+      unsigned int in_plane = 1, thickness = 1;
+    };
+
     /// One run of the sequence.
     struct Level
     {
-      unsigned int  levels    = 0;
+      unsigned int  levels = 0;
+      BaseMesh      base;
       double        time_step = 0; // s
       ImpactResults results;
       double        wall_time = 0; // s, set-up and run
@@ -118,6 +144,21 @@ namespace fgimpact
     static std::pair<double, std::string>
     estimate(const std::vector<double> &at_levels, const double at_half_step);
 
+    /// The error (absolute) of the last of values at successive
+    /// refinements (each halving the element size), and how it was made:
+    /// Richardson with the observed order, or the last change.
+    static std::pair<double, std::string>
+    refinement_error(const std::vector<double> &values);
+
+    /// The error (absolute) of the second-to-last of values at successive
+    /// refinements: its difference from the last plus the last's error.
+    static double
+    coarser_error(const std::vector<double> &values);
+
+    /// "0.123 %": a relative number as the log prints it.
+    static std::string
+    percent(const double relative);
+
     /// The least observed order Richardson extrapolates with.
     static constexpr double min_order = 0.5;
 
@@ -125,11 +166,43 @@ namespace fgimpact
     /// The parameters of a level run (final: the user's outputs into
     /// Output/Directory at half the time step).
     Parameters
-    parameters_of(const unsigned int levels, const bool final) const;
+    parameters_of(const unsigned int levels,
+                  const bool         final,
+                  const BaseMesh    &base) const;
 
-    /// run() without the translation of a signal's message.
+    /// "NXxNYxNZ": the subdivisions of a base mesh.
+    std::string
+    mesh_name(const BaseMesh &base) const;
+
+    /// Set up and run level `levels` on `base` (not the final run).
+    Level
+    run_level(const unsigned int levels, const BaseMesh &base);
+
+    /// Steps 2 and 3, one direction: from `start`, the runs refined by
+    /// `finer` (a base direction doubled, or one contact level more) until
+    /// a refinement changes every steering number by less than the
+    /// tolerance; `start` first.  The final run is the second-to-last's.
+    std::vector<Level>
+    refine(const Level                        &start,
+           const std::string                  &name,
+           const std::function<void(Level &)> &finer);
+
+    /// run() without the translation of a signal's message: the three
+    /// steps below.
     void
     run_sequence();
+
+    /// Step 1: the contact levels on the input's mesh.
+    void
+    run_input_levels();
+
+    /// Step 2: the base mesh's chains, and the contact levels on it.
+    void
+    refine_base_mesh();
+
+    /// Step 3: the final run, and the outputs.
+    void
+    run_final();
 
     /// Run `simulator` (set up) with its directory prepared; its row.
     Level
@@ -146,9 +219,32 @@ namespace fgimpact
     std::pair<double, std::string>
     largest_change() const;
 
-    /// Stop with one line if level `levels` does not fit the memory.
+    /// After a base-mesh chain's run: stop with one line if a number's
+    /// changes, extrapolated with their observed order, need more
+    /// doublings than `room` (a factor) allows.
     void
-    check_fits(const unsigned int levels) const;
+    refuse_unreachable(const std::vector<Level> &chain,
+                       const std::string        &name,
+                       const unsigned int        room) const;
+
+    /// The largest relative change of a steering quantity from a to b.
+    std::pair<double, std::string>
+    largest_change(const ImpactResults &a, const ImpactResults &b) const;
+
+    /// Stop with one line if level `levels` on `base` does not fit the
+    /// memory; `reached`: what was not reached, for the message.
+    void
+    check_fits(const unsigned int levels,
+               const BaseMesh    &base,
+               const std::string &reached) const;
+
+    /// The error estimates of each quantity in summary.txt and the log.
+    void
+    write_estimates(SummaryWriter &out, const Level &final_run) const;
+
+    /// convergence.csv: every run, the final one last.
+    void
+    write_csv(const Level &final_run) const;
 
     void
     write_outputs(const Level &final_run);
@@ -160,11 +256,16 @@ namespace fgimpact
     ConditionalOStream                            pcout;
     unsigned int                                  first_levels = 0;
     /// The contact refinement levels of the run under way.
-    unsigned int               running_levels   = 0;
+    unsigned int               running_levels = 0;
+    std::string                running_mesh;
     double                     first_setup_time = 0; // s
     std::unique_ptr<Simulator> first;
     std::vector<Level>         sequence;
-    ImpactResults              final_results;
+    /// Steps 2 and 3: each direction's chain (its start first).
+    std::vector<Level> in_plane_chain, thickness_chain, contact_chain;
+    /// Every run of steps 2 and 3, in order (for convergence.csv).
+    std::vector<Level> refinement_runs;
+    ImpactResults      final_results;
     /// The final run's summary.txt, to which the estimates are appended.
     SummaryEntries summary_entries;
     bool           final_started = false;

@@ -1,0 +1,285 @@
+// Accuracy = converged, its report: the error estimate of each number,
+// one per discretization source, in summary.txt and the log, and
+// convergence.csv (ConvergedRun's runs are in converged_run.cc).
+
+#include <fgimpact/app/run_control.h>
+#include <fgimpact/study/converged_run.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+namespace fgimpact
+{
+  std::string
+  ConvergedRun::percent(const double relative)
+  {
+    char text[40];
+    std::snprintf(text, sizeof(text), "%.3f %%", 100. * relative);
+    return text;
+  }
+
+
+
+  std::pair<double, std::string>
+  ConvergedRun::refinement_error(const std::vector<double> &q)
+  {
+    const std::size_t k   = q.size() - 1;
+    const double      d2  = q[k] - q[k - 1];
+    double            e   = std::abs(d2);
+    std::string       how = "last change";
+    if (k >= 2)
+      {
+        // Richardson needs changes that shrink by a factor of 2^p with an
+        // order p of at least 1/2: below, 1/(2^p - 1) grows without bound
+        // (the default scene's mid-plane probe changed by 0.0130 and
+        // 0.0129 MPa from level 5 to 7, p = 0.01, which made an estimate
+        // of 7.5 % out of changes of 0.08 %) and the sequence shows no
+        // order to extrapolate with: the last change, and the order said.
+        const double d1 = q[k - 1] - q[k - 2];
+        if (d1 * d2 > 0 && std::abs(d2) < std::abs(d1))
+          {
+            const double p = std::log2(std::abs(d1 / d2));
+            char         text[60];
+            if (p >= min_order)
+              {
+                e = std::abs(d2) / (std::pow(2., p) - 1.);
+                std::snprintf(text, sizeof(text), "richardson p=%.2f", p);
+              }
+            else
+              std::snprintf(text,
+                            sizeof(text),
+                            "last change (order p=%.2f below %.1f)",
+                            p,
+                            min_order);
+            how = text;
+          }
+      }
+    return {e, how};
+  }
+
+
+
+  double
+  ConvergedRun::coarser_error(const std::vector<double> &q)
+  {
+    // |q* - q[k-1]| <= |q[k] - q[k-1]| + |q* - q[k]|.
+    return std::abs(q.back() - q[q.size() - 2]) + refinement_error(q).first;
+  }
+
+
+
+  std::pair<double, std::string>
+  ConvergedRun::estimate(const std::vector<double> &q, const double half)
+  {
+    const auto [e, how] = refinement_error(q);
+    // Newmark's average acceleration rule is second order in dt.
+    const double e_time = std::abs(half - q.back()) / 3.;
+    return {(e + e_time) / std::abs(half), how + " + dt/2"};
+  }
+
+
+
+  void
+  ConvergedRun::refuse_unreachable(const std::vector<Level> &chain,
+                                   const std::string        &name,
+                                   const unsigned int        room) const
+  {
+    // With changes shrinking by 2^p per doubling, a change c falls below
+    // the tolerance after log2(c / tolerance) / p more doublings; more than
+    // the factor of 16 allows (room: the doublings left, as a factor) and
+    // the runs before the limit are spent for nothing (the default scene's
+    // probes at 1 %: 2.7 min and 6.3 GB of the 4.5 min).
+    if (chain.size() < 3)
+      return;
+    const double       tolerance = parameters.accuracy.tolerance;
+    const unsigned int k         = chain.size() - 1;
+    for (const Quantity &q : quantities_of(chain.back().results))
+      {
+        if (!q.steers)
+          continue;
+        const double a    = q.value(chain[k - 2].results),
+                     b    = q.value(chain[k - 1].results),
+                     c    = q.value(chain[k].results);
+        const double last = std::abs(c - b) / std::abs(c);
+        if (!(last >= tolerance))
+          continue;
+        // Changes that do not shrink show no order yet (a run before the
+        // asymptotic range): no prediction, the 16-fold limit decides.
+        const double p = std::log2(std::abs(b - a) / std::abs(c - b));
+        if (!(p > 0.))
+          continue;
+        const double doublings = std::ceil(std::log2(last / tolerance) / p);
+        if (std::pow(2., doublings) <= room)
+          continue;
+        char text[300];
+        std::snprintf(text,
+                      sizeof(text),
+                      " (%s): %s changed by %s on %s with an observed order "
+                      "p = %.2f, and the tolerance needs about %.0f more "
+                      "doublings, beyond the 16-fold limit of "
+                      "Geometry/Subdivisions; raise Accuracy tolerance to "
+                      "at least %s, or leave the number out (a probe: "
+                      "Output/Probe points).",
+                      name.c_str(),
+                      q.key.c_str(),
+                      percent(last).c_str(),
+                      mesh_name(chain[k].base).c_str(),
+                      p,
+                      doublings,
+                      percent(last /
+                              std::pow(std::max(room, 1u), std::max(p, 0.)))
+                        .c_str());
+        AssertThrow(false,
+                    ExcMessage("Accuracy tolerance = " + percent(tolerance) +
+                               " cannot be reached" + text));
+      }
+  }
+
+
+
+  void
+  ConvergedRun::write_outputs(const Level &final_run)
+  {
+    SummaryWriter out;
+    for (const auto &[key, value] : summary_entries)
+      out.add_text(key, value);
+    out.add_scientific("accuracy_tolerance", parameters.accuracy.tolerance);
+    out.add_text("converged_contact_refinement_levels",
+                 std::to_string(final_run.levels));
+    out.add_text("converged_base_mesh", mesh_name(final_run.base));
+    out.add("converged_time_step_us", final_run.time_step * 1e6, 4);
+    // The runs each source's estimate is made from, as
+    // convergence.csv's rows: "NXxNYxNZ/L" each.
+    const auto runs = [this](const std::vector<Level> &chain) {
+      std::string text;
+      for (const Level &run : chain)
+        text += (text.empty() ? "" : " ") + mesh_name(run.base) + "/" +
+                std::to_string(run.levels);
+      return text;
+    };
+    out.add_text("error_estimate_runs_contact_levels", runs(contact_chain));
+    out.add_text("error_estimate_runs_base_mesh_in_plane",
+                 runs(in_plane_chain));
+    out.add_text("error_estimate_runs_base_mesh_thickness",
+                 runs(thickness_chain));
+    write_estimates(out, final_run);
+    summary.write(out);
+    write_csv(final_run);
+  }
+
+
+
+  void
+  ConvergedRun::write_estimates(SummaryWriter &out,
+                                const Level   &final_run) const
+  {
+    std::ostringstream log;
+    log << "Accuracy = converged: error estimates (contact levels + in "
+           "plane + thickness + time step)";
+    const std::vector<Quantity> all     = quantities_of(final_run.results);
+    double                      largest = 0;
+    for (const Quantity &q : all)
+      {
+        const auto values_of = [&q](const std::vector<Level> &runs) {
+          std::vector<double> values;
+          for (const Level &run : runs)
+            values.push_back(q.value(run.results));
+          return values;
+        };
+        const std::vector<double> plane = values_of(in_plane_chain),
+                                  thick = values_of(thickness_chain);
+        const double half               = q.value(final_run.results);
+        // The final run at dt/2 repeats the contact chain's second-to-last
+        // run at dt.
+        const std::vector<double> levels = values_of(contact_chain);
+        const double parts[4] = {coarser_error(levels) / std::abs(half),
+                                 coarser_error(plane) / std::abs(half),
+                                 coarser_error(thick) / std::abs(half),
+                                 std::abs(half - levels[levels.size() - 2]) /
+                                   3. / std::abs(half)};
+        const double total    = parts[0] + parts[1] + parts[2] + parts[3];
+        std::string  method =
+          "runs per chain: " + std::to_string(levels.size()) +
+          " contact levels, " + std::to_string(plane.size()) +
+          " base meshes in plane, " + std::to_string(thick.size()) +
+          " through the thickness; + dt/2";
+        if (!q.steers)
+          method += "; on the contact surface, not converged";
+        else
+          largest = std::max(largest, total);
+        out.add_scientific(q.key + "_error_estimate", total);
+        const char *sources[4] = {"contact_levels",
+                                  "base_mesh_in_plane",
+                                  "base_mesh_thickness",
+                                  "time_step"};
+        for (unsigned int s = 0; s < 4; ++s)
+          out.add_scientific(q.key + "_error_estimate_" + sources[s], parts[s]);
+        out.add_text(q.key + "_error_method", method);
+        log << (&q == &all.front() ? ": " : ", ") << q.key << ' '
+            << percent(total) << " (" << percent(parts[0]) << " + "
+            << percent(parts[1]) << " + " << percent(parts[2]) << " + "
+            << percent(parts[3]) << ")";
+      }
+    pcout << log.str() << '\n';
+    out.add_scientific("largest_error_estimate", largest);
+    if (largest > parameters.accuracy.tolerance)
+      pcout << "  WARNING: the largest error estimate, " << percent(largest)
+            << ", exceeds Accuracy tolerance = "
+            << percent(parameters.accuracy.tolerance)
+            << ": each source changed by less than the tolerance at its "
+               "last refinement, and their estimates add up to more.\n";
+  }
+
+
+
+  void
+  ConvergedRun::write_csv(const Level &final_run) const
+  {
+    const std::vector<Quantity> all = quantities_of(final_run.results);
+    std::ostringstream          csv;
+    csv << "run,contact_refinement_levels,subdivisions_x,subdivisions_y,"
+           "subdivisions_z,time_step_us,n_dofs,element_size_under_ball_mm";
+    for (const Quantity &q : all)
+      csv << ',' << q.column;
+    csv << ",wall_time_s\n";
+    // In the order run: the contact levels on the input's mesh, the base
+    // meshes and the contact levels on the final base, the final run.
+    std::vector<Level> rows = sequence;
+    rows.insert(rows.end(), refinement_runs.begin(), refinement_runs.end());
+    rows.push_back(final_run);
+    const auto &g = parameters.geometry;
+    for (std::size_t i = 0; i < rows.size(); ++i)
+      {
+        const Level &r = rows[i];
+        char         line[200];
+        std::snprintf(line,
+                      sizeof(line),
+                      "%zu,%u,%u,%u,%u,%.4f,%u,%.6f",
+                      i + 1,
+                      r.levels,
+                      g.subdivisions_x * r.base.in_plane,
+                      g.subdivisions_y * r.base.in_plane,
+                      g.subdivisions_z * r.base.thickness,
+                      r.time_step * 1e6,
+                      r.results.n_dofs,
+                      r.results.model.element_size_under_ball * 1e3);
+        csv << line;
+        for (const Quantity &q : all)
+          {
+            std::snprintf(line,
+                          sizeof(line),
+                          ",%.10g",
+                          q.scale * q.value(r.results));
+            csv << line;
+          }
+        std::snprintf(line, sizeof(line), ",%.3f\n", r.wall_time);
+        csv << line;
+      }
+    run_on_root(communicator, [&]() {
+      write_file_atomically(parameters.output.directory + "/convergence.csv",
+                            csv.str());
+    });
+  }
+} // namespace fgimpact
