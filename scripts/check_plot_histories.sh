@@ -113,6 +113,40 @@ PY
 check "force_approach's data: history.csv's approach and force, summary's max_approach_um" \
   figure_data_matches "$work/plastic" "$work/plastic_svg"
 
+# The stacked energies (issue 41) read back: each area's height is its
+# history.csv column (the plastic work the top one), the stack's top is
+# energy_total_J, the balance error is the total minus its first value;
+# to the CSV's 9 decimals (5 rounded terms: 3e-9 J).
+energy_data_matches() { # RUN_DIR FIGURE_DIR
+  "$python" - "$1" "$2" <<'PY'
+import csv, sys
+run, fig = sys.argv[1], sys.argv[2]
+h = list(csv.DictReader(open(run + "/history.csv", newline="")))
+curves = {}
+for r in csv.DictReader(open(fig + "/energy.data.csv", newline="")):
+    curves.setdefault(r["curve"], []).append(float(r["y"]))
+order = [("impactor", "energy_impactor_J"), ("plate kinetic", "energy_plate_kinetic_J"),
+         ("strain", "energy_strain_J"), ("contact", "energy_contact_J"),
+         ("plastic work", "energy_plastic_J")]
+worst, below = 0.0, [0.0] * len(h)
+ok = all(len(curves.get("stack: " + w, [])) == len(h) for w, _ in order)
+for what, name in order if ok else []:
+    top = curves["stack: " + what]
+    worst = max(worst, max(abs(a - b - float(r[name])) for a, b, r in zip(top, below, h)))
+    below = top
+total = [float(r["energy_total_J"]) for r in h]
+if ok:
+    worst = max(worst, max(abs(a - b) for a, b in zip(below, total)))
+    worst = max(worst, max(abs(a - (b - total[0]))
+                           for a, b in zip(curves["balance error"], total)))
+print("  energy: %d rows, 5 stacked areas, total and balance error; largest "
+      "difference %.1e J (bound 3e-9)" % (len(h), worst))
+sys.exit(0 if ok and worst <= 3e-9 else 1)
+PY
+}
+check "energy's data: the stacked areas are history.csv's energies, the top the total" \
+  energy_data_matches "$work/plastic" "$work/plastic_svg"
+
 # scripts/plot_convergence.py on a small Accuracy = converged run (hertz
 # midplane, 10 x 6 x 2, no probes: the mid-plane probe under its point
 # force does not converge in plane; about 9 s with the base mesh's runs).

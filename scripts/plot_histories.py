@@ -26,9 +26,12 @@ Writes into DIR (created if missing), EXT = the --format:
   top_deflection.EXT       w at (a/2, b/2, h) (um) vs t (us)      Fig. 4b
   sigma_yy.EXT             sigma_yy at the mid-plane centre (MPa)  Fig. 5a
   sigma_zz.EXT             sigma_zz at the mid-plane centre (MPa)  Fig. 5b
-  energy.EXT               impactor, plate kinetic, strain, contact and
-                           total energy (J) vs t (us), and the plastic
-                           work when history.csv has energy_plastic_J
+  energy.EXT               impactor, plate kinetic, strain, contact energy
+                           and the plastic work (when history.csv has
+                           energy_plastic_J) vs t (us): for one run stacked
+                           areas whose top is the total, with the balance
+                           error (total - initial) on a second axis; for
+                           several runs lines
   force_approach.EXT       contact force F (N) vs the measured approach
                            (um): the ball's displacement minus the
                            mid-plane's deflection under it (history.csv's
@@ -353,8 +356,55 @@ OPTIONAL_ENERGIES = {"energy_plastic_J"}
 LINESTYLES = ["-", "--", ":", "-."]
 
 
+def plot_energy_stacked(out, title, run, history, options):
+    """One run: the energies as stacked areas, as Abaqus draws ALLKE, ALLSE,
+    ALLPD and ETOTAL (the ball's and the plate's kinetic energy, the strain
+    energy, the contact's and the plastic work, bottom to top; their top
+    is energy_total_J), and on a second axis the balance error, the total
+    minus its first value (J). Each area's upper edge is drawn as a curve
+    named "stack: ..." (what --data writes)."""
+    label, run_dir = run
+    t = history["t_us"]
+    fig, ax = plt.subplots(figsize=(7.5, 4.8))
+    below = [0.0] * len(t)
+    for c, (name, what) in enumerate(ENERGIES):
+        if name == "energy_total_J" or (name in OPTIONAL_ENERGIES
+                                        and name not in history):
+            continue
+        above = [b + e for b, e in zip(below, column(history, name, run_dir))]
+        ax.fill_between(t, below, above, color="C%d" % c, alpha=0.55,
+                        linewidth=0, label=what)
+        ax.plot(t, above, color="C%d" % c, linewidth=0.6,
+                label="stack: " + what)
+        below = above
+    total = column(history, "energy_total_J", run_dir)
+    ax.plot(t, total, color="k", linestyle="--", linewidth=1.0,
+            label="total (energy_total_J)")
+    style_axes(ax, "Energies, stacked: %s" % label if not title
+               else "%s\nEnergies, stacked: %s" % (title, label),
+               TIME_LABEL, "Energy (J)")
+    set_time_axis(ax, [history], options["window"])
+    handles, labels = ax.get_legend_handles_labels()
+    keep = [(h, l) for h, l in zip(handles, labels)
+            if not l.startswith("stack: ")]
+    error_ax = ax.twinx()
+    error_ax.plot(t, [e - total[0] for e in total], color="C7",
+                  linewidth=0.9, label="balance error")
+    error_ax.set_ylabel("Balance error: total - initial (J)", color="C7")
+    error_ax.tick_params(axis="y", labelcolor="C7")
+    h2, l2 = error_ax.get_legend_handles_labels()
+    # Below the axes: the areas fill the plot.
+    ax.legend([h for h, _ in keep] + h2, [l for _, l in keep] + l2,
+              loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=4,
+              fontsize="x-small", frameon=False)
+    return save(fig, out, "energy", options)
+
+
 def plot_energy(out, title, runs, histories, options):
-    """Colours: the energy; line styles: the run."""
+    """One run: stacked areas (plot_energy_stacked). Several: lines;
+    colours the energy, line styles the run."""
+    if len(runs) == 1:
+        return plot_energy_stacked(out, title, runs[0], histories[0], options)
     fig, ax = plt.subplots(figsize=(7.5, 4.8))
     for k, ((label, run_dir), history) in enumerate(zip(runs, histories)):
         for c, (name, what) in enumerate(ENERGIES):
