@@ -505,6 +505,16 @@ namespace fgimpact
                 [](const R &r) { return r.plastic.first_yield_force; },
                 W),
               number(
+                "first_yield_hertz_force_N",
+                3,
+                [](const R &r) { return r.plastic.first_yield_hertz_force; },
+                W),
+              number(
+                "first_yield_contact_radius_elements",
+                3,
+                [](const R &r) { return r.plastic.first_yield_resolution; },
+                W),
+              number(
                 "coefficient_of_restitution",
                 6,
                 [](const R &r) { return r.plastic.restitution; },

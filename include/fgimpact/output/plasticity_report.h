@@ -61,18 +61,25 @@ namespace fgimpact
     finish(const ImpactorState &ball) override;
 
   private:
+    /// After the run: Hertz's first yield, and the computed one given as
+    /// none (with a warning) where the mesh cannot resolve it.
+    void
+    judge_first_yield();
+
     /// The locally owned z DoFs of the top face's vertices on the line
     /// y = y_c, x <= x_c within the radius, with their distance (m).
     std::vector<std::pair<types::global_dof_index, double>> line;
     /// Their last deflections W = -u_z (m).
-    std::vector<double> line_deflection;
-    const Point<3>      impact_point;
-    const double        top;
-    const MPI_Comm      mpi_communicator;
-    double              W_mid = 0; // m, the last step's
-    const PlasticPlate &plasticity;
-    ImpactResults      &results;
-    const double        whole, V0;
+    std::vector<double>               line_deflection;
+    const Point<3>                    impact_point;
+    const double                      top;
+    const MPI_Comm                    mpi_communicator;
+    double                            W_mid = 0; // m, the last step's
+    const PlasticPlate               &plasticity;
+    ImpactResults                    &results;
+    const double                      whole, V0;
+    const double                      R; // m, the ball's radius
+    const FunctionallyGradedMaterial &material;
     /// The last step's trial ratio, time (s) and whole contact force (N).
     double last_ratio = 0, last_time = 0, last_force = 0;
     double indentation = 0; // m, W_top - W_mid of the last step

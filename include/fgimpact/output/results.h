@@ -120,7 +120,14 @@ namespace fgimpact
       double max_plastic_strain  = 0; // equivalent plastic strain
       double first_yield_time  = std::numeric_limits<double>::quiet_NaN(); // s
       double first_yield_force = std::numeric_limits<double>::quiet_NaN(); // N
-      double restitution       = std::numeric_limits<double>::quiet_NaN();
+      /// Hertz's first yield on a half-space of the top face: the force
+      /// (N) at which the largest von Mises stress under the ball reaches
+      /// the top's yield strength, and its contact radius over the element
+      /// size under the ball (below 4 the computed first yield is
+      /// unresolved, and first_yield_* are NaN).
+      double first_yield_hertz_force = std::numeric_limits<double>::quiet_NaN();
+      double first_yield_resolution  = std::numeric_limits<double>::quiet_NaN();
+      double restitution             = std::numeric_limits<double>::quiet_NaN();
       /// The plate's iterations per step: mean and largest.
       double       mean_iterations = 0;
       unsigned int max_iterations  = 0;

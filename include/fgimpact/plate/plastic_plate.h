@@ -57,6 +57,13 @@ namespace fgimpact
   public:
     PlasticPlate(const PlateModel &plate, const GradedStrength &strength);
 
+    /// The graded strengths the plate yields with.
+    const GradedStrength &
+    get_strength() const
+    {
+      return strength;
+    }
+
     /// Start an increment (a time step or a load step): the relaxation
     /// starts afresh from the committed plastic force.
     void
