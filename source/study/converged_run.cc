@@ -373,6 +373,27 @@ namespace fgimpact
         pcout << "Accuracy = converged: level " << levels
               << ", largest change from level " << levels - 1 << ": "
               << percent(now) << " (" << now_key << ")\n";
+        // A tolerance out of reach, refused before the levels it needs
+        // (issue 40: 1e-6 ran 9 levels for 600 s): beyond the last level,
+        // or the memory of the level it needs.
+        const Needed needed = refinements_needed(sequence);
+        if (needed.more > 0.)
+          {
+            const unsigned int target = levels + needed.more;
+            const std::string  reached =
+              "Accuracy tolerance = " + percent(tolerance) +
+              " cannot be reached: " +
+              needed.describe("from level " + std::to_string(levels - 1) +
+                              " to " + std::to_string(levels)) +
+              " (level " + std::to_string(target) + ")";
+            AssertThrow(target <= max_levels,
+                        ExcMessage(reached +
+                                   ", beyond the last of Geometry/Contact "
+                                   "refinement levels, " +
+                                   std::to_string(max_levels) +
+                                   "; raise Accuracy tolerance."));
+            check_fits(target, BaseMesh(), reached);
+          }
       }
   }
 

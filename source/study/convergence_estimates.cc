@@ -15,8 +15,13 @@ namespace fgimpact
   std::string
   ConvergedRun::percent(const double relative)
   {
+    // Three decimals (0.010 %), two digits below them (1e-6: 0.0001 %).
     char text[40];
-    std::snprintf(text, sizeof(text), "%.3f %%", 100. * relative);
+    std::snprintf(text,
+                  sizeof(text),
+                  std::abs(relative) < 5e-6 && relative != 0. ? "%.2g %%" :
+                                                               "%.3f %%",
+                  100. * relative);
     return text;
   }
 
@@ -81,18 +86,16 @@ namespace fgimpact
 
 
 
-  void
-  ConvergedRun::refuse_unreachable(const std::vector<Level> &chain,
-                                   const std::string        &name,
-                                   const unsigned int        room) const
+  ConvergedRun::Needed
+  ConvergedRun::refinements_needed(const std::vector<Level> &chain) const
   {
-    // With changes shrinking by 2^p per doubling, a change c falls below
-    // the tolerance after log2(c / tolerance) / p more doublings; more than
-    // the factor of 16 allows (room: the doublings left, as a factor) and
-    // the runs before the limit are spent for nothing (the default scene's
-    // probes at 1 %: 2.7 min and 6.3 GB of the 4.5 min).
+    // With changes shrinking by 2^p per refinement, a change c falls below
+    // the tolerance after log2(c / tolerance) / p more.  Changes that do
+    // not shrink show no order yet (runs before the asymptotic range): no
+    // prediction.
+    Needed needed;
     if (chain.size() < 3)
-      return;
+      return needed;
     const double       tolerance = parameters.accuracy.tolerance;
     const unsigned int k         = chain.size() - 1;
     for (const Quantity &q : quantities_of(chain.back().results))
@@ -103,38 +106,58 @@ namespace fgimpact
                      b    = q.value(chain[k - 1].results),
                      c    = q.value(chain[k].results);
         const double last = std::abs(c - b) / std::abs(c);
-        if (!(last >= tolerance))
+        const double p    = std::log2(std::abs(b - a) / std::abs(c - b));
+        if (!(last >= tolerance) || !(p > 0.))
           continue;
-        // Changes that do not shrink show no order yet (a run before the
-        // asymptotic range): no prediction, the 16-fold limit decides.
-        const double p = std::log2(std::abs(b - a) / std::abs(c - b));
-        if (!(p > 0.))
-          continue;
-        const double doublings = std::ceil(std::log2(last / tolerance) / p);
-        if (std::pow(2., doublings) <= room)
-          continue;
-        char text[300];
-        std::snprintf(text,
-                      sizeof(text),
-                      " (%s): %s changed by %s on %s with an observed order "
-                      "p = %.2f, and the tolerance needs about %.0f more "
-                      "doublings, beyond the 16-fold limit of "
-                      "Geometry/Subdivisions; raise Accuracy tolerance to "
-                      "at least %s, or leave the number out (a probe: "
-                      "Output/Probe points).",
-                      name.c_str(),
-                      q.key.c_str(),
-                      percent(last).c_str(),
-                      mesh_name(chain[k].base).c_str(),
-                      p,
-                      doublings,
-                      percent(last /
-                              std::pow(std::max(room, 1u), std::max(p, 0.)))
-                        .c_str());
-        AssertThrow(false,
-                    ExcMessage("Accuracy tolerance = " + percent(tolerance) +
-                               " cannot be reached" + text));
+        const double more = std::ceil(std::log2(last / tolerance) / p);
+        if (more > needed.more)
+          needed = {more, q.key, last, p};
       }
+    return needed;
+  }
+
+
+
+  std::string
+  ConvergedRun::Needed::describe(const std::string &where) const
+  {
+    char text[300];
+    std::snprintf(text,
+                  sizeof(text),
+                  "%s changed by %s %s with an observed order p = %.2f, and "
+                  "the tolerance needs about %.0f more refinements",
+                  key.c_str(),
+                  percent(last).c_str(),
+                  where.c_str(),
+                  p,
+                  more);
+    return text;
+  }
+
+
+
+  void
+  ConvergedRun::refuse_unreachable(const std::vector<Level> &chain,
+                                   const std::string        &name,
+                                   const unsigned int        room) const
+  {
+    // More doublings than the factor of 16 allows (room: the doublings
+    // left, as a factor): the runs before the limit are spent for nothing
+    // (the default scene's probes at 1 %: 2.7 min and 6.3 GB of the 4.5
+    // min).
+    const Needed needed = refinements_needed(chain);
+    if (needed.more == 0. || std::pow(2., needed.more) <= room)
+      return;
+    AssertThrow(
+      false,
+      ExcMessage(
+        "Accuracy tolerance = " + percent(parameters.accuracy.tolerance) +
+        " cannot be reached (" + name +
+        "): " + needed.describe("on " + mesh_name(chain.back().base)) +
+        ", beyond the 16-fold limit of Geometry/Subdivisions; raise "
+        "Accuracy tolerance to at least " +
+        percent(needed.last / std::pow(std::max(room, 1u), needed.p)) +
+        ", or leave the number out (a probe: Output/Probe points)."));
   }
 
 

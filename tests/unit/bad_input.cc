@@ -363,6 +363,13 @@ namespace
        "subsection Time integration\n set End time = 40e-6\nend\n",
        2,
        "Time integration/End time"},
+      // Issue 40: 1e-6 ran 9 levels for 600 s; refused after 3 levels
+      // (7 s) from their observed order.
+      {"Accuracy tolerance = 1e-6, out of reach of the contact levels",
+       "set Accuracy = converged\nset Accuracy tolerance = 1e-6\n"
+       "subsection Contact\n set Model = resolved sphere\nend\n",
+       2,
+       "cannot be reached"},
       {"End time neither auto nor a number",
        "subsection Time integration\n set End time = later\nend\n",
        1,

@@ -219,6 +219,21 @@ namespace fgimpact
     std::pair<double, std::string>
     largest_change() const;
 
+    /// The refinements a chain's steering numbers still need, from their
+    /// last two changes and the observed order: the most of them.
+    struct Needed
+    {
+      double      more = 0; // refinements
+      std::string key;
+      double      last = 0, p = 0; // the last relative change, the order
+      /// "KEY changed by C WHERE with an observed order p = P, and the
+      /// tolerance needs about N more refinements".
+      std::string
+      describe(const std::string &where) const;
+    };
+    Needed
+    refinements_needed(const std::vector<Level> &chain) const;
+
     /// After a base-mesh chain's run: stop with one line if a number's
     /// changes, extrapolated with their observed order, need more
     /// doublings than `room` (a factor) allows.
