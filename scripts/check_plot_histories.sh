@@ -113,6 +113,59 @@ PY
 check "force_approach's data: history.csv's approach and force, summary's max_approach_um" \
   figure_data_matches "$work/plastic" "$work/plastic_svg"
 
+# Every other figure's data read back (issue 41: a column renamed in the
+# program breaks this, not a user's report): the six time histories are
+# history.csv's columns against t_us, the probes' panels probes.csv's
+# (u_z, sigma_xx, sigma_zz of each probe, the support reaction), the
+# departure velocity summary.txt's against parameters.prm's V0; exactly
+# (the same decimal numbers read twice).
+$plot --out "$work/data" --format svg --data --departure "$work/run" >/dev/null
+every_figure_matches() { # RUN_DIR FIGURE_DIR
+  "$python" - "$1" "$2" <<'PY'
+import csv, os, sys
+run, fig = sys.argv[1], sys.argv[2]
+def table(path):
+    return list(csv.DictReader(open(path, newline="")))
+def curves(name):
+    out = {}
+    for r in table(os.path.join(fig, name + ".data.csv")):
+        out.setdefault((int(r["axes"]), r["curve"]), []).append(
+            (float(r["x"]), float(r["y"])))
+    return out
+label = os.path.basename(run)
+h, p = table(run + "/history.csv"), table(run + "/probes.csv")
+checked, ok = 0, True
+for name, col in (("contact_force", "contact_force_N"),
+                  ("impactor_velocity", "impactor_velocity_m_s"),
+                  ("midplane_deflection", "midplane_deflection_um"),
+                  ("top_deflection", "top_deflection_um"),
+                  ("sigma_yy", "sigma_yy_mid_MPa"), ("sigma_zz", "sigma_zz_mid_MPa")):
+    want = [(float(r["t_us"]), float(r[col])) for r in h]
+    ok = ok and curves(name).get((0, label)) == want
+    checked += 1
+probes = curves("probes")
+names = [k[:-len("_uz_um")] for k in p[0] if k.endswith("_uz_um")]
+for axes, ending in ((0, "_uz_um"), (1, "_sigma_xx_MPa"), (2, "_sigma_zz_MPa")):
+    for n in names:
+        want = [(float(r["t_us"]), float(r[n + ending])) for r in p]
+        ok = ok and probes.get((axes, n)) == want
+        checked += 1
+want = [(float(r["t_us"]), float(r["support_reaction_z_N"])) for r in p]
+ok = ok and probes.get((3, "reaction")) == want
+s = dict(l.rstrip("\n").split(" = ", 1) for l in open(run + "/summary.txt")
+         if " = " in l and not l.startswith("#"))
+v0 = [float(l.split("=")[1]) for l in open(run + "/parameters.prm")
+      if l.strip().startswith("set Initial velocity")]
+dep = curves("departure_velocity").get((0, "departure velocity"))
+ok = ok and len(v0) == 1 and dep == [(v0[0], float(s["departure_velocity_m_s"]))]
+print("  %d time-history and probe curves, the reaction and the departure "
+      "velocity: equal to the CSVs: %s" % (checked, "yes" if ok else "NO"))
+sys.exit(0 if ok else 1)
+PY
+}
+check "every figure's data: history.csv, probes.csv, summary.txt" \
+  every_figure_matches "$work/run" "$work/data"
+
 # The stacked energies (issue 41) read back: each area's height is its
 # history.csv column (the plastic work the top one), the stack's top is
 # energy_total_J, the balance error is the total minus its first value;

@@ -15,8 +15,9 @@ run directory that follows it; without it the label is the directory's
 basename. --format picks the file type (default png); --time-window T0 T1
 (in us, T0 < T1) restricts every time axis and the force-approach
 curves to T0 <= t <= T1. --data writes beside each figure NAME.EXT the
-curves it draws, NAME.data.csv (columns figure,curve,x,y: one row per
-plotted point, in the figure's units), for re-plotting elsewhere. Exit code 0, or 2 with one error line for a bad
+curves it draws, NAME.data.csv (columns figure,axes,curve,x,y: one row
+per plotted point, in the figure's units; axes numbers the panels and a
+second y axis), for re-plotting elsewhere. Exit code 0, or 2 with one error line for a bad
 command line or a missing/malformed file.
 
 Writes into DIR (created if missing), EXT = the --format:
@@ -309,14 +310,14 @@ def save(fig, out, name, options):
         data = os.path.join(out, "%s.data.csv" % name)
         with open(data, "w", newline="") as f:
             writer = csv.writer(f, lineterminator="\n")
-            writer.writerow(["figure", "curve", "x", "y"])
-            for ax in fig.axes:
+            writer.writerow(["figure", "axes", "curve", "x", "y"])
+            for k, ax in enumerate(fig.axes):
                 for line in ax.get_lines():
                     curve = line.get_label()
                     if curve.startswith("_"):  # guides, not data
                         continue
                     for x, y in zip(line.get_xdata(), line.get_ydata()):
-                        writer.writerow([name, curve, repr(float(x)),
+                        writer.writerow([name, k, curve, repr(float(x)),
                                          repr(float(y))])
         written.append(data)
     plt.close(fig)
