@@ -279,23 +279,6 @@ namespace fgimpact
 
 
 
-  void
-  Simulator::take_plate_of(Simulator &other)
-  {
-    Assert(!plate && !driver, ExcMessage("take_plate_of() before setup()"));
-    other.driver.reset(); // it refers to the plate
-    geometry          = std::move(other.geometry);
-    material          = std::move(other.material);
-    scene             = std::move(other.scene);
-    plate             = std::move(other.plate);
-    resource_estimate = other.resource_estimate;
-    pcout << "fgimpact: the plate of the run before ("
-          << plate->n_active_cells() << " cells, " << plate->n_dofs()
-          << " DoFs) taken over\n";
-  }
-
-
-
   const PlateModel &
   Simulator::setup_plate()
   {

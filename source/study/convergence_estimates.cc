@@ -20,7 +20,7 @@ namespace fgimpact
     std::snprintf(text,
                   sizeof(text),
                   std::abs(relative) < 5e-6 && relative != 0. ? "%.2g %%" :
-                                                               "%.3f %%",
+                                                                "%.3f %%",
                   100. * relative);
     return text;
   }
@@ -71,17 +71,6 @@ namespace fgimpact
   {
     // |q* - q[k-1]| <= |q[k] - q[k-1]| + |q* - q[k]|.
     return std::abs(q.back() - q[q.size() - 2]) + refinement_error(q).first;
-  }
-
-
-
-  std::pair<double, std::string>
-  ConvergedRun::estimate(const std::vector<double> &q, const double half)
-  {
-    const auto [e, how] = refinement_error(q);
-    // Newmark's average acceleration rule is second order in dt.
-    const double e_time = std::abs(half - q.back()) / 3.;
-    return {(e + e_time) / std::abs(half), how + " + dt/2"};
   }
 
 

@@ -66,17 +66,6 @@ namespace fgimpact
     const PlateModel &
     setup_plate();
 
-    /**
-     * Take over the plate of `other` (geometry, material, scene, mesh and
-     * matrices: the set-up that does not depend on the time step), whose
-     * parameters differ from these in the time step and the outputs only:
-     * Accuracy = converged's final run, its last level at half the time
-     * step.  `other` keeps no driver.  Before setup(), which then builds
-     * the driver alone.
-     */
-    void
-    take_plate_of(Simulator &other);
-
     /// Run (calling setup() if not done) and write the outputs into the
     /// output directory, which must exist.
     void

@@ -138,12 +138,6 @@ namespace fgimpact
       return final_started;
     }
 
-    /// The estimate of one quantity (relative) and how it was made, from
-    /// the values at successive levels (same time step) and at half the
-    /// time step on the finest level.
-    static std::pair<double, std::string>
-    estimate(const std::vector<double> &at_levels, const double at_half_step);
-
     /// The error (absolute) of the last of values at successive
     /// refinements (each halving the element size), and how it was made:
     /// Richardson with the observed order, or the last change.
