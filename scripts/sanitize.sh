@@ -36,7 +36,7 @@ tests="^(unit/($unit)|run/.*)\$"
 # a loaded machine (it timed out there once).
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DFGIMPACT_SANITIZE=ON \
   -DTEST_PICKUP_REGEX="$tests" -DTEST_TIME_LIMIT=1800
-cmake --build build-sanitize -j2 --target fgimpact
+cmake --build build-sanitize -j2 --target fgimpact fgimpact_unit_tests
 # fast_unwind_on_malloc=0: full (DWARF) stacks for every allocation, so
 # that a leak inside an Open MPI component (dlopen-ed and unloaded again
 # before LeakSanitizer reports, so "<unknown module>" with the fast

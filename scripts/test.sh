@@ -4,11 +4,13 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/fgimpact_lib.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
-cmake --build build -j2 --target fgimpact
+# fgimpact_unit_tests: every unit test's body, built once before ctest
+# (its tests would otherwise race to build it; tests/unit/CMakeLists.txt).
+cmake --build build -j2 --target fgimpact fgimpact_unit_tests
 # The 2-rank tests: mpirun as root (CI runs as root), oversubscribed (they
 # may share the machine's cores with other tests), without ssh.
 allow_local_mpirun
-# deal.II's test macros build each test when ctest runs it.
+# deal.II's test macros build each test's launcher when ctest runs it.
 (cd build && ctest -j2 --output-on-failure)
 # The plotting script (skips the drawing without matplotlib, as in CI).
 scripts/check_plot_histories.sh build

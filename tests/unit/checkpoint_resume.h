@@ -3,6 +3,9 @@
 // kill it with SIGKILL at a pseudo-random step, resume it, and compare its
 // history.csv and summary.txt with an uninterrupted run's.
 
+#ifndef fgimpact_tests_checkpoint_resume_h
+#define fgimpact_tests_checkpoint_resume_h
+
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -329,3 +332,5 @@ namespace checkpoint_test
     return ok;
   }
 } // namespace checkpoint_test
+
+#endif

@@ -12,43 +12,47 @@
 
 #include "checkpoint_resume.h"
 
-using namespace checkpoint_test;
-
-int
-main()
+namespace fgimpact_unit_tests::checkpoint_resume_mpi
 {
-  Lcg               random{4242};
-  bool              ok = true;
-  const std::string small_plate =
-    "subsection Geometry\n set Subdivisions x = 20\n set Subdivisions y = "
-    "10\n set Subdivisions z = 2\n"
-    // The whole plate (as these runs' timing assumes: a SIGTERM must find
-    // the run still going).
-    " set Symmetry = none\nend\n";
 
-  ok =
-    kill_and_resume(
-      "hertz_node_mpi",
-      small_plate + "subsection Time integration\n set End time = 150e-6\nend\n"
-                    "subsection Linear solver\n set Type = klu\nend\n"
-                    "subsection Output\n set Checkpoint interval = 15\nend\n",
-      2,
-      random.kill_point(70)) &&
-    ok;
+  using namespace checkpoint_test;
 
-  ok = kill_and_resume(
-         "resolved_sphere_mpi",
-         small_plate +
-           "subsection Geometry\n set Contact refinement levels = 1\nend\n"
-           "subsection Contact\n set Model = resolved sphere\n set "
-           "Candidate radius = 0.0006\nend\n"
-           "subsection Time integration\n set End time = 100e-6\nend\n"
-           "subsection Linear solver\n set Type = klu\nend\n"
-           "subsection Output\n set Checkpoint interval = 10\nend\n",
-         2,
-         random.kill_point(40)) &&
-       ok;
+  int
+  test_main(int, char **)
+  {
+    Lcg               random{4242};
+    bool              ok = true;
+    const std::string small_plate =
+      "subsection Geometry\n set Subdivisions x = 20\n set Subdivisions y = "
+      "10\n set Subdivisions z = 2\n"
+      // The whole plate (as these runs' timing assumes: a SIGTERM must find
+      // the run still going).
+      " set Symmetry = none\nend\n";
 
-  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
-  return ok ? 0 : 1;
-}
+    ok = kill_and_resume(
+           "hertz_node_mpi",
+           small_plate +
+             "subsection Time integration\n set End time = 150e-6\nend\n"
+             "subsection Linear solver\n set Type = klu\nend\n"
+             "subsection Output\n set Checkpoint interval = 15\nend\n",
+           2,
+           random.kill_point(70)) &&
+         ok;
+
+    ok = kill_and_resume(
+           "resolved_sphere_mpi",
+           small_plate +
+             "subsection Geometry\n set Contact refinement levels = 1\nend\n"
+             "subsection Contact\n set Model = resolved sphere\n set "
+             "Candidate radius = 0.0006\nend\n"
+             "subsection Time integration\n set End time = 100e-6\nend\n"
+             "subsection Linear solver\n set Type = klu\nend\n"
+             "subsection Output\n set Checkpoint interval = 10\nend\n",
+           2,
+           random.kill_point(40)) &&
+         ok;
+
+    std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+    return ok ? 0 : 1;
+  }
+} // namespace fgimpact_unit_tests::checkpoint_resume_mpi

@@ -29,151 +29,158 @@
 #include <cstdio>
 #include <memory>
 
-using namespace dealii;
-using namespace fgimpact;
-
-namespace
+namespace fgimpact_unit_tests::plastic_indentation
 {
-  const double E = 70e9, nu = 0.3, R = 0.015, delta = 100e-6;
-  const double E_star = E / (1 - nu * nu);
 
-  /// The indentation to delta with yield strength Y (Pa; 0: elastic, the
-  /// plain static solve).
-  StaticAnalysis::Results
-  indent(const double       Y,
-         const unsigned int degree = 1,
-         const unsigned int levels = 5)
+  using namespace dealii;
+  using namespace fgimpact;
+
+  namespace
   {
-    PlateGeometry::Parameters gp;
-    gp.length         = 0.04;
-    gp.width          = 0.04;
-    gp.thickness      = 0.02;
-    gp.subdivisions_x = 8;
-    gp.subdivisions_y = 8;
-    gp.subdivisions_z = 4;
-    gp.supports       = {{SideSupport::free,
-                          SideSupport::free,
-                          SideSupport::free,
-                          SideSupport::free}};
-    gp.bottom_support = SideSupport::clamped;
-    FunctionallyGradedMaterial::Parameters mp;
-    mp.metal_youngs_modulus = E;
-    mp.poissons_ratio       = nu;
-    mp.power_law_index      = 0; // pure metal
-    const PlateGeometry              geometry(gp, {{true, true}});
-    const FunctionallyGradedMaterial material(mp, gp.thickness);
-    PlateModel::Parameters           fe;
-    fe.degree = degree;
-    PlateModel      plate(fe, geometry, material, MPI_COMM_WORLD);
-    LocalRefinement refinement;
-    refinement.centre = Point<3>(gp.length / 2, gp.width / 2, gp.thickness);
-    refinement.radius = 1.5 * std::sqrt(R * delta);
-    refinement.levels = levels;
-    plate.setup(refinement);
+    const double E = 70e9, nu = 0.3, R = 0.015, delta = 100e-6;
+    const double E_star = E / (1 - nu * nu);
 
-    StaticAnalysis::Parameters sp;
-    sp.load        = StaticAnalysis::Load::sphere;
-    sp.indentation = delta;
-    sp.load_steps  = 20;
-    SphereIndenter indenter;
-    indenter.radius = R;
-    StaticAnalysis             analysis(sp,
-                            EffectiveMatrixSolver::Parameters(),
-                            plate,
-                            Point<2>(gp.length / 2, gp.width / 2),
-                            indenter);
-    GradedStrength::Parameters strength_parameters;
-    strength_parameters.plasticity           = GradedStrength::Plasticity::j2;
-    strength_parameters.metal_yield_strength = Y;
-    strength_parameters.metal_hardening_modulus = 0;
-    const GradedStrength          strength(strength_parameters, material);
-    std::unique_ptr<PlasticPlate> plasticity;
-    if (Y > 0)
-      {
-        plasticity = std::make_unique<PlasticPlate>(plate, strength);
-        analysis.set_plasticity(*plasticity, 1e-3);
-      }
-    analysis.solve();
-    return analysis.get_results();
-  }
-} // namespace
-
-int
-main(int argc, char *argv[])
-{
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  bool                             ok = true;
-
-  // 1. First yield, Q1 at level 5 and Q2 at level 4.
-  for (const unsigned int degree : {1u, 2u})
+    /// The indentation to delta with yield strength Y (Pa; 0: elastic, the
+    /// plain static solve).
+    StaticAnalysis::Results
+    indent(const double       Y,
+           const unsigned int degree = 1,
+           const unsigned int levels = 5)
     {
-      const double Y = 2e9;
-      const auto   r = indent(Y, degree, 6 - degree);
-      const double F = r.plastic.first_yield_force;
-      const double p0 =
-        std::cbrt(6 * F * E_star * E_star / (std::pow(numbers::PI, 3) * R * R));
-      const double ratio = p0 / Y;
-      const double hertz = 1. / hertz_stress_peaks(nu).von_mises;
-      const double error = ratio / hertz - 1;
-      std::printf("first yield, Q%u: force %.1f N, p0 = %.4f Y (Hertz with the "
-                  "largest von Mises stress %.4f p0: p0 = %.4f Y; Johnson "
-                  "1.60 Y), error %+.2f %% (limit 2 %%)\n",
-                  degree,
-                  F,
-                  ratio,
-                  1. / hertz,
-                  hertz,
-                  100 * error);
-      ok = ok && std::abs(error) < 0.02;
+      PlateGeometry::Parameters gp;
+      gp.length         = 0.04;
+      gp.width          = 0.04;
+      gp.thickness      = 0.02;
+      gp.subdivisions_x = 8;
+      gp.subdivisions_y = 8;
+      gp.subdivisions_z = 4;
+      gp.supports       = {{SideSupport::free,
+                            SideSupport::free,
+                            SideSupport::free,
+                            SideSupport::free}};
+      gp.bottom_support = SideSupport::clamped;
+      FunctionallyGradedMaterial::Parameters mp;
+      mp.metal_youngs_modulus = E;
+      mp.poissons_ratio       = nu;
+      mp.power_law_index      = 0; // pure metal
+      const PlateGeometry              geometry(gp, {{true, true}});
+      const FunctionallyGradedMaterial material(mp, gp.thickness);
+      PlateModel::Parameters           fe;
+      fe.degree = degree;
+      PlateModel      plate(fe, geometry, material, MPI_COMM_WORLD);
+      LocalRefinement refinement;
+      refinement.centre = Point<3>(gp.length / 2, gp.width / 2, gp.thickness);
+      refinement.radius = 1.5 * std::sqrt(R * delta);
+      refinement.levels = levels;
+      plate.setup(refinement);
+
+      StaticAnalysis::Parameters sp;
+      sp.load        = StaticAnalysis::Load::sphere;
+      sp.indentation = delta;
+      sp.load_steps  = 20;
+      SphereIndenter indenter;
+      indenter.radius = R;
+      StaticAnalysis             analysis(sp,
+                              EffectiveMatrixSolver::Parameters(),
+                              plate,
+                              Point<2>(gp.length / 2, gp.width / 2),
+                              indenter);
+      GradedStrength::Parameters strength_parameters;
+      strength_parameters.plasticity           = GradedStrength::Plasticity::j2;
+      strength_parameters.metal_yield_strength = Y;
+      strength_parameters.metal_hardening_modulus = 0;
+      const GradedStrength          strength(strength_parameters, material);
+      std::unique_ptr<PlasticPlate> plasticity;
+      if (Y > 0)
+        {
+          plasticity = std::make_unique<PlasticPlate>(plate, strength);
+          analysis.set_plasticity(*plasticity, 1e-3);
+        }
+      analysis.solve();
+      return analysis.get_results();
+    }
+  } // namespace
+
+  int
+  test_main(int argc, char **argv)
+  {
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    bool                             ok = true;
+
+    // 1. First yield, Q1 at level 5 and Q2 at level 4.
+    for (const unsigned int degree : {1u, 2u})
+      {
+        const double Y     = 2e9;
+        const auto   r     = indent(Y, degree, 6 - degree);
+        const double F     = r.plastic.first_yield_force;
+        const double p0    = std::cbrt(6 * F * E_star * E_star /
+                                    (std::pow(numbers::PI, 3) * R * R));
+        const double ratio = p0 / Y;
+        const double hertz = 1. / hertz_stress_peaks(nu).von_mises;
+        const double error = ratio / hertz - 1;
+        std::printf(
+          "first yield, Q%u: force %.1f N, p0 = %.4f Y (Hertz with the "
+          "largest von Mises stress %.4f p0: p0 = %.4f Y; Johnson "
+          "1.60 Y), error %+.2f %% (limit 2 %%)\n",
+          degree,
+          F,
+          ratio,
+          1. / hertz,
+          hertz,
+          100 * error);
+        ok = ok && std::abs(error) < 0.02;
+      }
+
+    // 2. The fully plastic mean pressure.
+    {
+      const double Y   = 100e6;
+      const auto   r   = indent(Y);
+      double       sum = 0;
+      unsigned int n   = 0;
+      for (unsigned int k = 0; k < 20; ++k) // the loading steps
+        {
+          const double F = r.plastic.curve[k][1], a = r.plastic.curve[k][2];
+          if (E_star * a / (Y * R) >= 60)
+            {
+              sum += F / (numbers::PI * a * a) / Y;
+              ++n;
+            }
+        }
+      const double mean = sum / n;
+      std::printf("fully plastic: mean pressure F/(pi a^2) = %.3f Y over %u "
+                  "load steps with E* a/(Y R) >= 60 (Tabor 2.8-3.0 Y); "
+                  "crater %.2f um after unloading, plastic work %.5f J, "
+                  "largest equivalent plastic strain %.4f\n",
+                  mean,
+                  n,
+                  r.plastic.permanent_indentation * 1e6,
+                  r.plastic.dissipation,
+                  r.plastic.max_plastic_strain);
+      ok = ok && n >= 5 && mean >= 2.8 && mean <= 3.0;
+      // Unloaded, the plate keeps a crater and has done plastic work.
+      ok =
+        ok && r.plastic.permanent_indentation > 0 && r.plastic.dissipation > 0;
     }
 
-  // 2. The fully plastic mean pressure.
-  {
-    const double Y   = 100e6;
-    const auto   r   = indent(Y);
-    double       sum = 0;
-    unsigned int n   = 0;
-    for (unsigned int k = 0; k < 20; ++k) // the loading steps
-      {
-        const double F = r.plastic.curve[k][1], a = r.plastic.curve[k][2];
-        if (E_star * a / (Y * R) >= 60)
-          {
-            sum += F / (numbers::PI * a * a) / Y;
-            ++n;
-          }
-      }
-    const double mean = sum / n;
-    std::printf("fully plastic: mean pressure F/(pi a^2) = %.3f Y over %u "
-                "load steps with E* a/(Y R) >= 60 (Tabor 2.8-3.0 Y); "
-                "crater %.2f um after unloading, plastic work %.5f J, "
-                "largest equivalent plastic strain %.4f\n",
-                mean,
-                n,
-                r.plastic.permanent_indentation * 1e6,
-                r.plastic.dissipation,
-                r.plastic.max_plastic_strain);
-    ok = ok && n >= 5 && mean >= 2.8 && mean <= 3.0;
-    // Unloaded, the plate keeps a crater and has done plastic work.
-    ok = ok && r.plastic.permanent_indentation > 0 && r.plastic.dissipation > 0;
-  }
+    // 3. The elastic limit of the plastic path.
+    {
+      const auto   elastic = indent(0);
+      const auto   stiff   = indent(1e12);
+      const double error =
+        std::abs(stiff.contact_force / elastic.contact_force - 1);
+      // The forces to 1e-6 relative and the difference as a verdict: the
+      // solves' round-off (the CPU's) must not reach the printed digits.
+      std::printf("yield strength 1e12 Pa: force %.2f N, elastic solve "
+                  "%.2f N, difference below 1e-9: %s; first yield %s\n",
+                  stiff.contact_force,
+                  elastic.contact_force,
+                  error < 1e-9 ? "yes" : "NO",
+                  std::isnan(stiff.plastic.first_yield_force) ? "none" :
+                                                                "FOUND");
+      ok = ok && error < 1e-9 && std::isnan(stiff.plastic.first_yield_force);
+    }
 
-  // 3. The elastic limit of the plastic path.
-  {
-    const auto   elastic = indent(0);
-    const auto   stiff   = indent(1e12);
-    const double error =
-      std::abs(stiff.contact_force / elastic.contact_force - 1);
-    // The forces to 1e-6 relative and the difference as a verdict: the
-    // solves' round-off (the CPU's) must not reach the printed digits.
-    std::printf("yield strength 1e12 Pa: force %.2f N, elastic solve "
-                "%.2f N, difference below 1e-9: %s; first yield %s\n",
-                stiff.contact_force,
-                elastic.contact_force,
-                error < 1e-9 ? "yes" : "NO",
-                std::isnan(stiff.plastic.first_yield_force) ? "none" : "FOUND");
-    ok = ok && error < 1e-9 && std::isnan(stiff.plastic.first_yield_force);
+    std::printf("%s\n", ok ? "all checks passed" : "CHECK FAILED");
+    return ok ? 0 : 1;
   }
-
-  std::printf("%s\n", ok ? "all checks passed" : "CHECK FAILED");
-  return ok ? 0 : 1;
-}
+} // namespace fgimpact_unit_tests::plastic_indentation

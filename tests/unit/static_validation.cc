@@ -17,81 +17,86 @@
 #include <exact/plate_exact.h>
 #include <test_tools.h>
 
-using namespace fgimpact;
-
-namespace
+namespace fgimpact_unit_tests::static_validation
 {
-  const bool verbose = std::getenv("FGIMPACT_VERBOSE") != nullptr;
 
-  /// FE mid-plane centre deflection (m, downward) for q0 = 1 MPa.
-  double
-  fe_deflection(const double       n,
-                const unsigned int degree,
-                const unsigned int nx,
-                const unsigned int ny,
-                const unsigned int nz,
-                const PropertyMode mode = PropertyMode::graded)
+  using namespace fgimpact;
+
+  namespace
   {
-    const auto  c     = fgimpact_tests::make_plate(nx, ny, nz, degree, n, mode);
-    const auto &plate = *c.plate;
-    StaticAnalysis::Parameters        sp;
-    EffectiveMatrixSolver::Parameters lp;
-    lp.type = "cholmod";
-    StaticAnalysis analysis(sp, lp, plate, Point<2>(0.1, 0.05));
-    analysis.solve();
-    return analysis.get_results().deflection[1];
-  }
-} // namespace
+    const bool verbose = std::getenv("FGIMPACT_VERBOSE") != nullptr;
 
-int
-main(int argc, char **argv)
-{
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  bool                             ok = true;
-
-  for (const double n : {0., 1.})
+    /// FE mid-plane centre deflection (m, downward) for q0 = 1 MPa.
+    double
+    fe_deflection(const double       n,
+                  const unsigned int degree,
+                  const unsigned int nx,
+                  const unsigned int ny,
+                  const unsigned int nz,
+                  const PropertyMode mode = PropertyMode::graded)
     {
-      // n = 0 is pure metal: the homogeneous plate.
-      const fgimpact_exact::Plate exact_plate =
-        fgimpact_exact::power_law_plate(n);
-      const double exact =
-        -fgimpact_exact::static_sinusoidal(exact_plate, 1e6, 1, 1).W(0.01);
-      std::printf("%s plate, exact mid-plane deflection %.4f um\n",
-                  n == 0 ? "homogeneous (n = 0)" : "graded n = 1",
-                  exact * 1e6);
-
-      double       previous = 0;
-      double       order    = 0;
-      unsigned int level    = 0;
-      for (const unsigned int k : {1u, 2u, 4u})
-        {
-          const double error =
-            std::abs(fe_deflection(n, 1, 10 * k, 5 * k, 2 * k) / exact - 1);
-          if (level > 0)
-            order = std::log2(previous / error);
-          if (verbose)
-            std::fprintf(stderr,
-                         "  Q1 %ux%ux%u: error %.3e order %.3f\n",
-                         10 * k,
-                         5 * k,
-                         2 * k,
-                         error,
-                         order);
-          previous = error;
-          ++level;
-        }
-      const bool order_ok = std::abs(order - 2.) < 0.2;
-      std::printf("  Q1 observed order of convergence 2 +- 0.2: %s\n",
-                  order_ok ? "yes" : "NO");
-
-      const double q2_error =
-        std::abs(fe_deflection(n, 2, 20, 10, 4) / exact - 1);
-      if (verbose)
-        std::fprintf(stderr, "  Q2 20x10x4: error %.3e\n", q2_error);
-      const bool q2_ok = q2_error < 5e-3;
-      std::printf("  Q2 20 x 10 x 4 within 0.5 %%: %s\n", q2_ok ? "yes" : "NO");
-      ok = ok && order_ok && q2_ok;
+      const auto  c = fgimpact_tests::make_plate(nx, ny, nz, degree, n, mode);
+      const auto &plate = *c.plate;
+      StaticAnalysis::Parameters        sp;
+      EffectiveMatrixSolver::Parameters lp;
+      lp.type = "cholmod";
+      StaticAnalysis analysis(sp, lp, plate, Point<2>(0.1, 0.05));
+      analysis.solve();
+      return analysis.get_results().deflection[1];
     }
-  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
-  return ok ? 0 : 1;
-}
+  } // namespace
+
+  int
+  test_main(int argc, char **argv)
+  {
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    bool                             ok = true;
+
+    for (const double n : {0., 1.})
+      {
+        // n = 0 is pure metal: the homogeneous plate.
+        const fgimpact_exact::Plate exact_plate =
+          fgimpact_exact::power_law_plate(n);
+        const double exact =
+          -fgimpact_exact::static_sinusoidal(exact_plate, 1e6, 1, 1).W(0.01);
+        std::printf("%s plate, exact mid-plane deflection %.4f um\n",
+                    n == 0 ? "homogeneous (n = 0)" : "graded n = 1",
+                    exact * 1e6);
+
+        double       previous = 0;
+        double       order    = 0;
+        unsigned int level    = 0;
+        for (const unsigned int k : {1u, 2u, 4u})
+          {
+            const double error =
+              std::abs(fe_deflection(n, 1, 10 * k, 5 * k, 2 * k) / exact - 1);
+            if (level > 0)
+              order = std::log2(previous / error);
+            if (verbose)
+              std::fprintf(stderr,
+                           "  Q1 %ux%ux%u: error %.3e order %.3f\n",
+                           10 * k,
+                           5 * k,
+                           2 * k,
+                           error,
+                           order);
+            previous = error;
+            ++level;
+          }
+        const bool order_ok = std::abs(order - 2.) < 0.2;
+        std::printf("  Q1 observed order of convergence 2 +- 0.2: %s\n",
+                    order_ok ? "yes" : "NO");
+
+        const double q2_error =
+          std::abs(fe_deflection(n, 2, 20, 10, 4) / exact - 1);
+        if (verbose)
+          std::fprintf(stderr, "  Q2 20x10x4: error %.3e\n", q2_error);
+        const bool q2_ok = q2_error < 5e-3;
+        std::printf("  Q2 20 x 10 x 4 within 0.5 %%: %s\n",
+                    q2_ok ? "yes" : "NO");
+        ok = ok && order_ok && q2_ok;
+      }
+    std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+    return ok ? 0 : 1;
+  }
+} // namespace fgimpact_unit_tests::static_validation

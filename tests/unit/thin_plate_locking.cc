@@ -16,68 +16,72 @@
 #include <exact/plate_exact.h>
 #include <test_tools.h>
 
-using namespace fgimpact;
-
-namespace
+namespace fgimpact_unit_tests::thin_plate_locking
 {
-  const double h = 0.002;
 
-  double
-  error(const double       exact,
-        const unsigned int degree,
-        const unsigned int nx,
-        const unsigned int ny,
-        const unsigned int nz)
+  using namespace fgimpact;
+
+  namespace
   {
-    const auto c = fgimpact_tests::make_plate(
-      nx, ny, nz, degree, 0., PropertyMode::graded, h);
-    const auto                       &plate = *c.plate;
-    EffectiveMatrixSolver::Parameters lp;
-    lp.type = "cholmod";
-    StaticAnalysis analysis(StaticAnalysis::Parameters(),
-                            lp,
-                            plate,
-                            Point<2>(0.1, 0.05));
-    analysis.solve();
-    const double e = analysis.get_results().deflection[1] / exact - 1;
-    if (std::getenv("FGIMPACT_VERBOSE"))
-      std::fprintf(stderr,
-                   "Q%u %ux%ux%u (%u DoFs): error %+.4e\n",
-                   degree,
-                   nx,
-                   ny,
-                   nz,
-                   plate.n_dofs(),
-                   e);
-    return e;
+    const double h = 0.002;
+
+    double
+    error(const double       exact,
+          const unsigned int degree,
+          const unsigned int nx,
+          const unsigned int ny,
+          const unsigned int nz)
+    {
+      const auto c = fgimpact_tests::make_plate(
+        nx, ny, nz, degree, 0., PropertyMode::graded, h);
+      const auto                       &plate = *c.plate;
+      EffectiveMatrixSolver::Parameters lp;
+      lp.type = "cholmod";
+      StaticAnalysis analysis(StaticAnalysis::Parameters(),
+                              lp,
+                              plate,
+                              Point<2>(0.1, 0.05));
+      analysis.solve();
+      const double e = analysis.get_results().deflection[1] / exact - 1;
+      if (std::getenv("FGIMPACT_VERBOSE"))
+        std::fprintf(stderr,
+                     "Q%u %ux%ux%u (%u DoFs): error %+.4e\n",
+                     degree,
+                     nx,
+                     ny,
+                     nz,
+                     plate.n_dofs(),
+                     e);
+      return e;
+    }
+  } // namespace
+
+  int
+  test_main(int argc, char **argv)
+  {
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    const double                     exact =
+      -fgimpact_exact::static_sinusoidal(
+         fgimpact_exact::homogeneous_plate(70e9, 2707., 0.3, 0.2, 0.1, h),
+         1e6,
+         1,
+         1)
+         .W(h / 2);
+
+    bool ok     = true;
+    auto report = [&](const char *what, const bool pass) {
+      std::printf("%s: %s\n", what, pass ? "yes" : "NO");
+      ok = ok && pass;
+    };
+    report("Q1, 20 x 10 x 1 (elements 5x longer than thick): locks, deflection "
+           "more than 50 % too small",
+           error(exact, 1, 20, 10, 1) < -0.5);
+    report("Q1, 100 x 50 x 1 (cubic elements, 22x the DoFs): still more than "
+           "20 % too stiff",
+           error(exact, 1, 100, 50, 1) < -0.2);
+    report("Q2, 20 x 10 x 1: within 1 %",
+           std::abs(error(exact, 2, 20, 10, 1)) < 0.01);
+    std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+    return ok ? 0 : 1;
   }
-} // namespace
-
-int
-main(int argc, char **argv)
-{
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const double                     exact =
-    -fgimpact_exact::static_sinusoidal(
-       fgimpact_exact::homogeneous_plate(70e9, 2707., 0.3, 0.2, 0.1, h),
-       1e6,
-       1,
-       1)
-       .W(h / 2);
-
-  bool ok     = true;
-  auto report = [&](const char *what, const bool pass) {
-    std::printf("%s: %s\n", what, pass ? "yes" : "NO");
-    ok = ok && pass;
-  };
-  report("Q1, 20 x 10 x 1 (elements 5x longer than thick): locks, deflection "
-         "more than 50 % too small",
-         error(exact, 1, 20, 10, 1) < -0.5);
-  report("Q1, 100 x 50 x 1 (cubic elements, 22x the DoFs): still more than "
-         "20 % too stiff",
-         error(exact, 1, 100, 50, 1) < -0.2);
-  report("Q2, 20 x 10 x 1: within 1 %",
-         std::abs(error(exact, 2, 20, 10, 1)) < 0.01);
-  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
-  return ok ? 0 : 1;
-}
+} // namespace fgimpact_unit_tests::thin_plate_locking

@@ -20,119 +20,125 @@
 #include <cstdio>
 #include <test_tools.h>
 
-using namespace dealii;
-using namespace fgimpact;
-
-namespace
+namespace fgimpact_unit_tests::vtu_stress
 {
-  /// u = 1e-6 m * (x y/a b, y z^2/b h^2, sin(x/a) z/h) in m.
-  class Field : public Function<3>
+
+  using namespace dealii;
+  using namespace fgimpact;
+
+  namespace
   {
-  public:
-    Field()
-      : Function<3>(3)
-    {}
-    double
-    value(const Point<3> &p, const unsigned int c) const override
+    /// u = 1e-6 m * (x y/a b, y z^2/b h^2, sin(x/a) z/h) in m.
+    class Field : public Function<3>
     {
-      const double x = p[0] / 0.2, y = p[1] / 0.1, z = p[2] / 0.02;
-      const double v[3] = {x * y, y * z * z, std::sin(x) * z};
-      return 1e-6 * v[c];
-    }
-  };
-
-  /// The postprocessor's stress (MPa) at p, averaged over the cells that
-  /// contain p, and the number of those cells.
-  SymmetricTensor<2, 3>
-  vtu_stress(const PlateModel                    &plate,
-             const TrilinosWrappers::MPI::Vector &u_ghosted,
-             const Point<3>                      &p,
-             unsigned int                        &n_cells)
-  {
-    const StressPostprocessor postprocessor(plate);
-    SymmetricTensor<2, 3>     sum;
-    n_cells = 0;
-    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+    public:
+      Field()
+        : Function<3>(3)
+      {}
+      double
+      value(const Point<3> &p, const unsigned int c) const override
       {
-        bool inside = true;
-        for (unsigned int d = 0; d < 3; ++d)
-          inside = inside && p[d] >= cell->vertex(0)[d] - 1e-12 &&
-                   p[d] <= cell->vertex(7)[d] + 1e-12;
-        if (!inside)
-          continue;
-        const Point<3> unit = GeometryInfo<3>::project_to_unit_cell(
-          plate.get_mapping().transform_real_to_unit_cell(cell, p));
-        FEValues<3> fe_values(plate.get_mapping(),
-                              plate.get_fe(),
-                              Quadrature<3>(std::vector<Point<3>>{unit}),
-                              update_gradients | update_quadrature_points);
-        fe_values.reinit(cell);
-        DataPostprocessorInputs::Vector<3> inputs;
-        inputs.solution_gradients.resize(1, std::vector<Tensor<1, 3>>(3));
-        fe_values.get_function_gradients(u_ghosted, inputs.solution_gradients);
-        inputs.evaluation_points = {fe_values.quadrature_point(0)};
-        inputs.template set_cell<3>(cell);
-        std::vector<Vector<double>> out(1, Vector<double>(12));
-        postprocessor.evaluate_vector_field(inputs, out);
-        for (unsigned int a = 0; a < 3; ++a)
-          for (unsigned int b = a; b < 3; ++b)
-            sum[a][b] += out[0][3 * a + b];
-        ++n_cells;
+        const double x = p[0] / 0.2, y = p[1] / 0.1, z = p[2] / 0.02;
+        const double v[3] = {x * y, y * z * z, std::sin(x) * z};
+        return 1e-6 * v[c];
       }
-    return sum / static_cast<double>(n_cells);
-  }
+    };
 
-  bool
-  compare(const char *label, const PropertyMode mode, const Point<3> &p)
+    /// The postprocessor's stress (MPa) at p, averaged over the cells that
+    /// contain p, and the number of those cells.
+    SymmetricTensor<2, 3>
+    vtu_stress(const PlateModel                    &plate,
+               const TrilinosWrappers::MPI::Vector &u_ghosted,
+               const Point<3>                      &p,
+               unsigned int                        &n_cells)
+    {
+      const StressPostprocessor postprocessor(plate);
+      SymmetricTensor<2, 3>     sum;
+      n_cells = 0;
+      for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+        {
+          bool inside = true;
+          for (unsigned int d = 0; d < 3; ++d)
+            inside = inside && p[d] >= cell->vertex(0)[d] - 1e-12 &&
+                     p[d] <= cell->vertex(7)[d] + 1e-12;
+          if (!inside)
+            continue;
+          const Point<3> unit = GeometryInfo<3>::project_to_unit_cell(
+            plate.get_mapping().transform_real_to_unit_cell(cell, p));
+          FEValues<3> fe_values(plate.get_mapping(),
+                                plate.get_fe(),
+                                Quadrature<3>(std::vector<Point<3>>{unit}),
+                                update_gradients | update_quadrature_points);
+          fe_values.reinit(cell);
+          DataPostprocessorInputs::Vector<3> inputs;
+          inputs.solution_gradients.resize(1, std::vector<Tensor<1, 3>>(3));
+          fe_values.get_function_gradients(u_ghosted,
+                                           inputs.solution_gradients);
+          inputs.evaluation_points = {fe_values.quadrature_point(0)};
+          inputs.template set_cell<3>(cell);
+          std::vector<Vector<double>> out(1, Vector<double>(12));
+          postprocessor.evaluate_vector_field(inputs, out);
+          for (unsigned int a = 0; a < 3; ++a)
+            for (unsigned int b = a; b < 3; ++b)
+              sum[a][b] += out[0][3 * a + b];
+          ++n_cells;
+        }
+      return sum / static_cast<double>(n_cells);
+    }
+
+    bool
+    compare(const char *label, const PropertyMode mode, const Point<3> &p)
+    {
+      auto        c     = fgimpact_tests::make_plate(10, 6, 4, 1, 1., mode);
+      const auto &plate = *c.plate;
+      TrilinosWrappers::MPI::Vector u, u_ghosted;
+      plate.initialize_vector(u);
+      VectorTools::interpolate(plate.get_mapping(),
+                               plate.get_dof_handler(),
+                               Field(),
+                               u);
+      u_ghosted.reinit(plate.locally_owned_dofs(),
+                       plate.locally_relevant_dofs(),
+                       plate.get_mpi_communicator());
+      u_ghosted = u;
+
+      unsigned int                n_cells = 0;
+      const SymmetricTensor<2, 3> vtu =
+        vtu_stress(plate, u_ghosted, p, n_cells);
+      const SymmetricTensor<2, 3> probe =
+        PointProbe(plate, p).stress(u) * 1e-6; // MPa
+      const double error = (vtu - probe).norm() / probe.norm();
+      std::printf("%s: %u cells\n", label, n_cells);
+      for (unsigned int a = 0; a < 3; ++a)
+        std::printf("  sigma_%c%c  VTU %11.6f MPa  probe %11.6f MPa\n",
+                    "xyz"[a],
+                    "xyz"[a],
+                    vtu[a][a],
+                    probe[a][a]);
+      std::printf("  sigma_xz  VTU %11.6f MPa  probe %11.6f MPa\n",
+                  vtu[0][2],
+                  probe[0][2]);
+      const bool pass = error < 1e-12;
+      std::printf("  |VTU - probe| / |probe| below 1e-12: %s\n",
+                  pass ? "yes" : "NO");
+      return pass;
+    }
+  } // namespace
+
+  int
+  test_main(int argc, char **argv)
   {
-    auto        c     = fgimpact_tests::make_plate(10, 6, 4, 1, 1., mode);
-    const auto &plate = *c.plate;
-    TrilinosWrappers::MPI::Vector u, u_ghosted;
-    plate.initialize_vector(u);
-    VectorTools::interpolate(plate.get_mapping(),
-                             plate.get_dof_handler(),
-                             Field(),
-                             u);
-    u_ghosted.reinit(plate.locally_owned_dofs(),
-                     plate.locally_relevant_dofs(),
-                     plate.get_mpi_communicator());
-    u_ghosted = u;
-
-    unsigned int                n_cells = 0;
-    const SymmetricTensor<2, 3> vtu = vtu_stress(plate, u_ghosted, p, n_cells);
-    const SymmetricTensor<2, 3> probe =
-      PointProbe(plate, p).stress(u) * 1e-6; // MPa
-    const double error = (vtu - probe).norm() / probe.norm();
-    std::printf("%s: %u cells\n", label, n_cells);
-    for (unsigned int a = 0; a < 3; ++a)
-      std::printf("  sigma_%c%c  VTU %11.6f MPa  probe %11.6f MPa\n",
-                  "xyz"[a],
-                  "xyz"[a],
-                  vtu[a][a],
-                  probe[a][a]);
-    std::printf("  sigma_xz  VTU %11.6f MPa  probe %11.6f MPa\n",
-                vtu[0][2],
-                probe[0][2]);
-    const bool pass = error < 1e-12;
-    std::printf("  |VTU - probe| / |probe| below 1e-12: %s\n",
-                pass ? "yes" : "NO");
-    return pass;
+    Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+    bool                             ok = true;
+    // A vertex inside the plate (8 cells), graded elements (Eq. 3.3).
+    ok &= compare("graded, at a vertex",
+                  PropertyMode::graded,
+                  Point<3>(0.1, 0.05, 0.01));
+    // A point inside one cell, pointwise E(z).
+    ok &= compare("pointwise, inside a cell",
+                  PropertyMode::pointwise,
+                  Point<3>(0.0731, 0.0377, 0.0123));
+    std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
+    return ok ? 0 : 1;
   }
-} // namespace
-
-int
-main(int argc, char **argv)
-{
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  bool                             ok = true;
-  // A vertex inside the plate (8 cells), graded elements (Eq. 3.3).
-  ok &= compare("graded, at a vertex",
-                PropertyMode::graded,
-                Point<3>(0.1, 0.05, 0.01));
-  // A point inside one cell, pointwise E(z).
-  ok &= compare("pointwise, inside a cell",
-                PropertyMode::pointwise,
-                Point<3>(0.0731, 0.0377, 0.0123));
-  std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
-  return ok ? 0 : 1;
-}
+} // namespace fgimpact_unit_tests::vtu_stress
