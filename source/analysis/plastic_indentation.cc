@@ -5,12 +5,15 @@
 #include <fgimpact/analysis/static_analysis.h>
 #include <fgimpact/app/run_control.h>
 #include <fgimpact/contact/compliance.h>
+#include <fgimpact/output/validity_report.h>
 #include <fgimpact/plate/probes.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iostream>
+#include <limits>
 
 namespace fgimpact
 {
@@ -69,6 +72,7 @@ namespace fgimpact
     r.dissipation        = plastic->plastic_work() / share;
     r.max_plastic_strain = plastic->max_equivalent_plastic_strain();
     r.iterations         = plastic->n_iterations();
+    judge_first_yield(contact.contact_modulus());
     // The crater: the plate's thinning under the load point (u holds the
     // unloaded plate, constraints distributed by update()'s caller below).
     TrilinosWrappers::MPI::Vector u_distributed = u;
@@ -79,6 +83,45 @@ namespace fgimpact
                          Point<3>(load_point[0], load_point[1], 0.5 * h));
     r.permanent_indentation =
       mid.displacement(u_distributed)[2] - top.displacement(u_distributed)[2];
+  }
+
+
+
+  void
+  StaticAnalysis::judge_first_yield(const double E_star)
+  {
+    // As for an impact (PlasticityReport): first yield spans a node or two
+    // unless the mesh resolves Hertz's contact radius at first yield.
+    auto                 &r = results.plastic;
+    const double          h = plate.get_geometry().thickness();
+    const Point<3>        top(load_point[0], load_point[1], h);
+    const HertzFirstYield hertz =
+      hertz_first_yield(E_star,
+                        plastic->get_strength().yield_strength(h),
+                        plate.get_material().poissons_ratio(h),
+                        indenter.radius);
+    r.first_yield_hertz_force = hertz.force;
+    // Over the node spacing: Q2's mid-side nodes halve it.
+    r.first_yield_resolution =
+      hertz.contact_radius * plate.get_fe().degree / plate.cell_size_at(top);
+    if (r.first_yield_resolution >= first_yield_min_resolution ||
+        std::isnan(r.first_yield_force))
+      return;
+    char text[300];
+    std::snprintf(text,
+                  sizeof(text),
+                  "first yield not resolved: Hertz's contact radius at "
+                  "first yield spans %.2f node spacings (fewer than 4), so "
+                  "its computed force (%.1f N) depends on the mesh and is "
+                  "given as none; Hertz's first-yield force is %.2f N "
+                  "(first_yield_hertz_force_N)",
+                  r.first_yield_resolution,
+                  r.first_yield_force,
+                  r.first_yield_hertz_force);
+    r.warning           = text;
+    r.first_yield_force = std::numeric_limits<double>::quiet_NaN();
+    if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+      std::cout << "  WARNING: " << text << ".\n";
   }
 
 

@@ -323,6 +323,11 @@ namespace fgimpact
                     5);
             out.add("max_equivalent_plastic_strain", p.max_plastic_strain, 6);
             out.add("first_yield_contact_force_N", p.first_yield_force, 4);
+            out.add("first_yield_hertz_force_N", p.first_yield_hertz_force, 4);
+            out.add("first_yield_contact_radius_node_spacings",
+                    p.first_yield_resolution,
+                    2);
+            out.add_text("warnings", p.warning.empty() ? "none" : p.warning);
             out.add("plate_iterations", p.iterations, 0);
           }
       }

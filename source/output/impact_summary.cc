@@ -510,7 +510,7 @@ namespace fgimpact
                 [](const R &r) { return r.plastic.first_yield_hertz_force; },
                 W),
               number(
-                "first_yield_contact_radius_elements",
+                "first_yield_contact_radius_node_spacings",
                 3,
                 [](const R &r) { return r.plastic.first_yield_resolution; },
                 W),

@@ -30,6 +30,7 @@ namespace fgimpact
     , V0(V0)
     , R(radius)
     , material(plate.get_material())
+    , degree(plate.get_fe().degree)
   {
     results.plastic.modelled                    = true;
     const double                      tolerance = 1e-9 * top;
@@ -161,30 +162,27 @@ namespace fgimpact
   {
     // First yield under a ball spans a node or two: the computed force
     // depends on the mesh (default scene, levels 3-6: 115, 28.7, 14.4,
-    // 19.2 N against Hertz's 17.1 N).  Hertz on a half-space of the top
-    // face (the contact radius at first yield, about 0.13 mm, is far below
-    // the plate's thickness) gives the force, p0 = Y / (the largest von
-    // Mises stress over p0, 0.62 for nu = 0.3), F = pi^3 p0^3 R^2 / (6
-    // E*^2), and the contact radius a = pi p0 R / (2 E*) to judge the
-    // mesh by: 4 element sizes across it, as for the contact force.
-    auto        &r  = results.plastic;
-    const double E  = results.contact_modulus;
-    const double Y  = plasticity.get_strength().yield_strength(top);
-    const double nu = material.poissons_ratio(top);
-    const double p0 = Y / hertz_stress_peaks(nu).von_mises;
-    const double h  = results.model.element_size_under_ball;
+    // 19.2 N against Hertz's 17.1 N).  Hertz's first yield gives the force
+    // and the contact radius to judge the mesh by.
+    auto        &r = results.plastic;
+    const double E = results.contact_modulus;
+    const double Y = plasticity.get_strength().yield_strength(top);
+    // The node spacing: Q2's mid-side nodes halve it.
+    const double h = results.model.element_size_under_ball / degree;
     if (!(E > 0.) || !(Y > 0.) || !(h > 0.))
       return;
-    r.first_yield_hertz_force =
-      std::pow(numbers::PI * p0, 3) * R * R / (6. * E * E);
-    r.first_yield_resolution = numbers::PI * p0 * R / (2. * E) / h;
-    if (r.first_yield_resolution >= 4. || std::isnan(r.first_yield_force))
+    const HertzFirstYield hertz =
+      hertz_first_yield(E, Y, material.poissons_ratio(top), R);
+    r.first_yield_hertz_force = hertz.force;
+    r.first_yield_resolution  = hertz.contact_radius / h;
+    if (r.first_yield_resolution >= first_yield_min_resolution ||
+        std::isnan(r.first_yield_force))
       return;
     char text[300];
     std::snprintf(text,
                   sizeof(text),
                   "first yield not resolved: Hertz's contact radius at "
-                  "first yield spans %.2f element sizes (fewer than 4), so "
+                  "first yield spans %.2f node spacings (fewer than 4), so "
                   "its computed time and force (%.1f N) depend on the mesh "
                   "and are given as none; Hertz's first-yield force is "
                   "%.2f N (first_yield_hertz_force_N)",

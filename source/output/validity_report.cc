@@ -35,6 +35,19 @@ namespace fgimpact
 
 
 
+  HertzFirstYield
+  hertz_first_yield(const double E_star,
+                    const double Y,
+                    const double nu,
+                    const double R)
+  {
+    const double p0 = Y / hertz_stress_peaks(nu).von_mises;
+    return {std::pow(numbers::PI * p0, 3) * R * R / (6. * E_star * E_star),
+            numbers::PI * p0 * R / (2. * E_star)};
+  }
+
+
+
   ValidityMonitor::ValidityMonitor(const PlateModel         &plate,
                                    const ValiditySetup      &setup,
                                    ImpactResults            &results,

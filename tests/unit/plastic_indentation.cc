@@ -129,6 +129,24 @@ namespace fgimpact_unit_tests::plastic_indentation
           hertz,
           100 * error);
         ok = ok && std::abs(error) < 0.02;
+        // Hertz's first yield beside it: F = 2/3 pi a^2 p0 with p0 = Y /
+        // 0.62 and a = pi p0 R / (2 E*), and the mesh resolves a (4 element
+        // sizes or more), so the computed force stands.
+        const double p0_hertz = Y * hertz;
+        const double a        = numbers::PI * p0_hertz * R / (2 * E_star);
+        const double F_hertz  = 2. / 3. * numbers::PI * a * a * p0_hertz;
+        const double hertz_error =
+          std::abs(r.plastic.first_yield_hertz_force / F_hertz - 1);
+        std::printf("  Hertz's first-yield force %.1f N (2/3 pi a^2 p0: "
+                    "difference below 1e-12: %s), its contact radius %.3f mm "
+                    "spans %.2f node spacings (at least 4: %s)\n",
+                    r.plastic.first_yield_hertz_force,
+                    hertz_error < 1e-12 ? "yes" : "NO",
+                    a * 1e3,
+                    r.plastic.first_yield_resolution,
+                    r.plastic.first_yield_resolution >= 4 ? "yes" : "NO");
+        ok = ok && hertz_error < 1e-12 &&
+             r.plastic.first_yield_resolution >= 4 && r.plastic.warning.empty();
       }
 
     // 2. The fully plastic mean pressure.
@@ -157,6 +175,17 @@ namespace fgimpact_unit_tests::plastic_indentation
                   r.plastic.dissipation,
                   r.plastic.max_plastic_strain);
       ok = ok && n >= 5 && mean >= 2.8 && mean <= 3.0;
+      // Hertz's contact radius at first yield is 20 times smaller than at
+      // 2 GPa: unresolved, so the computed first yield is none, with the
+      // warning.
+      const bool unresolved = r.plastic.first_yield_resolution < 4 &&
+                              std::isnan(r.plastic.first_yield_force) &&
+                              !r.plastic.warning.empty();
+      std::printf("  first yield: Hertz's contact radius spans %.2f node "
+                  "spacings, the computed force none with a warning: %s\n",
+                  r.plastic.first_yield_resolution,
+                  unresolved ? "yes" : "NO");
+      ok = ok && unresolved;
       // Unloaded, the plate keeps a crater and has done plastic work.
       ok =
         ok && r.plastic.permanent_indentation > 0 && r.plastic.dissipation > 0;

@@ -151,7 +151,7 @@ namespace fgimpact_unit_tests::plastic_stress_vtu
         std::stod(plastic.at("element_size_under_ball_mm")) * 1e-3;
       const double Fs = std::stod(plastic.at("first_yield_hertz_force_N"));
       const double rs =
-        std::stod(plastic.at("first_yield_contact_radius_elements"));
+        std::stod(plastic.at("first_yield_contact_radius_node_spacings"));
       const bool first_yield_ok =
         std::abs(Fs / F - 1.) < 0.025 && std::abs(rs / (a / h) - 1.) < 0.01 &&
         rs < 4. && plastic.at("first_yield_contact_force_N") == "none" &&

@@ -106,9 +106,17 @@ namespace fgimpact
         double contact_area          = 0;
         double permanent_indentation = 0;
         double first_yield_force     = std::numeric_limits<double>::quiet_NaN();
-        double dissipation           = 0;
-        double max_plastic_strain    = 0;
-        unsigned int                       iterations = 0;
+        /// Hertz's first-yield force (N) and its contact radius over the
+        /// element size under the load (hertz_first_yield()); below
+        /// first_yield_min_resolution first_yield_force is NaN (none).
+        double first_yield_hertz_force =
+          std::numeric_limits<double>::quiet_NaN();
+        double first_yield_resolution =
+          std::numeric_limits<double>::quiet_NaN();
+        std::string                        warning;
+        double                             dissipation        = 0;
+        double                             max_plastic_strain = 0;
+        unsigned int                       iterations         = 0;
         std::vector<std::array<double, 4>> curve;
       } plastic;
     };
@@ -185,6 +193,12 @@ namespace fgimpact
                       FullMatrix<double>    &C,
                       const double           delta,
                       const unsigned int     step);
+
+    /// Hertz's first yield beside the computed one, which becomes NaN
+    /// (with a warning) where the mesh does not resolve it; E_star: Hertz's
+    /// modulus of plate and ball (Pa).
+    void
+    judge_first_yield(const double E_star);
 
     /// load_curve.csv of a plastic indentation.
     void

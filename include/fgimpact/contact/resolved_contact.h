@@ -93,6 +93,13 @@ namespace fgimpact
       return true;
     }
 
+    /// Hertz's E* of plate and ball (Pa).
+    double
+    contact_modulus() const
+    {
+      return reference_modulus;
+    }
+
     /// Not available: the explicit scheme is refused with this model.
     void
     evaluate_explicit(const Vector<double> &u_c,

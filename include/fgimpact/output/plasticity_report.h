@@ -80,6 +80,7 @@ namespace fgimpact
     const double                      whole, V0;
     const double                      R; // m, the ball's radius
     const FunctionallyGradedMaterial &material;
+    const unsigned int                degree; // of the plate's elements
     /// The last step's trial ratio, time (s) and whole contact force (N).
     double last_ratio = 0, last_time = 0, last_force = 0;
     double indentation = 0; // m, W_top - W_mid of the last step

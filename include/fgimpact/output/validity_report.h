@@ -33,6 +33,32 @@ namespace fgimpact
   HertzStressPeaks
   hertz_stress_peaks(const double nu);
 
+  /**
+   * Hertz's first yield of a sphere (radius R, m) pressed on a half-space
+   * of the top face (its yield stress Y in Pa, Poisson's ratio nu; E_star
+   * Hertz's modulus of plate and ball, Pa): p0 = Y / (the largest von
+   * Mises stress per p0, hertz_stress_peaks), the force pi^3 p0^3 R^2 /
+   * (6 E*^2) (N) and the contact radius pi p0 R / (2 E*) (m).  The contact
+   * radius at first yield is far below a plate's thickness (0.14 mm in the
+   * default scene), so the half-space stands for the plate.
+   */
+  struct HertzFirstYield
+  {
+    double force;
+    double contact_radius;
+  };
+
+  HertzFirstYield
+  hertz_first_yield(const double E_star,
+                    const double Y,
+                    const double nu,
+                    const double R);
+
+  /// Element sizes across Hertz's first-yield contact radius below which a
+  /// computed first yield depends on the mesh and is given as none (as
+  /// for the contact force: 4 element sizes across the contact).
+  constexpr double first_yield_min_resolution = 4.;
+
   /// What the validity report needs of the scene (validity_setup() in
   /// app/scene.h builds it from the parameters).
   struct ValiditySetup
