@@ -58,10 +58,20 @@ namespace fgimpact
     }
 
     /// Without a UTF-8 byte-order mark, Windows (CRLF) and old Mac (CR)
-    /// line ends made LF: the line numbers stay those of the file.
+    /// line ends made LF: the line numbers stay those of the file.  A NUL
+    /// byte is refused (`what` names the file): deal.II would cut the
+    /// value there and run with the rest ("Directory = a\0b" into "a").
     std::string
-    clean_text(const std::string &text)
+    clean_text(const std::string &text, const std::string &what)
     {
+      if (const auto nul = text.find('\0'); nul != std::string::npos)
+        AssertThrow(false,
+                    ExcMessage(what + " line " +
+                               std::to_string(1 + std::count(text.begin(),
+                                                             text.begin() + nul,
+                                                             '\n')) +
+                               " contains a NUL byte: a parameter file is "
+                               "text (a value would be cut there)."));
       const std::size_t start = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
       std::string       clean;
       clean.reserve(text.size());
@@ -274,11 +284,11 @@ namespace fgimpact
     original_text          = filename == "-" ? read_all(std::cin, what) :
                                                read_regular_file(filename, what);
     if (xml_or_json)
-      expanded_text = clean_text(original_text);
+      expanded_text = clean_text(original_text, what);
     else
       {
         std::vector<std::string> chain;
-        expand(name, clean_text(original_text), chain);
+        expand(name, clean_text(original_text, what), chain);
       }
   }
 
@@ -364,9 +374,13 @@ namespace fgimpact
         AssertThrow(chain.size() < max_include_depth,
                     ExcMessage(where + "includes nested deeper than " +
                                std::to_string(max_include_depth) + " files."));
-        const std::string included_text = read_regular_file(
-          resolved, where + "the included file '" + included.string() + "'");
-        expand(resolved.string(), clean_text(included_text), chain);
+        const std::string included_what =
+          where + "the included file '" + included.string() + "'";
+        const std::string included_text =
+          read_regular_file(resolved, included_what);
+        expand(resolved.string(),
+               clean_text(included_text, included_what),
+               chain);
       }
     chain.pop_back();
   }

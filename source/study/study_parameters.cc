@@ -112,6 +112,14 @@ namespace fgimpact
                     ExcMessage(where + path +
                                "' is listed twice (the second list would "
                                "replace the first); give it once."));
+        // Each case writes into Output/Directory/case_NNN of the study's
+        // own directory: a varied directory would be overridden silently.
+        AssertThrow(path != "Output/Directory" && path != "Study/Entries",
+                    ExcMessage(where + path +
+                               "' cannot vary in a study: each case writes "
+                               "into case_NNN of the study's Output/Directory "
+                               "(run separate studies for separate "
+                               "directories)."));
         paths.push_back(path);
         origins.push_back(study.origin(i));
         lists.push_back(

@@ -295,17 +295,39 @@ namespace fgimpact_unit_tests::command_line
               contains(err, "Study/Entries 'Impactor/Initial velocity=fast'") &&
               !fs::exists("cli_entries"));
     }
-    // A value with a NUL byte and one of 100,000 characters are not echoed
-    // as they are: the NUL as \x00, the long word shortened, one short line.
+    // A study that varied Output/Directory ran every case into the study's
+    // own case_NNN, ignoring the values.
+    {
+      const int code = run("cli_fail.prm --study 'Output/Directory=cli_d1,"
+                           "cli_d2'");
+      const std::string err = read("cli.stderr");
+      check("a study varying Output/Directory: exit 1, one line naming it, "
+            "nothing written",
+            code == 1 && n_lines(err) == 1 &&
+              contains(err, "Output/Directory' cannot vary") &&
+              !fs::exists("cli_d1") && !fs::exists("cli_d2"));
+    }
+    // A NUL byte in a parameter file is refused with its line (deal.II cut
+    // the value there: "Directory = a\0b" ran into "a"); a value of
+    // 100,000 characters is not echoed as it is: shortened, one short line.
     {
       write("cli_nul.prm",
             scene("cli_nul") + "subsection Impactor\n set Radius = 0.0" +
               std::string(1, '\0') + "1\nend\n");
       const int         code = run("cli_nul.prm");
       const std::string err  = read("cli.stderr");
-      check("a NUL byte in a value: exit 1, one line showing it as \\x00",
-            code == 1 && n_lines(err) == 1 && contains(err, "\\x00") &&
-              err.find('\0') == std::string::npos);
+      check("a NUL byte in a value: exit 1, one line naming the file's line "
+            "and the NUL byte, the byte not echoed",
+            code == 1 && n_lines(err) == 1 && contains(err, "cli_nul.prm") &&
+              contains(err, "NUL byte") && err.find('\0') == std::string::npos);
+      fs::remove_all("cli_a");
+      write("cli_nul_dir.prm", scene("cli_a" + std::string(1, '\0') + "b"));
+      const int         dir_code = run("cli_nul_dir.prm");
+      const std::string dir_err  = read("cli.stderr");
+      check("... a NUL byte in Output/Directory: exit 1, one line, no "
+            "directory cut at the NUL ('cli_a') written",
+            dir_code == 1 && n_lines(dir_err) == 1 &&
+              contains(dir_err, "NUL byte") && !fs::exists("cli_a"));
       const int long_code = run(
         "cli_base.prm -s 'Impactor/Radius=" + std::string(100000, 'x') + "'");
       const std::string long_err = read("cli.stderr");
