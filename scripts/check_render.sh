@@ -4,7 +4,9 @@
 # it lists is a PNG of the asked size that is not blank: at least 5 % of
 # its pixels differ from the corner's background colour and it has at
 # least 50 colours (a colour map on a plate), read back with VTK's PNG
-# reader in pvpython, independently of the renderer.  A bad command line
+# reader in pvpython, independently of the renderer; and that each
+# picture's colour range (colours.csv) follows the rule from the VTU data.
+# A bad command line
 # must exit 2 with one line.  Skips cleanly (exit 0, a note) without
 # pvpython (CI installs paraview, python3-paraview and xvfb).
 # Usage: scripts/check_render.sh [BUILD_DIR]
@@ -69,4 +71,64 @@ else
 fi
 sed 's/^/check_render:   /' "$work/report" | grep -v "^check_render:   $" || true
 check "every picture is not blank" test "$blank_ok" = 1
+
+# The colour rule, read back: each picture's range in colours.csv against
+# the field's range over every snapshot, read here from the VTU files with
+# VTK's own reader (not ParaView's pipeline).  sigma_*: diverging, -M to M
+# with M the largest magnitude; every other field: sequential, 0 to the
+# largest value; the animation's range equals the still's of its field.
+cat >"$work/colours.py" <<'PY'
+import csv, math, os, sys
+import xml.etree.ElementTree as ET
+import numpy
+from vtkmodules.vtkIOXML import vtkXMLPUnstructuredGridReader, vtkXMLUnstructuredGridReader
+from vtkmodules.util.numpy_support import vtk_to_numpy
+run, pictures = sys.argv[1], sys.argv[2]
+
+def run_range(pvd, field):
+    low, high = math.inf, -math.inf
+    for d in ET.parse(os.path.join(run, pvd)).getroot().iter("DataSet"):
+        path = os.path.join(run, d.get("file"))
+        reader = (vtkXMLPUnstructuredGridReader() if path.endswith(".pvtu")
+                  else vtkXMLUnstructuredGridReader())
+        reader.SetFileName(path)
+        reader.Update()
+        values = vtk_to_numpy(reader.GetOutput().GetPointData().GetArray(field))
+        if values.ndim > 1:
+            values = numpy.linalg.norm(values, axis=1)
+        low, high = min(low, values.min()), max(high, values.max())
+    return low, high
+
+bad = 0
+ranges = {}
+for row in csv.DictReader(open(os.path.join(pictures, "colours.csv"))):
+    field = row["field"]
+    pvd = "contact.pvd" if field == "contact_pressure_MPa" else "solution.pvd"
+    low, high = run_range(pvd, field)
+    lo, hi = float(row["low"]), float(row["high"])
+    close = lambda a, b: abs(a - b) <= 1e-6 * max(abs(b), 1e-30)
+    if field.startswith("sigma_"):
+        top = max(abs(low), abs(high))
+        ok = row["map"] == "diverging" and close(lo, -top) and close(hi, top)
+    else:
+        ok = row["map"] == "sequential" and lo == 0 and close(hi, high)
+    shown = float(row["shown_min"]), float(row["shown_max"])
+    ok = ok and lo - 1e-6 * abs(hi) <= shown[0] and shown[1] <= hi + 1e-6 * abs(hi)
+    ok = ok and ranges.setdefault(field, (lo, hi)) == (lo, hi)
+    print("%s, %s: %s [%.4g, %.4g]; the run's data [%.4g, %.4g]: %s"
+          % (row["picture"], field, row["map"], lo, hi, low, high,
+             "yes" if ok else "NO"))
+    bad += not ok
+sys.exit(1 if bad else 0)
+PY
+pictures=$(dirname "$(head -1 "$work/pngs")")
+if xvfb-run -a pvpython "$work/colours.py" "$work/run" "$pictures" \
+  >"$work/colour_report" 2>&1; then
+  colours_ok=1
+else
+  colours_ok=0
+fi
+sed 's/^/check_render:   /' "$work/colour_report" | grep -v "^check_render:   $" || true
+check "each picture's colours: one rule per field, its range the run's data (colours.csv against the VTU)" \
+  test "$colours_ok" = 1
 exit $failed

@@ -25,9 +25,15 @@ writes into OUTPUT_DIR/pictures (or --out):
                           section at the peak: File > Load State, choose
                           "Search files under specified directory" and this
                           OUTPUT_DIR to open it on any machine
+  colours.csv             per picture: the field, its colour map and range,
+                          and the picture's own data range
 
 Every picture has the time in us and the scene (the output directory and the
-peak force of summary.txt) in its title, and a colour bar with the unit.
+peak force of summary.txt) in its title, and a colour bar with the unit and
+the range.  One colour rule per field, stills and frames alike, linear:
+sigma_* diverging and centred on 0 (-M to M, M its largest magnitude over
+the run), every other field sequential from 0 to its largest value over the
+run.
 Exit 2 with one line on a bad command line or a directory without
 solution.pvd.
 """
@@ -176,20 +182,30 @@ def main():
     title_display.FontSize = 14
     title_display.WindowLocation = "Upper Center"
 
-    def clipped_range(source, field):
-        """The 2nd and 98th percentiles of a point field at the
-        view's time: the loaded node would otherwise take the whole colour
-        range (u ~ 1/r under a point force)."""
-        import numpy
-        from paraview import servermanager
-        from vtk.numpy_interface import dataset_adapter as dsa
-        data = dsa.WrapDataObject(servermanager.Fetch(
-            pv.MergeBlocks(Input=source)))
-        values = numpy.asarray(data.PointData[field]).ravel()
-        low, high = numpy.percentile(values, [2, 98])
-        return low, high, values.min(), values.max()
+    # One colour rule per field, for the stills and the animation alike:
+    # a signed stress (sigma_*) on a diverging map centred on 0, from -M to
+    # M with M its largest magnitude over the run; every other field (von
+    # Mises, plastic strain, contact pressure, |u|) >= 0 on a sequential
+    # map from 0 to its largest value over the run.  Linear colours; the
+    # bar states the range and the picture's own data range, and
+    # colours.csv lists them (scripts/check_render.sh reads it back).
+    def run_range(source, field, source_times):
+        component = -1 if field == "displacement_m" else 0
+        low, high = math.inf, -math.inf
+        for t in source_times:
+            source.UpdatePipeline(t)
+            r = source.PointData[field].GetRange(component)
+            low, high = min(low, r[0]), max(high, r[1])
+        return low, high
 
-    def colour(display, field, label):
+    def shown_range(source, field, t):
+        component = -1 if field == "displacement_m" else 0
+        source.UpdatePipeline(t)
+        return source.PointData[field].GetRange(component)
+
+    rows = []
+
+    def colour(display, field, label, picture, source, source_times, t):
         # One colour bar: the previous field's goes.
         for name in colour.shown:
             pv.HideScalarBarIfNotNeeded(pv.GetColorTransferFunction(name),
@@ -199,21 +215,33 @@ def main():
         colour.shown = [field]
         pv.ColorBy(display, ("POINTS", field))
         lut = pv.GetColorTransferFunction(field)
-        lut.ApplyPreset("Cool to Warm", True)
-        low, high, smallest, largest = clipped_range(display.Input, field)
-        # A positive field (von Mises) on a log scale: the contact zone's
-        # GPa and the plate's MPa both show.
-        if smallest > 0 and largest > 100 * smallest:
-            low, high = max(smallest, 1e-3 * largest), largest
-            lut.UseLogScale = 1
+        lut.UseLogScale = 0
+        smallest, largest = run_range(source, field, source_times)
+        signed = field.startswith("sigma_")
+        if signed:
+            lut.ApplyPreset("Cool to Warm", True)
+            top = max(abs(smallest), abs(largest))
+            low, high = -top, top
+            rule = "diverging, centred on 0"
+        else:
+            lut.ApplyPreset("Viridis (matplotlib)", True)
+            low, high = 0.0, largest
+            rule = "sequential from 0"
+        if high <= low:
+            high = low + 1.0
         lut.RescaleTransferFunction(low, high)
-        label = "%s\n[%.3g, %.3g] in the data" % (label, smallest, largest)
+        lut.AutomaticRescaleRangeMode = "Never"
+        here = shown_range(source, field, t)
+        label = "%s\n%s, [%.3g, %.3g] over the run\nhere [%.3g, %.3g]" % (
+            label, rule, low, high, here[0], here[1])
         display.SetScalarBarVisibility(view, True)
         bar = pv.GetScalarBar(lut, view)
         bar.Title = label
         bar.ComponentTitle = ""
         bar.TitleColor = [0, 0, 0]
         bar.LabelColor = [0, 0, 0]
+        rows.append((picture, field, "diverging" if signed else "sequential",
+                     low, high, here[0], here[1]))
 
     colour.shown = []
 
@@ -257,7 +285,7 @@ def main():
                  "plastic_strain.png")]
     for field, label, name in pictures:
         if field in fields:
-            colour(plate_display, field, label)
+            colour(plate_display, field, label, name, plate, times, t_show)
             set_title("Deformed plate (displacement x %.0f), %s" %
                       (factor, label), t_show)
             save(name)
@@ -273,7 +301,8 @@ def main():
     section_display = pv.Show(section, view)
     field = "von_mises_MPa" if "von_mises_MPa" in fields else "displacement_m"
     colour(section_display, field, "von Mises stress (MPa)"
-           if field == "von_mises_MPa" else "displacement (m)")
+           if field == "von_mises_MPa" else "displacement (m)",
+           "section.png", plate, times, t_show)
     # Zoomed on the impact point: a window of 3 thicknesses each side.
     thickness = bounds[5] - bounds[4]
     focus = [section.SliceType.Origin[0], section.SliceType.Origin[1],
@@ -297,7 +326,9 @@ def main():
         node_display = pv.Show(nodes, view)
         node_display.SetRepresentationType("Points")
         node_display.PointSize = 8
-        colour(node_display, "contact_pressure_MPa", "contact pressure (MPa)")
+        colour(node_display, "contact_pressure_MPa", "contact pressure (MPa)",
+               "contact_pressure.png", nodes,
+               pvd_times(os.path.join(directory, "contact.pvd")), t_show)
         nodes.UpdatePipeline(t_show)
         nb = nodes.GetDataInformation().GetBounds()
         centre = [0.5 * (nb[0] + nb[1]), 0.5 * (nb[2] + nb[3]), nb[5]]
@@ -315,7 +346,8 @@ def main():
     pv.Show(warp, view)
     colour(plate_display, "von_mises_MPa" if "von_mises_MPa" in fields
            else "displacement_m", "von Mises stress (MPa)"
-           if "von_mises_MPa" in fields else "displacement (m)")
+           if "von_mises_MPa" in fields else "displacement (m)",
+           "scene.pvsm and animation", plate, times, t_show)
     camera_3d()
     set_title("Deformed plate (displacement x %.0f)" % factor, t_show)
     pv.SaveState(os.path.join(out, "scene.pvsm"))
@@ -331,6 +363,10 @@ def main():
             place_ball(t)
             set_title("Deformed plate (displacement x %.0f)" % factor, t)
             save(os.path.join("animation", "frame_%04d.png" % k))
+    with open(os.path.join(out, "colours.csv"), "w") as f:
+        f.write("picture,field,map,low,high,shown_min,shown_max\n")
+        for row in rows:
+            f.write("%s,%s,%s,%.9g,%.9g,%.9g,%.9g\n" % row)
     for path in written:
         print(path)
 
