@@ -451,6 +451,9 @@ namespace fgimpact
               const SymmetricTensor<2, 3> sigma_s =
                 hooke.stress(E[q], nu[q], eps_s);
               const double JxW = fe_values.JxW(q);
+              reaction_points.push_back({cell->active_cell_index(),
+                                         quadrature.point(q),
+                                         sigma_s * JxW});
               for (unsigned int j = 0; j < dofs.size(); ++j)
                 {
                   const unsigned int c = fe.system_to_component_index(j).first;
@@ -470,6 +473,25 @@ namespace fgimpact
       vector.compress(VectorOperation::add);
     reaction_stiffness = owned_nonzeros(plate, w[0]);
     reaction_mass      = owned_nonzeros(plate, w[1]);
+  }
+
+
+
+  double
+  ProbeSet::plastic_reaction() const
+  {
+    // The internal force of a plastic plate is K u - f_p, f_p = int B^T C
+    // eps_p: its sum over the supported z DoFs is a(z_S, u) - int
+    // sigma(z_S) : eps_p.  The plastic strain at a Gauss point is the
+    // interpolant's value there (plastic_state() passes through them).
+    double sum = 0;
+    if (plastic != nullptr)
+      for (const ReactionPoint &point : reaction_points)
+        if (plastic->holds_plastic_strain(point.active_index))
+          sum -= point.weighted_stress *
+                 plastic->plastic_state(point.active_index, point.unit_point)
+                   .plastic_strain;
+    return sum;
   }
 
 
@@ -497,8 +519,9 @@ namespace fgimpact
           local[15 * p + 9 + s] = dot(weights[p][3 + s], u);
       }
     plastic_correction.add_to(u, local, 15, 9);
-    local[15 * n] =
-      dot(reaction_stiffness, u) + (lumped_mass ? 0. : dot(reaction_mass, a));
+    local[15 * n] = dot(reaction_stiffness, u) +
+                    (lumped_mass ? 0. : dot(reaction_mass, a)) +
+                    plastic_reaction();
     Utilities::MPI::sum(ArrayView<const double>(local),
                         mpi_communicator,
                         ArrayView<double>(global));

@@ -120,11 +120,13 @@ namespace fgimpact
     row(const double t, const ProbeValues &values) const;
 
     /// A plastic run: the stresses are the ones the material carries, as
-    /// the VTU's (PlasticStressCorrection).
+    /// the VTU's (PlasticStressCorrection), and the support reaction
+    /// subtracts the plastic strain's load.
     void
     set_plasticity(const PlasticPlate &plasticity)
     {
       plastic_correction.set_plasticity(plasticity);
+      plastic = &plasticity;
     }
 
     const std::vector<Point<3>> &
@@ -157,8 +159,23 @@ namespace fgimpact
     /// stress components xx, yy, zz, xy, xz, yz (Pa per m).
     std::vector<std::array<Weights, 9>> weights;
     /// The reaction's stiffness (on u) and mass (on a) parts.
-    Weights                 reaction_stiffness, reaction_mass;
+    Weights reaction_stiffness, reaction_mass;
+    /// Its plastic part, -int sigma(z_S) : eps_p dV: at each Gauss point
+    /// of a locally owned cell with supported DoFs, sigma(z_S) JxW (N/m,
+    /// i.e. Pa m^3 per unit strain).
+    struct ReactionPoint
+    {
+      unsigned int          active_index;
+      Point<3>              unit_point;
+      SymmetricTensor<2, 3> weighted_stress;
+    };
+    std::vector<ReactionPoint> reaction_points;
+    /// The plastic part of the support reaction (N; 0 without plasticity).
+    double
+    plastic_reaction() const;
+
     PlasticStressCorrection plastic_correction;
+    const PlasticPlate     *plastic = nullptr;
   };
 } // namespace fgimpact
 
