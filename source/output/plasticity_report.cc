@@ -178,17 +178,10 @@ namespace fgimpact
     if (r.first_yield_resolution >= first_yield_min_resolution ||
         std::isnan(r.first_yield_force))
       return;
-    char text[300];
-    std::snprintf(text,
-                  sizeof(text),
-                  "first yield not resolved: Hertz's contact radius at "
-                  "first yield spans %.2f node spacings (fewer than 4), so "
-                  "its computed time and force (%.1f N) depend on the mesh "
-                  "and are given as none; Hertz's first-yield force is "
-                  "%.2f N (first_yield_hertz_force_N)",
-                  r.first_yield_resolution,
-                  r.first_yield_force,
-                  r.first_yield_hertz_force);
+    const std::string text = first_yield_warning(r.first_yield_resolution,
+                                                 r.first_yield_force,
+                                                 r.first_yield_hertz_force,
+                                                 /*with_time=*/true);
     results.warnings.push_back(text);
     if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
       std::cout << "  WARNING: " << text << ".\n";

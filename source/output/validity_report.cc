@@ -35,6 +35,31 @@ namespace fgimpact
 
 
 
+  std::string
+  first_yield_warning(const double resolution,
+                      const double computed_force,
+                      const double hertz_force,
+                      const bool   with_time)
+  {
+    char text[300];
+    std::snprintf(text,
+                  sizeof(text),
+                  "first yield not resolved: Hertz's contact radius at "
+                  "first yield spans %.2f node spacings (fewer than 4), so "
+                  "%s (%.1f N) %s on the mesh and %s given as none; Hertz's "
+                  "first-yield force is %.2f N (first_yield_hertz_force_N)",
+                  resolution,
+                  with_time ? "its computed time and force" :
+                              "its computed force",
+                  computed_force,
+                  with_time ? "depend" : "depends",
+                  with_time ? "are" : "is",
+                  hertz_force);
+    return text;
+  }
+
+
+
   HertzFirstYield
   hertz_first_yield(const double E_star,
                     const double Y,

@@ -59,6 +59,15 @@ namespace fgimpact
   /// for the contact force: 4 element sizes across the contact).
   constexpr double first_yield_min_resolution = 4.;
 
+  /// The warning for a first yield that `resolution` node spacings across
+  /// Hertz's contact radius do not resolve: the computed force (N; with
+  /// its time if with_time) is given as none, Hertz's (N) stands.
+  std::string
+  first_yield_warning(const double resolution,
+                      const double computed_force,
+                      const double hertz_force,
+                      const bool   with_time);
+
   /// What the validity report needs of the scene (validity_setup() in
   /// app/scene.h builds it from the parameters).
   struct ValiditySetup
