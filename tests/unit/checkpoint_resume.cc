@@ -134,7 +134,9 @@ namespace fgimpact_unit_tests::checkpoint_resume
 
     /**
      * One writer per output directory: a run holds the directory; a second
-     * run and a resume of it exit 1 at once with one line naming the
+     * run and a resume of it, a run into a run subdirectory inside it and
+     * one into the study directory above it (issue 40: a study in out and a
+     * run in out/case_001 both ran) exit 1 at once with one line naming the
      * directory and the holder's process id, and write nothing; once the
      * holder is killed (SIGKILL: the kernel releases the lock), a new run
      * there completes.
@@ -142,8 +144,10 @@ namespace fgimpact_unit_tests::checkpoint_resume
     bool
     one_writer(const std::string &prm)
     {
-      const std::string directory = "locked";
-      fs::remove_all(directory);
+      // A study's case directory: runs into the study's directory and into
+      // one inside the case overlap it.
+      const std::string directory = "locked/case_001";
+      fs::remove_all("locked");
       {
         std::ofstream out("locked.prm");
         out << prm << "subsection Output\n set Directory = " << directory
@@ -157,25 +161,36 @@ namespace fgimpact_unit_tests::checkpoint_resume
       const std::string before = read(directory + "/history.csv");
       const std::string id     = "process id " + std::to_string(holder);
       bool              ok     = true;
-      for (const std::vector<std::string> &args :
-           {std::vector<std::string>{"locked.prm"},
-            std::vector<std::string>{"--resume", directory}})
+      // A run inside the holder's directory and one into the study's
+      // directory above it: they may clean or write each other's files.
+      const std::string inside = directory + "/convergence";
+      for (const auto &[args, what, named_directory] :
+           {std::tuple<std::vector<std::string>, std::string, std::string>{
+              {"locked.prm"}, "run", directory},
+            {{"--resume", directory}, "resume", directory},
+            {{"locked.prm", "-s", "Output/Directory=" + inside},
+             "run inside it",
+             inside},
+            {{"locked.prm", "-s", "Output/Directory=locked"},
+             "run into the directory above it",
+             "locked"}})
         {
           const int         code = run(args, 1, "second.log");
           const std::string log  = read("second.log");
-          const bool named = log.find("Output/Directory '" + directory + "'") !=
-                               std::string::npos &&
+          const bool named = log.find("Output/Directory '" + named_directory +
+                                      "'") != std::string::npos &&
                              log.find(id) != std::string::npos;
           const bool one = lines_of(log).size() == 1;
           std::printf("a second %s on a directory in use: exit code %d, one "
                       "line %s, names the directory and the holder's process "
                       "id %s\n",
-                      args[0] == "--resume" ? "resume" : "run",
+                      what.c_str(),
                       code,
                       one ? "yes" : "NO",
                       named ? "yes" : "NO");
           ok = ok && code == 1 && one && named;
         }
+      ok = ok && !fs::exists(inside);
       kill(holder, SIGKILL);
       const bool killed = wait_for(holder) == -SIGKILL;
       // What the second runs wrote: nothing (history.csv is the holder's,
