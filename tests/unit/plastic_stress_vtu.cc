@@ -139,9 +139,10 @@ namespace fgimpact_unit_tests::plastic_stress_vtu
     // 3b. First yield (issue 37, item 3): Hertz's on a half-space of the top
     // face, from Johnson's largest von Mises stress 0.62 p0 (nu = 0.3), p0 =
     // Y / 0.62, F = pi^3 p0^3 R^2 / (6 E*^2) with the summary's E*, and its
-    // contact radius pi p0 R / (2 E*) over the element size under the ball
-    // (0.3125 mm at level 3: 0.43); below 4 the computed first yield is
-    // none.  Johnson's 0.62 has 2 digits: 2.5 % in F.
+    // contact radius pi p0 R / (2 E*) over the node spacing under the ball
+    // (Q1: the element size, 0.3125 mm at level 3: 0.43); below 4 the
+    // computed first yield is none.  Johnson's 0.62 has 2 digits: 2.5 % in
+    // F.
     {
       const double E = std::stod(plastic.at("contact_modulus_Q_Pa"));
       const double R = 0.015, p0 = 275e6 / 0.62;
@@ -157,7 +158,8 @@ namespace fgimpact_unit_tests::plastic_stress_vtu
         rs < 4. && plastic.at("first_yield_contact_force_N") == "none" &&
         plastic.at("first_yield_time_us") == "none";
       std::printf("first yield: Hertz's force within 2.5 %% of Johnson's, its "
-                  "contact radius in element sizes within 1 %%, below 4 and "
+                  "contact radius in node spacings (Q1: element sizes) "
+                  "within 1 %%, below 4 and "
                   "the computed time and force none: %s\n",
                   first_yield_ok ? "yes" : "NO");
       ok = ok && first_yield_ok;
