@@ -188,6 +188,7 @@ namespace fgimpact
   void
   StaticAnalysis::write_load_curve(const std::string &file_name) const
   {
+    record_output_file(file_name);
     std::ofstream out(file_name);
     out << "indentation_um,contact_force_N,contact_radius_mm,"
            "max_plastic_strain\n";

@@ -269,6 +269,7 @@ namespace fgimpact
   void
   StaticAnalysis::write_pressure_csv(const std::string &file_name) const
   {
+    record_output_file(file_name);
     std::ofstream out(file_name);
     out << "r_mm,pressure_MPa\n";
     char line[64];

@@ -119,6 +119,8 @@ namespace fgimpact
     // A log.txt that cannot be written at the start is a start file that
     // cannot be written (exit code 2); later, a warning (Sink::check()).
     sink.filename = filename;
+    if (!append) // a resumed log is already the run's
+      record_output_file(filename);
     sink.file.open(filename, append ? std::ios::app : std::ios::out);
     sink.file << header << sink.pending << std::flush;
     sink.pending.clear();

@@ -14,6 +14,8 @@
 #include <filesystem>
 #include <functional>
 #include <map>
+#include <memory>
+#include <set>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <sys/statfs.h>
@@ -109,15 +111,39 @@ namespace fgimpact
              (name.substr(9) == ".bin" || name.substr(9) == ".bin.tmp");
     }
 
+    /// Which of the files of `directory` an earlier run of this program
+    /// wrote: the names of its manifest (record_output_file()) that have
+    /// our exact names (is_own_output(); a temporary by its final name);
+    /// without a manifest (a run of a version before it), every file with
+    /// our exact names.
+    std::function<bool(const std::string &)>
+    own_output_of(const std::filesystem::path &directory)
+    {
+      std::error_code error;
+      const bool      has_manifest =
+        std::filesystem::exists(directory / manifest_file_name, error);
+      const auto listed = std::make_shared<const std::set<std::string>>(
+        read_manifest(directory.string()));
+      return [has_manifest, listed](const std::string &name) {
+        if (!is_own_output(name))
+          return false;
+        const bool temporary =
+          name.size() > 4 && name.compare(name.size() - 4, 4, ".tmp") == 0;
+        return !has_manifest ||
+               listed->count(temporary ? name.substr(0, name.size() - 4) :
+                                         name) > 0;
+      };
+    }
+
     /**
      * Remove an earlier run's files from a subdirectory (checkpoint/: the
-     * rank files; vtu/: the VTU pieces), those `own` accepts only, then
-     * the subdirectory if that left it empty (a user's file in it stays,
-     * and so does the subdirectory).
+     * rank files; vtu/: the VTU pieces its manifest lists), those `own`
+     * accepts only, and its manifest, then the subdirectory if that left it
+     * empty (a user's file in it stays, and so does the subdirectory).
      */
     void
-    remove_own_files(const std::filesystem::path &directory,
-                     bool (*own)(const std::string &name))
+    remove_own_files(const std::filesystem::path                    &directory,
+                     const std::function<bool(const std::string &)> &own)
     {
       namespace fs = std::filesystem;
       std::error_code error;
@@ -131,6 +157,7 @@ namespace fgimpact
                                    entry.path().string() + ": " +
                                    error.message()));
           }
+      fs::remove(directory / manifest_file_name, error);
       if (fs::is_empty(directory, error))
         fs::remove(directory, error);
     }
@@ -227,17 +254,19 @@ namespace fgimpact
           const std::string name = level.path().filename().string();
           if (!level.is_directory() || !is_convergence_run(name))
             continue;
+          const auto own = own_output_of(level.path());
           for (const auto &entry : fs::directory_iterator(level.path(), error))
             {
               const std::string file = entry.path().filename().string();
               if (entry.is_directory() &&
                   (file == "vtu" || is_checkpoint_directory(file)))
                 remove_own_files(entry.path(),
-                                 file == "vtu" ? is_own_output :
+                                 file == "vtu" ? own_output_of(entry.path()) :
                                                  is_checkpoint_file);
-              else if (entry.is_regular_file() && is_own_output(file))
+              else if (entry.is_regular_file() && own(file))
                 fs::remove(entry.path(), error);
             }
+          fs::remove(level.path() / manifest_file_name, error);
           if (fs::is_empty(level.path(), error))
             fs::remove(level.path(), error);
         }
@@ -352,10 +381,12 @@ namespace fgimpact
                            "not be written: no permission or disk full)."));
 
     std::vector<fs::path> own, foreign;
+    const auto            own_output = own_output_of(directory);
     for (const auto &entry : fs::directory_iterator(directory, error))
-      if (entry.path().filename() != lock_file_name)
+      if (entry.path().filename() != lock_file_name &&
+          entry.path().filename() != manifest_file_name)
         ((entry.is_regular_file() &&
-          is_own_output(entry.path().filename().string())) ||
+          own_output(entry.path().filename().string())) ||
              (entry.is_directory() &&
               (is_checkpoint_directory(entry.path().filename().string()) ||
                entry.path().filename() == "vtu" ||
@@ -371,7 +402,8 @@ namespace fgimpact
           path.filename() != "convergence")
         for (const auto &entry : fs::directory_iterator(path, error))
           AssertThrow(entry.is_regular_file() &&
-                        is_checkpoint_file(entry.path().filename().string()),
+                        (is_checkpoint_file(entry.path().filename().string()) ||
+                         entry.path().filename() == manifest_file_name),
                       ExcMessage("Output/Directory '" + directory + "' holds " +
                                  entry.path().string() +
                                  ", which this program did not write, in the "
@@ -395,7 +427,7 @@ namespace fgimpact
         if (fs::is_directory(file))
           {
             remove_own_files(file,
-                             file.filename() == "vtu" ? is_own_output :
+                             file.filename() == "vtu" ? own_output_of(file) :
                                                         is_checkpoint_file);
             continue;
           }
@@ -405,6 +437,9 @@ namespace fgimpact
                                "run's " +
                                file.string() + ": " + error.message()));
       }
+    // This run's manifest starts empty: the files just removed were the
+    // earlier run's; a user's file with our name stays unlisted.
+    reset_manifest(directory);
   }
 
 

@@ -9,11 +9,16 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
+#include <mutex>
 #include <new>
+#include <set>
 #include <sstream>
+#include <unistd.h>
 
 namespace fgimpact
 {
@@ -370,6 +375,7 @@ namespace fgimpact
   void
   write_file_atomically(const std::string &filename, const std::string &text)
   {
+    record_output_file(filename);
     const std::string temporary = filename + ".tmp";
     bool              ok        = false;
     {
@@ -387,6 +393,98 @@ namespace fgimpact
                     ExcOutputFailure("cannot write " + filename +
                                      " (disk full or I/O error)."));
       }
+  }
+
+
+
+  namespace
+  {
+    /// The files this process has recorded (record_output_file()).
+    std::mutex &
+    manifest_mutex()
+    {
+      static std::mutex mutex;
+      return mutex;
+    }
+
+    std::set<std::string> &
+    recorded_files()
+    {
+      static std::set<std::string> files;
+      return files;
+    }
+
+    /// The directories whose manifest recorded_files() holds: a resumed
+    /// run appends only what its killed predecessor did not list.
+    std::set<std::string> &
+    loaded_manifests()
+    {
+      static std::set<std::string> directories;
+      return directories;
+    }
+  } // namespace
+
+
+
+  void
+  record_output_file(const std::string &path)
+  {
+    namespace fs        = std::filesystem;
+    const fs::path file = fs::absolute(path).lexically_normal();
+    const std::lock_guard<std::mutex> guard(manifest_mutex());
+    if (loaded_manifests().insert(file.parent_path().string()).second)
+      for (const auto &name : read_manifest(file.parent_path().string()))
+        recorded_files().insert((file.parent_path() / name).string());
+    if (!recorded_files().insert(file.string()).second)
+      return;
+    const std::string manifest =
+      (file.parent_path() / manifest_file_name).string();
+    const std::string line = file.filename().string() + "\n";
+    const int         fd =
+      ::open(manifest.c_str(),
+             O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | O_NOFOLLOW,
+             0644);
+    const bool written = fd >= 0 && ::write(fd, line.data(), line.size()) ==
+                                      static_cast<ssize_t>(line.size());
+    if (fd >= 0)
+      ::close(fd);
+    if (!written)
+      {
+        recorded_files().erase(file.string());
+        AssertThrow(false,
+                    ExcOutputFailure("cannot write " + manifest +
+                                     " (disk full or I/O error)."));
+      }
+  }
+
+
+
+  std::set<std::string>
+  read_manifest(const std::string &directory)
+  {
+    std::set<std::string> names;
+    std::ifstream         in(directory + "/" + manifest_file_name);
+    for (std::string line; std::getline(in, line);)
+      if (!line.empty())
+        names.insert(line);
+    return names;
+  }
+
+
+
+  void
+  reset_manifest(const std::string &directory)
+  {
+    namespace fs        = std::filesystem;
+    const fs::path path = fs::absolute(directory).lexically_normal();
+    const std::lock_guard<std::mutex> guard(manifest_mutex());
+    auto                             &files = recorded_files();
+    for (auto it = files.begin(); it != files.end();)
+      it =
+        fs::path(*it).parent_path() == path ? files.erase(it) : std::next(it);
+    loaded_manifests().insert(path.string()); // empty from now on
+    std::error_code error;
+    fs::remove(path / manifest_file_name, error);
   }
 
 

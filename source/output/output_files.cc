@@ -59,6 +59,7 @@ namespace fgimpact
                     ExcOutputFailure("cannot write " + filename + "."));
         return;
       }
+    record_output_file(filename);
     out.open(filename, std::ios::binary);
     AssertThrow(out, ExcOutputFailure("cannot write " + filename + "."));
     for (unsigned int i = 0; i < columns.size(); ++i)

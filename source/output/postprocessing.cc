@@ -28,6 +28,7 @@ namespace fgimpact
     write_checked(const std::string                         &filename,
                   const std::function<void(std::ostream &)> &writer)
     {
+      record_output_file(filename);
       std::ofstream out(filename);
       try
         {

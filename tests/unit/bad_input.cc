@@ -54,6 +54,7 @@ namespace fgimpact_unit_tests::bad_input
       directory_is_a_file,
       not_empty,       // Overwrite = false into a directory with a file
       stale_files,     // Overwrite = true removes an earlier run's files
+      manifest_files,  // ... only those its manifest lists
       user_checkpoint, // a user's file in Output/Directory/checkpoint/
       fifo_profile,    // profile.fifo: a FIFO with no writer
       symlink_loop,    // loop_a -> loop_b -> loop_a
@@ -95,6 +96,25 @@ namespace fgimpact_unit_tests::bad_input
               "convergence/level_9/vtu/solution_00020.0.vtu",
               "convergence/level_9/checkpoint/rank_0000.bin",
               "convergence/base_20x12x4_level_3/summary.txt"};
+    }
+
+    /// An earlier run's files that its manifests list (removed), and a
+    /// user's files with our exact names that they do not (kept).
+    std::vector<std::string>
+    listed_names()
+    {
+      return {"summary.txt",
+              "solution_99999.0.vtu",
+              "vtu/solution_00020.1.vtu"};
+    }
+
+    std::vector<std::string>
+    unlisted_names()
+    {
+      return {"solution_99998.0.vtu",
+              "contact_pressure.csv",
+              "vtu/solution_00500.0.vtu",
+              "vtu/sphere_00500.vtu"};
     }
 
     /// A user's files beside them, with near-miss names (kept).
@@ -238,6 +258,16 @@ namespace fgimpact_unit_tests::bad_input
               write(dir + "/" + name, "stale\n");
             // A user's files with near-miss names: kept.
             for (const auto &name : decoy_names())
+              write(dir + "/" + name, "mine\n");
+            break;
+          case Setup::manifest_files:
+            fs::create_directories(dir + "/vtu");
+            write(dir + "/.fgimpact.files",
+                  "summary.txt\nsolution_99999.0.vtu\nhistory.csv\n");
+            write(dir + "/vtu/.fgimpact.files", "solution_00020.1.vtu\n");
+            for (const auto &name : listed_names())
+              write(dir + "/" + name, "stale\n");
+            for (const auto &name : unlisted_names())
               write(dir + "/" + name, "mine\n");
             break;
           case Setup::symlink_loop:
@@ -691,7 +721,12 @@ namespace fgimpact_unit_tests::bad_input
          small + short_run,
          0,
          "",
-         Setup::stale_files}};
+         Setup::stale_files},
+        {"Overwrite = true removes only what the manifests list",
+         small + short_run,
+         0,
+         "",
+         Setup::manifest_files}};
     }
 
 
@@ -753,6 +788,16 @@ namespace fgimpact_unit_tests::bad_input
               // An earlier converged run's level without a user's file went.
               clean = clean && !fs::exists(dir + "/convergence/level_9") &&
                       !fs::exists(dir + "/convergence/base_20x12x4_level_3");
+            }
+          if (c.setup == Setup::manifest_files)
+            {
+              // The listed files went (summary.txt is this run's again), a
+              // user's file with our exact name stayed (issue 40: it was
+              // removed).
+              for (const auto &name : listed_names())
+                clean = clean && read(dir + "/" + name) != "stale\n";
+              for (const auto &name : unlisted_names())
+                clean = clean && read(dir + "/" + name) == "mine\n";
             }
           // Not written, and said so in summary.txt's warnings (it was
           // dropped without a word).

@@ -194,10 +194,11 @@ namespace checkpoint_test
         const std::string name = entry.path().filename().string();
         if (entry.is_regular_file() && name != "history.csv" &&
             name != "summary.txt" && name != "log.txt" &&
-            name != "parameters.prm" && name != "input.prm" && name[0] != '.')
+            name != "parameters.prm" && name != "input.prm" &&
+            (name[0] != '.' || name == ".fgimpact.files"))
           names.insert(name);
       }
-    // The VTU files, in their folder.
+    // The VTU files and their manifest, in their folder.
     if (fs::is_directory(directory + "/vtu"))
       for (const auto &entry : fs::directory_iterator(directory + "/vtu"))
         if (entry.is_regular_file())
@@ -205,10 +206,18 @@ namespace checkpoint_test
     return names;
   }
 
-  /// A file's lines but deal.II's "generated ... on <date>" comment.
+  /// A file's lines but deal.II's "generated ... on <date>" comment; a
+  /// manifest's (.fgimpact.files) as the set it is: a resumed run lists a
+  /// snapshot its killed predecessor wrote where the predecessor did.
   inline std::vector<std::string>
   dated_lines(const std::string &file)
   {
+    if (fs::path(file).filename() == ".fgimpact.files")
+      {
+        const auto                  lines = lines_of(read(file));
+        const std::set<std::string> set(lines.begin(), lines.end());
+        return std::vector<std::string>(set.begin(), set.end());
+      }
     // summary.json: as summary.txt, without its provenance object and
     // the wall-clock keys.
     const bool json =
@@ -305,23 +314,24 @@ namespace checkpoint_test
     const int resume_exit =
       run({"--resume", killed}, n_ranks, killed + ".resume.log");
     const Comparison c = compare(reference, killed);
-    std::printf("%s on %u MPI rank%s, SIGKILL after >= %u history rows: "
-                "killed before the end %s, resumed (exit %d); history.csv "
-                "%u lines, %u differing; summary.txt %u lines compared, %u "
-                "differing; %u other files (probes.csv, PVD, VTU), %u "
-                "differing\n",
-                name.c_str(),
-                n_ranks,
-                n_ranks > 1 ? "s" : "",
-                rows,
-                was_killed ? "yes" : "NO",
-                resume_exit,
-                c.history_lines,
-                c.history_differing,
-                c.summary_lines,
-                c.summary_differing,
-                c.files,
-                c.files_differing);
+    std::printf(
+      "%s on %u MPI rank%s, SIGKILL after >= %u history rows: "
+      "killed before the end %s, resumed (exit %d); history.csv "
+      "%u lines, %u differing; summary.txt %u lines compared, %u "
+      "differing; %u other files (probes.csv, PVD, VTU, manifests), %u "
+      "differing\n",
+      name.c_str(),
+      n_ranks,
+      n_ranks > 1 ? "s" : "",
+      rows,
+      was_killed ? "yes" : "NO",
+      resume_exit,
+      c.history_lines,
+      c.history_differing,
+      c.summary_lines,
+      c.summary_differing,
+      c.files,
+      c.files_differing);
     const bool ok = reference_exit == 0 && was_killed && resume_exit == 0 &&
                     c.same_length && c.history_differing == 0 &&
                     c.summary_differing == 0 && c.files > 0 &&

@@ -7,6 +7,7 @@
 #include <csignal>
 #include <exception>
 #include <functional>
+#include <set>
 #include <string>
 
 namespace fgimpact
@@ -181,6 +182,29 @@ namespace fgimpact
 
   /// The lock file of an output directory (lock_output_directory()).
   inline constexpr const char *lock_file_name = ".fgimpact.lock";
+
+  /// The manifest of a directory this program writes into: the names of
+  /// the files its runs wrote there, one per line (record_output_file()).
+  inline constexpr const char *manifest_file_name = ".fgimpact.files";
+
+  /**
+   * Note, before it is created, that this run writes `path`: its name is
+   * appended (once per process) to the manifest of the directory that
+   * holds it.  The cleaning of a later run with Output/Overwrite removes
+   * the files a manifest lists and no other (a user's file named like
+   * ours stays).  Thread-safe; a manifest that cannot be written throws
+   * ExcOutputFailure naming it.
+   */
+  void
+  record_output_file(const std::string &path);
+
+  /// The names the manifest of `directory` lists; empty if it has none.
+  std::set<std::string>
+  read_manifest(const std::string &directory);
+
+  /// Start the manifest of `directory` afresh (a new run, after cleaning).
+  void
+  reset_manifest(const std::string &directory);
 
   /**
    * One writer per output directory: create it if needed and take an
