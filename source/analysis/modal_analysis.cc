@@ -116,8 +116,10 @@ namespace fgimpact
     {
       const unsigned int       p = Y.size();
       LAPACKFullMatrix<double> Kr(p, p), Mr(p, p);
+      const MPI_Comm           comm = K.get_mpi_communicator();
       for (unsigned int j = 0; j < p; ++j)
         {
+          throw_if_stop_signal(comm, "during the modal iteration");
           K.vmult(tmp, Y[j]);
           M.vmult(Mx, Y[j]);
           for (unsigned int i = 0; i <= j; ++i)
@@ -132,6 +134,7 @@ namespace fgimpact
         lambda[j] = Kr.eigenvalue(j).real();
       for (unsigned int j = 0; j < p; ++j)
         {
+          throw_if_stop_signal(comm, "during the modal iteration");
           X[j] = 0.;
           for (unsigned int i = 0; i < p; ++i)
             X[j].add(q[j](i), Y[i]);
@@ -314,9 +317,12 @@ namespace fgimpact
     Timer               first_iteration;
     for (iterations = 1; iterations <= parameters.max_iterations; ++iterations)
       {
-        // Y = (K - sigma M)^{-1} M X
+        // Y = (K - sigma M)^{-1} M X.  A stop signal is acted on between
+        // two solves (a block of 1000 vectors takes minutes per iteration).
         for (unsigned int j = 0; j < p; ++j)
           {
+            throw_if_stop_signal(plate.get_mpi_communicator(),
+                                 "during the modal iteration");
             M.vmult(Mx, X[j]);
             Mx.scale(mask);
             Y[j] = 0.;

@@ -142,6 +142,8 @@ namespace fgimpact
                                std::to_string(step) + " within " +
                                std::to_string(max_iterations) +
                                " iterations; raise Static/Load steps."));
+        throw_if_stop_signal(plate.get_mpi_communicator(),
+                             "at load step " + std::to_string(step));
         // The plate under the plastic force alone, at the contact DoFs.
         const auto &dofs = contact.contact_dofs();
         u_plastic        = 0.;

@@ -76,6 +76,13 @@ namespace fgimpact
                         ExcNumericalFailure("in the " + phase + ": " +
                                             message_of(e)));
           }
+        catch (const RunInterrupted &)
+          {
+            // A solve that looks at the stop signals (the modal iteration,
+            // the static load steps): summary.txt and the line below.
+            stop_if_signalled(phase);
+            throw;
+          }
         stop_if_signalled(phase);
       }
 
