@@ -38,7 +38,8 @@ trap 'rm -rf "$work"' EXIT
 help=$($plot --help) && help_ok=1 || help_ok=0
 names_all=1
 for name in contact_force impactor_velocity midplane_deflection top_deflection \
-  sigma_yy sigma_zz energy force_approach probes departure_velocity; do
+  sigma_yy sigma_zz energy force_approach contact_pressure_profile probes \
+  departure_velocity; do
   grep -q "^  $name\.EXT" <<<"$help" || names_all=0
 done
 check "--help exits 0 and lists every figure" test "$help_ok$names_all" = 11
@@ -276,4 +277,53 @@ PY
 }
 check "a static study's study.csv: the deflection, linear in the load (to its printed 1e-6 um)" \
   static_linear "$work/static/study.csv"
+
+# The contact pressure profile (issue 41) read back: its node points are
+# vtu/contact_peak.vtu's (distance from the impact point, pressure), read
+# here with VTK's XML rules by a parser of its own; its Hertz curve starts
+# at p0 = 3F/(2 pi a^2) and ends at r = a = (3 F R/(4 E*))^(1/3) from
+# summary.txt's peak force and contact_modulus_Q_Pa (1e-9 relative); and
+# the computed contact ends where Hertz's does, within one node spacing
+# (0.156 mm at level 5) of a.
+"$build/fgimpact" prm/default.prm -s "Contact/Model=resolved sphere" \
+  -s "Time integration/End time=auto" -s "Output/Directory=$work/resolved" \
+  -s "Output/VTU interval=50" -s "Output/Log interval=0" \
+  -s "Output/Print timing=false" >/dev/null
+$plot --out "$work/resolved_fig" --format svg --data "$work/resolved" >/dev/null
+pressure_profile_matches() { # RUN_DIR FIGURE_DIR
+  "$python" - "$1" "$2" <<'PY'
+import csv, math, re, sys
+run, fig = sys.argv[1], sys.argv[2]
+text = open(run + "/vtu/contact_peak.vtu").read()
+def array(pattern):
+    m = re.search(pattern + r'[^>]*>([^<]*)<', text)
+    return [float(v) for v in m.group(1).split()]
+xyz = array(r'<Points>\s*<DataArray')
+p = array(r'Name="contact_pressure_MPa"')
+s = dict(l.rstrip("\n").split(" = ", 1) for l in open(run + "/summary.txt")
+         if " = " in l and not l.startswith("#"))
+x0, y0 = 0.1, 0.05  # the default plate's centre (m)
+want = sorted((1e3 * math.hypot(xyz[3 * k] - x0, xyz[3 * k + 1] - y0), p[k])
+              for k in range(len(p)))
+rows = list(csv.DictReader(open(fig + "/contact_pressure_profile.data.csv",
+                                newline="")))
+nodes = [(float(r["x"]), float(r["y"])) for r in rows if r["curve"].endswith("(nodes)")]
+hertz = [(float(r["x"]), float(r["y"])) for r in rows if "Hertz" in r["curve"]]
+F, E, R = float(s["peak_contact_force_N"]), float(s["contact_modulus_Q_Pa"]), 0.015
+a = (3 * F * R / (4 * E)) ** (1 / 3)
+p0 = 3 * F / (2 * math.pi * a * a)
+worst = max(max(abs(u - w), abs(v - z)) for (u, v), (w, z) in zip(nodes, want))
+hertz_ok = abs(hertz[0][1] / (1e-6 * p0) - 1) < 1e-9 and \
+    abs(hertz[-1][0] / (1e3 * a) - 1) < 1e-9 and hertz[-1][1] == 0
+edge = max(r for r, v in nodes if v > 0)
+print("  contact_pressure_profile: %d nodes, largest difference %.1e (mm or MPa); "
+      "Hertz p0 %.1f MPa, a %.4f mm; last node in contact at %.4f mm"
+      % (len(nodes), worst, 1e-6 * p0, 1e3 * a, edge))
+ok = len(nodes) == len(want) > 10 and worst < 1e-9 and hertz_ok and \
+    abs(edge - 1e3 * a) <= 0.15625
+sys.exit(0 if ok else 1)
+PY
+}
+check "contact_pressure_profile's data: contact_peak.vtu's nodes, Hertz's p0 and a, the contact edge" \
+  pressure_profile_matches "$work/resolved" "$work/resolved_fig"
 exit $failed

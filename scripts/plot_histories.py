@@ -38,6 +38,16 @@ Writes into DIR (created if missing), EXT = the --format:
                            mid-plane's deflection under it (history.csv's
                            approach_um, every contact model), in contact
                            (F > 0), loading and unloading
+and if a run_dir holds vtu/contact_peak.vtu (Contact/Model = resolved
+sphere with VTU output: the contact nodes at the peak force's snapshot):
+  contact_pressure_profile.EXT
+                           the nodes' contact pressure p (MPa) against
+                           their distance r (mm) from the impact point,
+                           and for an elastic plate Hertz's
+                           p0 (1 - r^2/a^2)^(1/2), a = (3 F R / (4 E*))^(1/3),
+                           p0 = 3 F / (2 pi a^2), with summary.txt's peak
+                           force F and contact_modulus_Q_Pa E* and the
+                           Impactor/Radius R
 and if a run_dir holds probes.csv (Output/Probe points):
   probes.EXT               per probe point u_z (um) and sigma_xx, sigma_zz
                            (MPa) vs t, and the support reaction (N) vs t
@@ -447,6 +457,80 @@ def plot_force_approach(out, title, runs, histories, options):
     return save(fig, out, "force_approach", options)
 
 
+def read_contact_vtu(path):
+    """Points (m) and contact_pressure_MPa of an ASCII contact VTU (the
+    contact_*.vtu fgimpact writes)."""
+    import xml.etree.ElementTree as ET
+    try:
+        root = ET.parse(path).getroot()
+    except (OSError, ET.ParseError) as e:
+        fail("%s: %s" % (path, e))
+    piece = root.find("UnstructuredGrid/Piece")
+    arrays = {a.get("Name"): [float(v) for v in a.text.split()]
+              for a in piece.iter("DataArray") if a.get("Name")}
+    coordinates = [float(v) for v in
+                   piece.find("Points/DataArray").text.split()]
+    points = [coordinates[i:i + 3] for i in range(0, len(coordinates), 3)]
+    if "contact_pressure_MPa" not in arrays:
+        fail("%s has no contact_pressure_MPa" % path)
+    return points, arrays["contact_pressure_MPa"]
+
+
+def impact_point(run_dir):
+    """The impact point (x, y) in m: Impactor/Impact point x, y, -1 for
+    the plate's centre."""
+    point = []
+    for name, size in (("x", "Length a"), ("y", "Width b")):
+        value = to_float(read_parameter(run_dir, "Impactor",
+                                        "Impact point " + name))
+        if value < 0:
+            value = 0.5 * to_float(read_parameter(run_dir, "Geometry", size))
+        point.append(value)
+    return point
+
+
+def plot_contact_pressure(out, title, runs, options):
+    """p(r) of the contact nodes at the peak snapshot, with Hertz's
+    elliptic distribution for the same force for an elastic plate."""
+    found = [(label, run_dir) for label, run_dir in runs
+             if os.path.isfile(os.path.join(run_dir, "vtu", "contact_peak.vtu"))]
+    if not found:
+        return []
+    fig, ax = plt.subplots(figsize=(7.5, 4.8))
+    for label, run_dir in found:
+        points, pressure = read_contact_vtu(
+            os.path.join(run_dir, "vtu", "contact_peak.vtu"))
+        x0, y0 = impact_point(run_dir)
+        nodes = sorted((1e3 * math.hypot(x - x0, y - y0), p)
+                       for (x, y, _), p in zip(points, pressure))
+        line = ax.plot([n[0] for n in nodes], [n[1] for n in nodes], "o",
+                       markersize=3, label=label + " (nodes)")[0]
+        summary = read_summary(run_dir)
+        elastic = read_parameter(run_dir, "Material", "Plasticity") in (
+            None, "none")
+        F = to_float(summary.get("peak_contact_force_N"))
+        E = to_float(summary.get("contact_modulus_Q_Pa"))
+        R = to_float(read_parameter(run_dir, "Impactor", "Radius"))
+        if elastic and F > 0 and E > 0 and R > 0:
+            a = (3 * F * R / (4 * E)) ** (1.0 / 3)
+            p0 = 3 * F / (2 * math.pi * a * a)
+            r = [a * k / 200 for k in range(201)]
+            ax.plot([1e3 * v for v in r],
+                    [1e-6 * p0 * math.sqrt(max(0.0, 1 - (v / a) ** 2))
+                     for v in r],
+                    "--", color=line.get_color(), linewidth=1.2,
+                    label="%s: Hertz, F = %.1f N (a = %.3f mm, p0 = %.0f MPa)"
+                    % (label, F, 1e3 * a, 1e-6 * p0))
+    style_axes(ax, "Contact pressure at the peak force" if not title
+               else "%s\nContact pressure at the peak force" % title,
+               "Distance from the impact point $r$ (mm)",
+               "Contact pressure $p$ (MPa)")
+    ax.set_xlim(left=0.0)
+    ax.set_ylim(bottom=0.0)
+    ax.legend(loc="best", fontsize="small", framealpha=0.85)
+    return save(fig, out, "contact_pressure_profile", options)
+
+
 def probe_names(probes):
     """The probe names of a probes.csv, in column order."""
     return [c[:-len("_uz_um")] for c in probes if c.endswith("_uz_um")]
@@ -548,6 +632,7 @@ def main(argv):
     written = plot_time_histories(out, title, runs, histories, options)
     written += plot_energy(out, title, runs, histories, options)
     written += plot_force_approach(out, title, runs, histories, options)
+    written += plot_contact_pressure(out, title, runs, options)
     written += plot_probes(out, title, runs, options)
     if departure:
         written += plot_departure(out, title, runs, options)

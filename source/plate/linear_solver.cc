@@ -80,6 +80,13 @@ namespace fgimpact
                     "solver/Type = cg."));
     }
 
+    /// CHOLMOD's status of the last call (CHOLMOD_OK = 0).
+    int
+    status() const
+    {
+      return common.status;
+    }
+
     /// Entries of L (CHOLMOD's count after the symbolic analysis).
     double
     factor_nnz() const
@@ -336,7 +343,24 @@ namespace fgimpact
       // analysis is done; during the numeric factorization below they only
       // set the flag, which the caller acts on right after it.
       const DeferStopSignals defer;
-      cholmod->analyze(A.m(), rows, columns, values);
+      try
+        {
+          cholmod->analyze(A.m(), rows, columns, values);
+        }
+      catch (const ExcNumericalFailure &e)
+        {
+          // A factor too large for CHOLMOD (more than 2^31 entries: status
+          // -3) or the memory (-2): auto falls back to cg, as when the
+          // factor does not fit; cholmod says so in one line.
+          if (resolved_type != "auto")
+            throw;
+          memory_report = "CHOLMOD symbolic analysis failed (status " +
+                          std::to_string(cholmod->status()) +
+                          ": the factor is too large); auto: cg";
+          cholmod.reset();
+          resolved_type = "cg";
+          return;
+        }
     }
     // The factor against what is left now (mesh, matrices and vectors
     // are allocated): CHOLMOD's numeric factorization needs the factor
