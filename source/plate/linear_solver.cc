@@ -325,8 +325,8 @@ namespace fgimpact
 
 
 
-  void
-  EffectiveMatrixSolver::initialize_cholmod(
+  bool
+  EffectiveMatrixSolver::analyze_cholmod(
     const TrilinosWrappers::SparseMatrix &A,
     const unsigned int                    n_ranks)
   {
@@ -359,9 +359,21 @@ namespace fgimpact
                           ": the factor is too large); auto: cg";
           cholmod.reset();
           resolved_type = "cg";
-          return;
+          return false;
         }
     }
+    return true;
+  }
+
+
+
+  void
+  EffectiveMatrixSolver::initialize_cholmod(
+    const TrilinosWrappers::SparseMatrix &A,
+    const unsigned int                    n_ranks)
+  {
+    if (!analyze_cholmod(A, n_ranks))
+      return;
     // The factor against what is left now (mesh, matrices and vectors
     // are allocated): CHOLMOD's numeric factorization needs the factor
     // plus a small workspace.

@@ -217,6 +217,12 @@ namespace fgimpact
   void
   lock_output_directory(const std::string &directory);
 
+  /// Whether name is a directory this program writes runs into, inside an
+  /// output directory: a study's case_N, Accuracy = converged's
+  /// convergence and its level_N or base_NXxNYxNZ_level_N.
+  bool
+  is_run_subdirectory(const std::string &name);
+
   /// Before the set-up: refuse at once (ExcMessage, as
   /// lock_output_directory()) a directory another process holds; writes
   /// nothing.  lock_output_directory() takes the lock later.

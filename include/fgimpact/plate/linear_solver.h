@@ -108,9 +108,15 @@ namespace fgimpact
     }
 
   private:
+    /// CHOLMOD's symbolic analysis of A (one rank only); false if it failed
+    /// under Type = auto, which then falls back to cg.
+    bool
+    analyze_cholmod(const TrilinosWrappers::SparseMatrix &A,
+                    const unsigned int                    n_ranks);
+
     /// Type cholmod or auto on one rank: the symbolic analysis, the
-    /// memory check (auto falls back to cg if the factor does not fit)
-    /// and the factorization.
+    /// memory check (auto falls back to cg if the factor does not fit or
+    /// the analysis fails) and the factorization.
     void
     initialize_cholmod(const TrilinosWrappers::SparseMatrix &A,
                        const unsigned int                    n_ranks);
