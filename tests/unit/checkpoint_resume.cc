@@ -61,23 +61,14 @@ namespace fgimpact_unit_tests::checkpoint_resume
       const int  resume_exit =
         run({"--resume", stopped}, 1, stopped + ".resume.log");
       const Comparison c = compare(reference, stopped);
-      std::printf(
-        "SIGTERM, checkpoint interval 0: exit %d, resume hint on "
-        "stderr %s, resumed (exit %d); history.csv %u lines, %u "
-        "differing; summary.txt %u lines compared, %u differing; "
-        "%u other files (probes.csv, PVD, VTU, manifests), %u differing\n",
-        stop_exit,
-        hint ? "yes" : "NO",
-        resume_exit,
-        c.history_lines,
-        c.history_differing,
-        c.summary_lines,
-        c.summary_differing,
-        c.files,
-        c.files_differing);
+      std::printf("SIGTERM, checkpoint interval 0: exit %d, resume hint on "
+                  "stderr %s, resumed (exit %d); %s\n",
+                  stop_exit,
+                  hint ? "yes" : "NO",
+                  resume_exit,
+                  c.text().c_str());
       return reference_exit == 0 && stop_exit == 128 + SIGTERM && hint &&
-             resume_exit == 0 && c.same_length && c.history_differing == 0 &&
-             c.summary_differing == 0 && c.files > 0 && c.files_differing == 0;
+             resume_exit == 0 && c.identical();
     }
 
     /// Every file of a directory (and of its vtu/ and checkpoint/) but

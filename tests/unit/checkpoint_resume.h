@@ -180,6 +180,33 @@ namespace checkpoint_test
     /// present in one directory only).
     unsigned int files = 0, files_differing = 0;
     bool         same_length = false;
+
+    /// Every file the same, none missing.
+    bool
+    identical() const
+    {
+      return same_length && history_differing == 0 && summary_differing == 0 &&
+             files > 0 && files_differing == 0;
+    }
+
+    /// The counts, as the cases print them.
+    std::string
+    text() const
+    {
+      char line[256];
+      std::snprintf(line,
+                    sizeof(line),
+                    "history.csv %u lines, %u differing; summary.txt %u lines "
+                    "compared, %u differing; %u other files (probes.csv, "
+                    "PVD, VTU, manifests), %u differing",
+                    history_lines,
+                    history_differing,
+                    summary_lines,
+                    summary_differing,
+                    files,
+                    files_differing);
+      return line;
+    }
   };
 
   /// The output files compared besides history.csv and summary.txt:
@@ -314,28 +341,17 @@ namespace checkpoint_test
     const int resume_exit =
       run({"--resume", killed}, n_ranks, killed + ".resume.log");
     const Comparison c = compare(reference, killed);
-    std::printf(
-      "%s on %u MPI rank%s, SIGKILL after >= %u history rows: "
-      "killed before the end %s, resumed (exit %d); history.csv "
-      "%u lines, %u differing; summary.txt %u lines compared, %u "
-      "differing; %u other files (probes.csv, PVD, VTU, manifests), %u "
-      "differing\n",
-      name.c_str(),
-      n_ranks,
-      n_ranks > 1 ? "s" : "",
-      rows,
-      was_killed ? "yes" : "NO",
-      resume_exit,
-      c.history_lines,
-      c.history_differing,
-      c.summary_lines,
-      c.summary_differing,
-      c.files,
-      c.files_differing);
-    const bool ok = reference_exit == 0 && was_killed && resume_exit == 0 &&
-                    c.same_length && c.history_differing == 0 &&
-                    c.summary_differing == 0 && c.files > 0 &&
-                    c.files_differing == 0;
+    std::printf("%s on %u MPI rank%s, SIGKILL after >= %u history rows: "
+                "killed before the end %s, resumed (exit %d); %s\n",
+                name.c_str(),
+                n_ranks,
+                n_ranks > 1 ? "s" : "",
+                rows,
+                was_killed ? "yes" : "NO",
+                resume_exit,
+                c.text().c_str());
+    const bool ok =
+      reference_exit == 0 && was_killed && resume_exit == 0 && c.identical();
     if (!ok)
       std::printf("  reference exit %d; resume log:\n%s\n",
                   reference_exit,
