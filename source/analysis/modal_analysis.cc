@@ -3,7 +3,9 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
 #include <fgimpact/analysis/modal_analysis.h>
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/stop_signals.h>
+#include <fgimpact/base/files.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
 

@@ -3,7 +3,8 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <fgimpact/analysis/static_analysis.h>
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/files.h>
 #include <fgimpact/contact/compliance.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/resolved_contact.h>

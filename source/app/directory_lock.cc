@@ -4,7 +4,9 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/files.h>
+#include <fgimpact/app/output_directory.h>
 
 #include <cerrno>
 #include <cstdlib>

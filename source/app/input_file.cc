@@ -2,7 +2,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <fgimpact/app/input_file.h>
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/files.h>
 
 #include <algorithm>
 #include <cctype>
@@ -20,32 +21,14 @@ namespace fgimpact
   {
     namespace fs = std::filesystem;
 
-    /// Limits of what is taken for a parameter file.
-    constexpr std::uintmax_t max_file_size     = 16u << 20; // bytes
-    constexpr unsigned int   max_include_depth = 32;
+    /// The deepest chain of include lines taken.
+    constexpr unsigned int max_include_depth = 32;
 
     bool
     ends_with(const std::string &s, const std::string &end)
     {
       return s.size() >= end.size() &&
              s.compare(s.size() - end.size(), end.size(), end) == 0;
-    }
-
-    /// All of in, but refusing more than max_file_size bytes (standard
-    /// input may be endless: /dev/zero).
-    std::string
-    read_all(std::istream &in, const std::string &what)
-    {
-      std::string text;
-      char        buffer[1 << 16];
-      while (in.read(buffer, sizeof(buffer)) || in.gcount() > 0)
-        {
-          text.append(buffer, in.gcount());
-          AssertThrow(text.size() <= max_file_size,
-                      ExcMessage(what + " is larger than 16 MiB."));
-        }
-      AssertThrow(!in.bad(), ExcMessage(what + " cannot be read."));
-      return text;
     }
 
     /// The text of a parameter file as given, refusing what is not a
@@ -252,28 +235,6 @@ namespace fgimpact
 
 
 
-  std::string
-  read_named_file(const std::string &filename,
-                  const std::string &what,
-                  const std::string &kind)
-  {
-    std::error_code error;
-    const auto      status = fs::status(filename, error);
-    AssertThrow(fs::exists(status), ExcMessage(what + " does not exist."));
-    AssertThrow(!fs::is_directory(status),
-                ExcMessage(what + " is a directory, not " + kind + "."));
-    AssertThrow(fs::is_regular_file(status),
-                ExcMessage(what + " is not a regular file (a device, FIFO "
-                                  "or socket)."));
-    AssertThrow(fs::file_size(filename, error) <= max_file_size && !error,
-                ExcMessage(what + " is larger than 16 MiB."));
-    std::ifstream in(filename, std::ios::binary);
-    AssertThrow(in, ExcMessage(what + " cannot be opened for reading."));
-    return read_all(in, what);
-  }
-
-
-
   InputFile::InputFile(const std::string &filename)
     : name(filename == "-" ? std::string("standard input") : filename)
     , xml_or_json(ends_with(filename, ".xml") || ends_with(filename, ".json"))
@@ -281,7 +242,7 @@ namespace fgimpact
     const std::string what = filename == "-" ?
                                std::string("standard input") :
                                "parameter file '" + filename + "'";
-    original_text          = filename == "-" ? read_all(std::cin, what) :
+    original_text          = filename == "-" ? read_text(std::cin, what) :
                                                read_regular_file(filename, what);
     if (xml_or_json)
       expanded_text = clean_text(original_text, what);

@@ -2,8 +2,10 @@
 // the files an earlier run wrote (its lock: directory_lock.cc).  Declared
 // in run_control.h.
 
-#include <fgimpact/app/run_control.h>
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/stop_signals.h>
+#include <fgimpact/base/files.h>
+#include <fgimpact/app/output_directory.h>
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/output/monitor.h>
 
 #include <algorithm>

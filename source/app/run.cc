@@ -9,9 +9,12 @@
 
 #include <fgimpact/app/input_file.h>
 #include <fgimpact/app/run.h>
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/stop_signals.h>
+#include <fgimpact/base/files.h>
+#include <fgimpact/app/output_directory.h>
 #include <fgimpact/app/simulator.h>
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/study/study.h>
 

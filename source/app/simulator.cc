@@ -2,7 +2,8 @@
 
 #include <fgimpact/analysis/modal_analysis.h>
 #include <fgimpact/analysis/static_analysis.h>
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/stop_signals.h>
 #include <fgimpact/app/simulator.h>
 #include <fgimpact/material/constitutive_law.h>
 #include <fgimpact/output/output_files.h>

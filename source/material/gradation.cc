@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
-#include <fgimpact/app/input_file.h>
+#include <fgimpact/base/files.h>
 #include <fgimpact/material/gradation.h>
 
 #include <algorithm>

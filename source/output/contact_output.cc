@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/files.h>
 #include <fgimpact/output/contact_output.h>
 #include <fgimpact/output/output_files.h>
 

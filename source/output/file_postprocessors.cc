@@ -2,7 +2,7 @@
 // VTU/PVD series.  Each keeps a failed write in output_failure() and drops
 // only its own writer.
 
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/output/postprocessors.h>
 

@@ -1,6 +1,5 @@
 #include <deal.II/base/exceptions.h>
 
-#include <fgimpact/app/run_control.h>
 #include <fgimpact/output/impact_summary.h>
 #include <fgimpact/output/monitor.h>
 

@@ -5,7 +5,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/files.h>
 #include <fgimpact/output/output_files.h>
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
 #include <fgimpact/output/impact_summary.h>
 #include <fgimpact/output/postprocessors.h>
 

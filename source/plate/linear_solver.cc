@@ -3,8 +3,9 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 
-#include <fgimpact/app/resources.h>
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/memory.h>
+#include <fgimpact/base/stop_signals.h>
 #include <fgimpact/plate/linear_solver.h>
 
 #include <Epetra_CrsMatrix.h>
@@ -275,14 +276,6 @@ namespace fgimpact
                 }
             }
         }
-    }
-
-    std::string
-    gigabytes(const double bytes)
-    {
-      char text[32];
-      std::snprintf(text, sizeof(text), "%.3g GB", bytes * 1e-9);
-      return text;
     }
   } // namespace
 

@@ -5,7 +5,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <fgimpact/material/constitutive_law.h>
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/plate/stress_recovery.h>
 
 #include <algorithm>

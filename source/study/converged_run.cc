@@ -1,7 +1,8 @@
 #include <deal.II/base/timer.h>
 
 #include <fgimpact/app/resources.h>
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/app/output_directory.h>
 #include <fgimpact/app/scene.h>
 #include <fgimpact/app/simulator.h>
 #include <fgimpact/material/material.h>

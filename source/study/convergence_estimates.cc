@@ -2,7 +2,8 @@
 // one per discretization source, in summary.txt and the log, and
 // convergence.csv (ConvergedRun's runs are in converged_run.cc).
 
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/files.h>
 #include <fgimpact/study/converged_run.h>
 
 #include <cmath>

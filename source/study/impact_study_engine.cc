@@ -2,7 +2,8 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/stop_signals.h>
 #include <fgimpact/app/simulator.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/contact_model.h>

@@ -7,7 +7,10 @@
 
 #include <fgimpact/app/parameters.h>
 #include <fgimpact/app/run.h>
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/stop_signals.h>
+#include <fgimpact/base/files.h>
+#include <fgimpact/app/output_directory.h>
 #include <fgimpact/app/simulator.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/study/impact_study_engine.h>

@@ -1,6 +1,7 @@
 #include <deal.II/lac/solver_control.h>
 
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/stop_signals.h>
 #include <fgimpact/app/simulator.h>
 #include <fgimpact/contact/compliance.h>
 #include <fgimpact/output/impact_summary.h>

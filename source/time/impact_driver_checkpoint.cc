@@ -3,7 +3,7 @@
 
 #include <deal.II/base/timer.h>
 
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/stop_signals.h>
 #include <fgimpact/time/impact_driver.h>
 
 #include <cstdio>

@@ -11,17 +11,6 @@ namespace fgimpact
   using namespace dealii;
 
   /**
-   * The text of a file the input names (a parameter file, a profile),
-   * refusing what is missing, a directory (not `kind`), not a regular
-   * file (a device, FIFO or socket: they may block or never end) or larger
-   * than 16 MiB; what names it in the one-line message.
-   */
-  std::string
-  read_named_file(const std::string &filename,
-                  const std::string &what,
-                  const std::string &kind);
-
-  /**
    * The executable's one reader of its input: a .prm from a file or standard
    * input ("-"), with every `include` line replaced by the included file's
    * text, the included path resolved relative to the directory of the file

@@ -11,7 +11,7 @@
 #include <fgimpact/contact/complementarity.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/impactor.h>
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <memory>

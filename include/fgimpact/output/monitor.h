@@ -6,9 +6,9 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/timer.h>
 
-#include <fgimpact/app/logger.h>
+#include <fgimpact/base/logger.h>
 #include <fgimpact/contact/contact_model.h>
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/output/contact_output.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>

@@ -5,7 +5,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <fgimpact/contact/contact_model.h>
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/plate/plate_fields.h>
 #include <fgimpact/time/contact_coupler.h>
 

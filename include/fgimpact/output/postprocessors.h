@@ -4,7 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <fgimpact/app/logger.h>
+#include <fgimpact/base/logger.h>
 #include <fgimpact/output/contact_output.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>

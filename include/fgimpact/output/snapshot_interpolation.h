@@ -3,7 +3,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/output/postprocessor.h>
 #include <fgimpact/plate/plate_model.h>
 

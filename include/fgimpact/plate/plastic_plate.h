@@ -10,7 +10,7 @@
 
 #include <fgimpact/material/plasticity.h>
 #include <fgimpact/material/strength.h>
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <Epetra_Import.h>

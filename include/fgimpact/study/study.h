@@ -4,7 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <fgimpact/app/input_file.h>
-#include <fgimpact/app/logger.h>
+#include <fgimpact/base/logger.h>
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 #ifndef fgimpact_auto_end_time_h
 #define fgimpact_auto_end_time_h
 
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
 
 #include <cstdint>
 #include <functional>

@@ -4,7 +4,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <fgimpact/contact/contact_model.h>
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/time/newmark.h>
 #include <fgimpact/time/plate_response.h>
 

@@ -9,7 +9,7 @@
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/contact_model.h>
 #include <fgimpact/contact/impactor.h>
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/plate/plate_model.h>
 #include <fgimpact/time/auto_end_time.h>

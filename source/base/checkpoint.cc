@@ -1,7 +1,8 @@
 #include <deal.II/base/utilities.h>
 
-#include <fgimpact/app/run_control.h>
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/files.h>
 
 #include <cstring>
 #include <filesystem>

@@ -1,5 +1,6 @@
-#include <fgimpact/app/logger.h>
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/files.h>
+#include <fgimpact/base/logger.h>
 
 #include <cstdio>
 #include <cstring>

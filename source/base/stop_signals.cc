@@ -1,0 +1,168 @@
+#include <deal.II/base/utilities.h>
+
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/stop_signals.h>
+
+#include <csignal>
+#include <cstring>
+#include <pthread.h>
+
+namespace fgimpact
+{
+  namespace
+  {
+    volatile std::sig_atomic_t stop_signal = 0;
+    /// The signals that stop a run cleanly (summary.txt status =
+    /// interrupted, a checkpoint): the user's (SIGINT, SIGTERM), a closed
+    /// terminal (SIGHUP) and a file-size limit (SIGXFSZ, ulimit -f; the
+    /// failed write is then reported as such).
+    const int        stop_signals[4] = {SIGINT, SIGTERM, SIGHUP, SIGXFSZ};
+    struct sigaction previous[4];
+
+    extern "C" void
+    on_stop_signal(const int signal)
+    {
+      // SIGXFSZ comes with every write past the file-size limit (the
+      // first VTU snapshot writes many): each write fails (EFBIG), which
+      // the run reports; it never means "stop now".
+      if (signal == SIGXFSZ)
+        {
+          if (stop_signal == 0)
+            stop_signal = signal;
+          return;
+        }
+      // A second signal while the first is being honoured: the default
+      // action (the user insists).  signal() and raise() are
+      // async-signal-safe.
+      if (stop_signal != 0)
+        {
+          std::signal(signal, SIG_DFL);
+          std::raise(signal);
+          return;
+        }
+      stop_signal = signal;
+    }
+
+
+
+  } // namespace
+
+
+
+  namespace
+  {
+    /// The stop signals as a set.
+    sigset_t
+    stop_signal_set()
+    {
+      sigset_t set;
+      sigemptyset(&set);
+      for (const int s : stop_signals)
+        sigaddset(&set, s);
+      return set;
+    }
+
+    /// Whether a SignalGuard is active (its handler is to be put back).
+    int guard_depth = 0;
+
+    void
+    install_stop_handler()
+    {
+      struct sigaction action = {};
+      action.sa_handler       = on_stop_signal;
+      sigemptyset(&action.sa_mask);
+      action.sa_flags = SA_RESTART;
+      for (const int s : stop_signals)
+        sigaction(s, &action, nullptr);
+    }
+  } // namespace
+
+
+
+  void
+  block_stop_signals_in_new_threads()
+  {
+    const sigset_t set = stop_signal_set();
+    pthread_sigmask(SIG_BLOCK, &set, nullptr);
+  }
+
+
+
+  DeferStopSignals::DeferStopSignals()
+  {
+    const sigset_t set = stop_signal_set();
+    pthread_sigmask(SIG_BLOCK, &set, &previous_mask);
+  }
+
+
+
+  DeferStopSignals::~DeferStopSignals()
+  {
+    if (guard_depth > 0)
+      install_stop_handler();
+    pthread_sigmask(SIG_SETMASK, &previous_mask, nullptr);
+  }
+
+
+
+  SignalGuard::SignalGuard()
+  {
+    // No reset of stop_signal: a nested guard (the time loop's) must not
+    // lose a signal that came during the set-up.
+    struct sigaction action = {};
+    action.sa_handler       = on_stop_signal;
+    sigemptyset(&action.sa_mask);
+    action.sa_flags = SA_RESTART;
+    for (unsigned int i = 0; i < 4; ++i)
+      sigaction(stop_signals[i], &action, &previous[i]);
+    ++guard_depth;
+    // The main thread receives them (block_stop_signals_in_new_threads()
+    // blocked them for every thread).
+    const sigset_t set = stop_signal_set();
+    pthread_sigmask(SIG_UNBLOCK, &set, nullptr);
+  }
+
+
+
+  SignalGuard::~SignalGuard()
+  {
+    for (unsigned int i = 0; i < 4; ++i)
+      sigaction(stop_signals[i], &previous[i], nullptr);
+    --guard_depth;
+  }
+
+
+
+  int
+  agreed_stop(const MPI_Comm comm, const bool local_failure)
+  {
+    // Signal numbers are below 1000.
+    int code = local_failure ? 1000 : static_cast<int>(stop_signal);
+    if (Utilities::MPI::n_mpi_processes(comm) > 1)
+      code = Utilities::MPI::max(code, comm);
+    return code >= 1000 ? -1 : code;
+  }
+
+
+  void
+  throw_if_stop_signal(const MPI_Comm comm, const std::string &what)
+  {
+    const int stop = agreed_stop(comm, false);
+    if (stop > 0)
+      throw RunInterrupted(stop,
+                           std::string("interrupted by ") + signal_name(stop) +
+                             " " + what);
+  }
+
+
+
+  void
+  ignore_broken_pipe()
+  {
+    // Output piped into `head`: a write to the closed pipe fails (EPIPE)
+    // instead of killing the run; the log's screen copy is then lost, and
+    // the files (log.txt, history.csv, summary.txt) go on.
+    std::signal(SIGPIPE, SIG_IGN);
+  }
+
+} // namespace fgimpact
