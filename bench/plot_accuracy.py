@@ -36,7 +36,7 @@ QUANTITIES = [  # column, label, unit
     ("impulse_N_s", "impulse", "N s"),
 ]
 
-# The presets of source/app/accuracy_preset.cc: (nx, ny, nz, dt_us).
+# The presets of source/problem/accuracy_preset.cc: (nx, ny, nz, dt_us).
 PRESETS = {"fast": (40, 20, 2, 2.0), "standard": (40, 20, 4, 1.0),
            "accurate": (40, 20, 16, 1.0)}
 

@@ -10,7 +10,7 @@ import sys
 
 # Lowest first.  base: what every floor uses (exceptions, stop signals,
 # atomic files and manifests, checkpoints, selections and patterns).
-FLOORS = ["base", "material", "plate", "contact", "time", "output",
+FLOORS = ["base", "material", "plate", "contact", "time", "output", "problem",
           "analysis", "study", "app"]
 
 ROOT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..")

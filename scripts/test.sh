@@ -3,6 +3,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/fgimpact_lib.sh
+# The library's floors: no include runs back up (issue 39; README, "Code
+# map").
+scripts/check_floors.py
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 # fgimpact_unit_tests: every unit test's body, built once before ctest
 # (its tests would otherwise race to build it; tests/unit/CMakeLists.txt).

@@ -7,10 +7,10 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <fgimpact/app/command_line.h>
-#include <fgimpact/base/logger.h>
-#include <fgimpact/app/parameters.h>
 #include <fgimpact/app/run.h>
+#include <fgimpact/base/logger.h>
 #include <fgimpact/base/stop_signals.h>
+#include <fgimpact/problem/parameters.h>
 
 #include <iostream>
 

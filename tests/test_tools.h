@@ -9,7 +9,7 @@
 
 #include <fgimpact/app/input_file.h>
 #include <fgimpact/app/run.h>
-#include <fgimpact/app/simulator.h>
+#include <fgimpact/study/simulator.h>
 
 #include <filesystem>
 #include <fstream>

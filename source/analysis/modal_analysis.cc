@@ -4,8 +4,8 @@
 
 #include <fgimpact/analysis/modal_analysis.h>
 #include <fgimpact/base/exceptions.h>
-#include <fgimpact/base/stop_signals.h>
 #include <fgimpact/base/files.h>
+#include <fgimpact/base/stop_signals.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
 
@@ -17,53 +17,6 @@
 
 namespace fgimpact
 {
-  void
-  ModalAnalysis::Parameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Modal");
-    {
-      prm.declare_entry("Number of modes",
-                        "6",
-                        Patterns::Integer(1, 500),
-                        "How many of the lowest natural frequencies (above "
-                        "the shift) to compute.");
-      prm.declare_entry("Shift",
-                        "0",
-                        Patterns::Double(0., 1e9),
-                        "Shift sigma of shift-invert, as a frequency; the "
-                        "modes nearest above it converge first. 0 needs a "
-                        "supported plate (K positive definite). Unit: Hz.");
-      prm.declare_entry("Tolerance",
-                        "1e-10",
-                        Patterns::Double(1e-15, 1e-2),
-                        "Stop when the relative change of every requested "
-                        "omega^2 between two iterations is below this. "
-                        "Dimensionless.");
-      prm.declare_entry("Max iterations",
-                        "200",
-                        Patterns::Integer(1, 100000),
-                        "Subspace iterations cap; reaching it is an error.");
-    }
-    prm.leave_subsection();
-  }
-
-
-
-  void
-  ModalAnalysis::Parameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Modal");
-    {
-      n_modes        = prm.get_integer("Number of modes");
-      shift          = prm.get_double("Shift");
-      tolerance      = prm.get_double("Tolerance");
-      max_iterations = prm.get_integer("Max iterations");
-    }
-    prm.leave_subsection();
-  }
-
-
-
   ModalAnalysis::ModalAnalysis(const Parameters &parameters,
                                const EffectiveMatrixSolver::Parameters &solver,
                                const PlateModel                        &plate)

@@ -4,8 +4,8 @@
 
 #include <fgimpact/analysis/static_analysis.h>
 #include <fgimpact/base/exceptions.h>
-#include <fgimpact/base/stop_signals.h>
 #include <fgimpact/base/files.h>
+#include <fgimpact/base/stop_signals.h>
 #include <fgimpact/contact/compliance.h>
 #include <fgimpact/output/validity_report.h>
 #include <fgimpact/plate/probes.h>

@@ -9,14 +9,14 @@
 
 #include <fgimpact/app/input_file.h>
 #include <fgimpact/app/run.h>
-#include <fgimpact/base/exceptions.h>
-#include <fgimpact/base/stop_signals.h>
-#include <fgimpact/base/files.h>
-#include <fgimpact/app/output_directory.h>
-#include <fgimpact/app/simulator.h>
+#include <fgimpact/app/study.h>
 #include <fgimpact/base/checkpoint.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/files.h>
+#include <fgimpact/base/stop_signals.h>
+#include <fgimpact/output/output_directory.h>
 #include <fgimpact/output/output_files.h>
-#include <fgimpact/study/study.h>
+#include <fgimpact/study/simulator.h>
 
 #include <functional>
 #include <iostream>
@@ -367,7 +367,7 @@ namespace fgimpact
     std::unique_ptr<InputFile> input;
     StudyParameters            study;
     // Input errors: checked before any file is written, reported in one line
-    // with their exit code by report_failure() (run_control.cc).
+    // with their exit code by report_failure() (base/exceptions.cc).
     try
       {
         read_parameters(options, prm, parameters, input, study, root);

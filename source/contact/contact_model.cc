@@ -2,7 +2,6 @@
 
 #include <fgimpact/contact/contact_model.h>
 #include <fgimpact/contact/resolved_contact.h>
-#include <fgimpact/output/results.h>
 
 #include <cmath>
 #include <sstream>
@@ -159,13 +158,15 @@ namespace fgimpact
 
 
 
-  void
-  HertzNodeContact::fill_results(ImpactResults &results) const
+  ContactConstants
+  HertzNodeContact::constants() const
   {
-    results.contact_modulus     = law.contact_modulus();
-    results.contact_stiffness   = law.force(1.); // beta K_h
-    results.contact_node_offset = node_offset;
-    results.contact_node_owner  = node_owner;
+    ContactConstants c;
+    c.contact_modulus     = law.contact_modulus();
+    c.contact_stiffness   = law.force(1.); // beta K_h
+    c.contact_node_offset = node_offset;
+    c.contact_node_owner  = node_owner;
+    return c;
   }
 
 
@@ -261,10 +262,10 @@ namespace fgimpact
 
 
 
-  void
-  HertzMidplaneContact::fill_results(ImpactResults &results) const
+  ContactConstants
+  HertzMidplaneContact::constants() const
   {
-    node_contact.fill_results(results);
+    return node_contact.constants();
   }
 
 

@@ -8,7 +8,6 @@
 #include <fgimpact/contact/complementarity.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/resolved_contact.h>
-#include <fgimpact/output/results.h>
 
 #include <algorithm>
 #include <array>
@@ -428,14 +427,16 @@ namespace fgimpact
 
 
 
-  void
-  ResolvedSphereContact::fill_results(ImpactResults &results) const
+  ContactConstants
+  ResolvedSphereContact::constants() const
   {
-    results.contact_modulus     = reference_modulus;
-    results.contact_stiffness   = 4. / 3. * reference_modulus * std::sqrt(R);
-    results.contact_node_offset = radii.front();
-    results.contact_node_owner  = 0;
-    results.n_contact_candidates =
+    ContactConstants c;
+    c.contact_modulus     = reference_modulus;
+    c.contact_stiffness   = 4. / 3. * reference_modulus * std::sqrt(R);
+    c.contact_node_offset = radii.front();
+    c.contact_node_owner  = 0;
+    c.n_contact_candidates =
       std::accumulate(multiplicity.begin(), multiplicity.end(), 0u);
+    return c;
   }
 } // namespace fgimpact

@@ -5,9 +5,9 @@
 
 #include <deal.II/numerics/data_out.h>
 
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/files.h>
-#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/output/mirrored_data_out.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>

@@ -204,7 +204,7 @@ namespace fgimpact
     r.n_contact_candidates = contact_model.contact_dofs().size();
     // A symmetric part: the model counts the whole plate's candidates.
     if (symmetric_part)
-      contact_model.fill_results(r);
+      r.set_contact_constants(contact_model.constants());
     r.departure_velocity =
       in_contact ? std::numeric_limits<double>::quiet_NaN() : -ball.v;
     // int F dt = m (V0 + V_departure), with the ball's current velocity.

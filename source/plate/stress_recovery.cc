@@ -4,8 +4,8 @@
 
 #include <deal.II/fe/fe_values.h>
 
-#include <fgimpact/material/constitutive_law.h>
 #include <fgimpact/base/checkpoint.h>
+#include <fgimpact/material/constitutive_law.h>
 #include <fgimpact/plate/stress_recovery.h>
 
 #include <algorithm>

@@ -1,14 +1,14 @@
 #include <deal.II/base/timer.h>
 
-#include <fgimpact/app/resources.h>
 #include <fgimpact/base/exceptions.h>
-#include <fgimpact/app/output_directory.h>
-#include <fgimpact/app/scene.h>
-#include <fgimpact/app/simulator.h>
 #include <fgimpact/material/material.h>
+#include <fgimpact/output/output_directory.h>
 #include <fgimpact/plate/geometry.h>
-#include <fgimpact/plate/symmetry.h>
+#include <fgimpact/problem/resources.h>
+#include <fgimpact/problem/scene.h>
+#include <fgimpact/problem/symmetry.h>
 #include <fgimpact/study/converged_run.h>
+#include <fgimpact/study/simulator.h>
 
 #include <algorithm>
 #include <cmath>

@@ -2,19 +2,20 @@
 
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <fgimpact/analysis/impact_setup.h>
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/stop_signals.h>
-#include <fgimpact/app/simulator.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/contact_model.h>
 #include <fgimpact/contact/impactor.h>
 #include <fgimpact/output/impact_summary.h>
 #include <fgimpact/output/validity_report.h>
-#include <fgimpact/plate/plate_fields.h>
 #include <fgimpact/plate/probes.h>
 #include <fgimpact/study/impact_study_engine.h>
+#include <fgimpact/study/simulator.h>
 #include <fgimpact/time/contact_coupler.h>
 #include <fgimpact/time/newmark.h>
+#include <fgimpact/time/plate_fields.h>
 #include <fgimpact/time/time_stepper.h>
 
 #include <cmath>

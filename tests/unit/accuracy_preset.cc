@@ -1,4 +1,4 @@
-// Accuracy presets (source/app/accuracy_preset.cc): each preset selects the
+// Accuracy presets (source/problem/accuracy_preset.cc): each preset selects the
 // documented discretization (doc/accuracy.md) in the ParameterHandler
 // itself, so that parameters.prm shows the effective values:
 //  - fast 40x20x2, dt 2 us; standard 40x20x4, dt 1 us; accurate 40x20x16,
@@ -13,7 +13,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <fgimpact/app/simulator.h>
+#include <fgimpact/study/simulator.h>
 
 #include <cmath>
 #include <cstdio>

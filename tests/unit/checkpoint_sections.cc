@@ -5,8 +5,8 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/app/run_control.h>
-#include <fgimpact/output/checkpoint.h>
+#include <fgimpact/base/checkpoint.h>
+#include <fgimpact/base/exceptions.h>
 
 #include <cstdio>
 #include <limits>

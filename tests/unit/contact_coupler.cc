@@ -194,9 +194,11 @@ namespace fgimpact_unit_tests::contact_coupler
       {
         return "";
       }
-      void
-      fill_results(ImpactResults &) const override
-      {}
+      ContactConstants
+      constants() const override
+      {
+        return {};
+      }
       bool
       grow_candidates() override
       {

@@ -13,8 +13,8 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/app/simulator.h>
 #include <fgimpact/contact/contact_law.h>
+#include <fgimpact/study/simulator.h>
 
 #include <cmath>
 #include <cstdio>

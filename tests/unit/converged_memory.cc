@@ -15,12 +15,12 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/app/resources.h>
-#include <fgimpact/app/scene.h>
-#include <fgimpact/app/simulator.h>
 #include <fgimpact/material/material.h>
 #include <fgimpact/plate/geometry.h>
-#include <fgimpact/plate/symmetry.h>
+#include <fgimpact/problem/resources.h>
+#include <fgimpact/problem/scene.h>
+#include <fgimpact/problem/symmetry.h>
+#include <fgimpact/study/simulator.h>
 
 #include <cstdio>
 #include <cstdlib>

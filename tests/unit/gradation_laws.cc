@@ -7,7 +7,7 @@
 
 #include <deal.II/base/exceptions.h>
 
-#include <fgimpact/app/run_control.h>
+#include <fgimpact/base/exceptions.h>
 #include <fgimpact/material/material.h>
 
 #include <cmath>

@@ -19,7 +19,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/app/simulator.h>
+#include <fgimpact/study/simulator.h>
 
 #include <cmath>
 #include <cstdio>

@@ -9,7 +9,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <fgimpact/app/parameters.h>
+#include <fgimpact/problem/parameters.h>
 
 #include <cstdio>
 #include <cxxabi.h>

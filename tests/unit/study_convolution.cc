@@ -16,8 +16,8 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <fgimpact/app/study.h>
 #include <fgimpact/study/impact_study_engine.h>
-#include <fgimpact/study/study.h>
 
 #include <cmath>
 #include <cstdio>

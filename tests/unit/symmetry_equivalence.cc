@@ -12,7 +12,7 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/plate/symmetry.h>
+#include <fgimpact/problem/symmetry.h>
 
 #include <algorithm>
 #include <cmath>

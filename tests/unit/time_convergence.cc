@@ -13,7 +13,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
-#include <fgimpact/app/simulator.h>
+#include <fgimpact/study/simulator.h>
 
 #include <cmath>
 #include <cstdio>

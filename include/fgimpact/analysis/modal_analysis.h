@@ -10,6 +10,7 @@
 #include <fgimpact/output/postprocessing.h>
 #include <fgimpact/plate/linear_solver.h>
 #include <fgimpact/plate/plate_model.h>
+#include <fgimpact/problem/analysis_parameters.h>
 
 #include <string>
 #include <vector>
@@ -28,18 +29,7 @@ namespace fgimpact
   class ModalAnalysis
   {
   public:
-    struct Parameters
-    {
-      unsigned int n_modes        = 6;
-      double       shift          = 0.;    // Hz
-      double       tolerance      = 1e-10; // relative change of omega^2
-      unsigned int max_iterations = 200;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
+    using Parameters = ModalAnalysisParameters;
 
     struct Mode
     {

@@ -12,6 +12,7 @@
 #include <fgimpact/plate/linear_solver.h>
 #include <fgimpact/plate/plastic_plate.h>
 #include <fgimpact/plate/plate_model.h>
+#include <fgimpact/problem/analysis_parameters.h>
 
 #include <array>
 #include <limits>
@@ -50,29 +51,8 @@ namespace fgimpact
   class StaticAnalysis
   {
   public:
-    enum class Load
-    {
-      sinusoidal,
-      uniform,
-      point,
-      sphere
-    };
-
-    struct Parameters
-    {
-      Load   load        = Load::sinusoidal;
-      double pressure    = 1e6;  // q0, Pa
-      double point_force = 1e3;  // P, N
-      double indentation = 1e-5; // delta of Load = sphere, m
-      /// Load = sphere with plasticity: load steps to the indentation
-      /// (and as many back to none).
-      unsigned int load_steps = 20;
-
-      static void
-      declare_parameters(ParameterHandler &prm);
-      void
-      parse_parameters(ParameterHandler &prm);
-    };
+    using Load       = StaticAnalysisParameters::Load;
+    using Parameters = StaticAnalysisParameters;
 
     /// Results at the plate centre, deflection positive downward (m),
     /// stresses (Pa) at the bottom, middle and top of the centre line.

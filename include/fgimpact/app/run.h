@@ -5,8 +5,8 @@
 
 #include <fgimpact/app/command_line.h>
 #include <fgimpact/app/input_file.h>
-#include <fgimpact/app/parameters.h>
 #include <fgimpact/base/logger.h>
+#include <fgimpact/problem/parameters.h>
 
 #include <functional>
 #include <string>

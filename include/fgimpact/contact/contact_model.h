@@ -7,11 +7,11 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/base/selection.h>
 #include <fgimpact/contact/complementarity.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/impactor.h>
-#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <memory>
@@ -22,7 +22,17 @@ namespace fgimpact
 {
   using namespace dealii;
 
-  struct ImpactResults;
+  /// A contact model's constants for summary.txt (the whole plate's).
+  struct ContactConstants
+  {
+    double       contact_modulus     = 0; // Pa
+    double       contact_stiffness   = 0; // N/m^1.5 (beta K_h)
+    double       contact_node_offset = 0; // m, node to impact point
+    unsigned int contact_node_owner  = 0; // MPI rank owning its DoF
+    /// The whole plate's contact DoFs where the model counts them (0: the
+    /// modelled part's candidates stand).
+    unsigned int n_contact_candidates = 0;
+  };
 
   /// The contact at the current time, known on every MPI rank.
   struct ContactState
@@ -145,8 +155,8 @@ namespace fgimpact
     warning() const = 0;
 
     /// The model's constants for summary.txt.
-    virtual void
-    fill_results(ImpactResults &results) const = 0;
+    virtual ContactConstants
+    constants() const = 0;
 
     /// Enlarge the set of contact DoFs (after candidates_exhausted);
     /// false if it cannot grow.  Collective.
@@ -328,8 +338,8 @@ namespace fgimpact
     std::string
     warning() const override;
 
-    void
-    fill_results(ImpactResults &results) const override;
+    ContactConstants
+    constants() const override;
 
   private:
     const HertzContactLaw               &law;
@@ -403,8 +413,8 @@ namespace fgimpact
     std::string
     warning() const override;
 
-    void
-    fill_results(ImpactResults &results) const override;
+    ContactConstants
+    constants() const override;
 
   private:
     const HertzContactLaw               &law;

@@ -18,6 +18,11 @@ namespace fgimpact
 {
   using namespace dealii;
 
+  /// The element sizes across the largest contact radius that the
+  /// automatic contact refinement aims at, and below which a finished
+  /// resolved run warns (doc/contact.md).
+  constexpr double contact_elements_per_radius = 4.;
+
   /**
    * A sphere (radius R, rigid or elastic) in frictionless unilateral contact
    * with the top face: no contact law, the graded 3D elasticity under the ball
@@ -120,8 +125,8 @@ namespace fgimpact
     std::string
     warning() const override;
 
-    void
-    fill_results(ImpactResults &results) const override;
+    ContactConstants
+    constants() const override;
 
     std::vector<Point<3>>
     contact_points() const override

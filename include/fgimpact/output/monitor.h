@@ -6,19 +6,19 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/timer.h>
 
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/base/logger.h>
 #include <fgimpact/contact/contact_model.h>
-#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/output/contact_output.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
 #include <fgimpact/output/postprocessors.h>
 #include <fgimpact/output/results.h>
-#include <fgimpact/plate/plate_fields.h>
 #include <fgimpact/plate/plate_model.h>
 #include <fgimpact/plate/probe_set.h>
 #include <fgimpact/plate/probes.h>
 #include <fgimpact/time/contact_coupler.h>
+#include <fgimpact/time/plate_fields.h>
 #include <fgimpact/time/time_stepper.h>
 
 #include <array>

@@ -4,10 +4,10 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <fgimpact/contact/contact_model.h>
 #include <fgimpact/base/checkpoint.h>
-#include <fgimpact/plate/plate_fields.h>
+#include <fgimpact/contact/contact_model.h>
 #include <fgimpact/time/contact_coupler.h>
+#include <fgimpact/time/plate_fields.h>
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,7 @@
 #ifndef fgimpact_results_h
 #define fgimpact_results_h
 
+#include <fgimpact/contact/contact_model.h>
 #include <fgimpact/material/strength.h>
 
 #include <array>
@@ -38,6 +39,19 @@ namespace fgimpact
    */
   struct ImpactResults
   {
+    /// The contact model's constants (its candidate count where the
+    /// model counts the whole plate's).
+    void
+    set_contact_constants(const ContactConstants &c)
+    {
+      contact_modulus     = c.contact_modulus;
+      contact_stiffness   = c.contact_stiffness;
+      contact_node_offset = c.contact_node_offset;
+      contact_node_owner  = c.contact_node_owner;
+      if (c.n_contact_candidates > 0)
+        n_contact_candidates = c.n_contact_candidates;
+    }
+
     double       peak_contact_force      = 0; // N, parabola through 3 samples
     double       max_sampled_force       = 0; // N, largest sample
     double       time_of_peak_force      = 0; // s

@@ -69,7 +69,7 @@ namespace fgimpact
                       const bool   with_time);
 
   /// What the validity report needs of the scene (validity_setup() in
-  /// app/scene.h builds it from the parameters).
+  /// problem/scene.h builds it from the parameters).
   struct ValiditySetup
   {
     GradedStrength::Parameters strength;

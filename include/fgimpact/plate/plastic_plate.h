@@ -8,9 +8,9 @@
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/material/plasticity.h>
 #include <fgimpact/material/strength.h>
-#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <Epetra_Import.h>

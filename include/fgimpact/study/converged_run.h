@@ -4,10 +4,10 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/app/parameters.h>
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/results.h>
+#include <fgimpact/problem/parameters.h>
 
 #include <functional>
 #include <memory>

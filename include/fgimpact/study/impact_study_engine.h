@@ -5,11 +5,11 @@
 
 #include <deal.II/lac/full_matrix.h>
 
-#include <fgimpact/app/parameters.h>
-#include <fgimpact/app/scene.h>
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/output/results.h>
 #include <fgimpact/plate/plate_model.h>
+#include <fgimpact/problem/parameters.h>
+#include <fgimpact/problem/scene.h>
 
 #include <string>
 #include <vector>

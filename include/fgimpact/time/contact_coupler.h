@@ -3,8 +3,8 @@
 
 #include <deal.II/base/mpi.h>
 
-#include <fgimpact/contact/contact_model.h>
 #include <fgimpact/base/checkpoint.h>
+#include <fgimpact/contact/contact_model.h>
 #include <fgimpact/time/newmark.h>
 #include <fgimpact/time/plate_response.h>
 

@@ -5,9 +5,9 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/base/selection.h>
 #include <fgimpact/contact/contact_model.h>
-#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/plate/linear_solver.h>
 #include <fgimpact/plate/plastic_plate.h>
 #include <fgimpact/plate/plate_model.h>

@@ -3,8 +3,8 @@
 
 #include <deal.II/base/timer.h>
 
+#include <fgimpact/analysis/impact_driver.h>
 #include <fgimpact/base/stop_signals.h>
-#include <fgimpact/time/impact_driver.h>
 
 #include <cstdio>
 

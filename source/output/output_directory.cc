@@ -1,12 +1,12 @@
 // The output directory: checked before the set-up and cleaned of exactly
 // the files an earlier run wrote (its lock: directory_lock.cc).  Declared
-// in run_control.h.
+// in output_directory.h.
 
-#include <fgimpact/base/stop_signals.h>
-#include <fgimpact/base/files.h>
-#include <fgimpact/app/output_directory.h>
 #include <fgimpact/base/checkpoint.h>
+#include <fgimpact/base/files.h>
+#include <fgimpact/base/stop_signals.h>
 #include <fgimpact/output/monitor.h>
+#include <fgimpact/output/output_directory.h>
 
 #include <algorithm>
 #include <cerrno>

@@ -1,12 +1,12 @@
 // One writer per output directory: the lock file (flock), and the runs in
 // directories above or inside another's (a study's case).  Declared in
-// run_control.h.
+// output_directory.h.
 
 #include <deal.II/base/exceptions.h>
 
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/files.h>
-#include <fgimpact/app/output_directory.h>
+#include <fgimpact/output/output_directory.h>
 
 #include <cerrno>
 #include <cstdlib>

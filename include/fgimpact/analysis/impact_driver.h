@@ -4,14 +4,14 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
-#include <fgimpact/app/parameters.h>
-#include <fgimpact/app/scene.h>
+#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/contact_model.h>
 #include <fgimpact/contact/impactor.h>
-#include <fgimpact/base/checkpoint.h>
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/plate/plate_model.h>
+#include <fgimpact/problem/parameters.h>
+#include <fgimpact/problem/scene.h>
 #include <fgimpact/time/auto_end_time.h>
 #include <fgimpact/time/contact_coupler.h>
 #include <fgimpact/time/time_stepper.h>

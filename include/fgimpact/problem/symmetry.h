@@ -1,7 +1,7 @@
 #ifndef fgimpact_symmetry_h
 #define fgimpact_symmetry_h
 
-#include <fgimpact/app/parameters.h>
+#include <fgimpact/problem/parameters.h>
 
 #include <array>
 #include <string>

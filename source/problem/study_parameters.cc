@@ -3,7 +3,7 @@
 
 #include <deal.II/base/utilities.h>
 
-#include <fgimpact/study/study.h>
+#include <fgimpact/problem/study_parameters.h>
 
 #include <algorithm>
 #include <set>

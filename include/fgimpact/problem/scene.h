@@ -3,10 +3,11 @@
 
 #include <deal.II/base/point.h>
 
-#include <fgimpact/app/parameters.h>
 #include <fgimpact/contact/impactor.h>
+#include <fgimpact/contact/resolved_contact.h>
 #include <fgimpact/material/material.h>
 #include <fgimpact/output/validity_report.h>
+#include <fgimpact/problem/parameters.h>
 
 namespace fgimpact
 {
@@ -102,6 +103,19 @@ namespace fgimpact
                  const ContactModel  &contact,
                  const ImpactResults &results);
 
+
+  /// Geometry/Contact refinement levels = auto: 0 unless the contact is
+  /// resolved (Parameters::uses_resolved_contact()); then the fewest levels
+  /// with contact_elements_per_radius in-plane element sizes across
+  /// contact_radius (m, the half-space Hertz estimate).
+  unsigned int
+  automatic_contact_refinement_levels(const Parameters &parameters,
+                                      const double      contact_radius);
+
+  /// Geometry/Contact refinement *: centre, radius (automatic: 1.5 times
+  /// the scene's expected contact radius) and levels (auto resolved).
+  LocalRefinement
+  contact_refinement_of(const Parameters &parameters, const Scene &scene);
 } // namespace fgimpact
 
 #endif

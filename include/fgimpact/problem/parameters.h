@@ -3,9 +3,6 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <fgimpact/analysis/modal_analysis.h>
-#include <fgimpact/analysis/static_analysis.h>
-#include <fgimpact/app/accuracy_preset.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/contact_model.h>
 #include <fgimpact/contact/impactor.h>
@@ -15,6 +12,8 @@
 #include <fgimpact/plate/geometry.h>
 #include <fgimpact/plate/linear_solver.h>
 #include <fgimpact/plate/plate_model.h>
+#include <fgimpact/problem/accuracy_preset.h>
+#include <fgimpact/problem/analysis_parameters.h>
 #include <fgimpact/time/time_stepper.h>
 
 #include <string>
@@ -52,8 +51,8 @@ namespace fgimpact
     Impactor::Parameters                   impactor;
     TimeStepper::Parameters                time_integration;
     EffectiveMatrixSolver::Parameters      linear_solver;
-    StaticAnalysis::Parameters             static_analysis;
-    ModalAnalysis::Parameters              modal;
+    StaticAnalysisParameters               static_analysis;
+    ModalAnalysisParameters                modal;
     OutputParameters                       output;
 
     static void

@@ -5,38 +5,20 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
-#include <fgimpact/app/parameters.h>
-#include <fgimpact/app/resources.h>
-#include <fgimpact/app/scene.h>
+#include <fgimpact/analysis/impact_driver.h>
 #include <fgimpact/material/material.h>
 #include <fgimpact/output/results.h>
 #include <fgimpact/plate/geometry.h>
 #include <fgimpact/plate/plate_model.h>
-#include <fgimpact/time/impact_driver.h>
+#include <fgimpact/problem/parameters.h>
+#include <fgimpact/problem/resources.h>
+#include <fgimpact/problem/scene.h>
 
 #include <memory>
 
 namespace fgimpact
 {
   using namespace dealii;
-
-  /// The element sizes across the largest contact radius that the
-  /// automatic contact refinement aims at, and below which a finished
-  /// resolved run warns (doc/contact.md).
-  constexpr double contact_elements_per_radius = 4.;
-
-  /// Geometry/Contact refinement levels = auto: 0 unless the contact is
-  /// resolved (Parameters::uses_resolved_contact()); then the fewest levels
-  /// with contact_elements_per_radius in-plane element sizes across
-  /// contact_radius (m, the half-space Hertz estimate).
-  unsigned int
-  automatic_contact_refinement_levels(const Parameters &parameters,
-                                      const double      contact_radius);
-
-  /// Geometry/Contact refinement *: centre, radius (automatic: 1.5 times
-  /// the scene's expected contact radius) and levels (auto resolved).
-  LocalRefinement
-  contact_refinement_of(const Parameters &parameters, const Scene &scene);
 
   class ConvergedRun;
 

@@ -1,4 +1,4 @@
-#include <fgimpact/plate/plate_fields.h>
+#include <fgimpact/time/plate_fields.h>
 #include <fgimpact/time/time_stepper.h>
 
 namespace fgimpact

@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
-#include <fgimpact/plate/symmetry.h>
+#include <fgimpact/problem/symmetry.h>
 
 #include <cmath>
 

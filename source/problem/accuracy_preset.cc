@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
-#include <fgimpact/app/accuracy_preset.h>
+#include <fgimpact/problem/accuracy_preset.h>
 
 #include <algorithm>
 #include <cmath>

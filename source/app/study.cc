@@ -5,16 +5,16 @@
 
 #include <deal.II/base/utilities.h>
 
-#include <fgimpact/app/parameters.h>
 #include <fgimpact/app/run.h>
+#include <fgimpact/app/study.h>
 #include <fgimpact/base/exceptions.h>
-#include <fgimpact/base/stop_signals.h>
 #include <fgimpact/base/files.h>
-#include <fgimpact/app/output_directory.h>
-#include <fgimpact/app/simulator.h>
+#include <fgimpact/base/stop_signals.h>
+#include <fgimpact/output/output_directory.h>
 #include <fgimpact/output/output_files.h>
+#include <fgimpact/problem/parameters.h>
 #include <fgimpact/study/impact_study_engine.h>
-#include <fgimpact/study/study.h>
+#include <fgimpact/study/simulator.h>
 
 #include <algorithm>
 #include <cstdio>

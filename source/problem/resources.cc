@@ -1,10 +1,10 @@
 #include <deal.II/base/exceptions.h>
 
-#include <fgimpact/app/parameters.h>
-#include <fgimpact/app/resources.h>
 #include <fgimpact/base/memory.h>
 #include <fgimpact/contact/resolved_contact.h>
-#include <fgimpact/plate/symmetry.h>
+#include <fgimpact/problem/parameters.h>
+#include <fgimpact/problem/resources.h>
+#include <fgimpact/problem/symmetry.h>
 
 #include <algorithm>
 #include <cmath>

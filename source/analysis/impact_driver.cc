@@ -1,13 +1,14 @@
 #include <deal.II/lac/solver_control.h>
 
+#include <fgimpact/analysis/impact_driver.h>
+#include <fgimpact/analysis/impact_setup.h>
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/stop_signals.h>
-#include <fgimpact/app/simulator.h>
 #include <fgimpact/contact/compliance.h>
 #include <fgimpact/output/impact_summary.h>
 #include <fgimpact/output/plasticity_report.h>
 #include <fgimpact/output/validity_report.h>
-#include <fgimpact/time/impact_driver.h>
+#include <fgimpact/problem/scene.h>
 
 #include <cmath>
 #include <csignal>

@@ -1,8 +1,8 @@
 // The impact scene (scene.h): built once from the parameters and the
 // material, read by everything that needs the impactor or where it strikes.
 
-#include <fgimpact/app/scene.h>
 #include <fgimpact/contact/contact_law.h>
+#include <fgimpact/problem/scene.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,8 @@ namespace fgimpact
     const Impactor impactor(parameters.impactor);
     const double   R = impactor.radius();
     if (parameters.problem_type == ProblemType::static_load &&
-        parameters.static_analysis.load == StaticAnalysis::Load::sphere)
+        parameters.static_analysis.load ==
+          StaticAnalysisParameters::Load::sphere)
       return std::sqrt(R * parameters.static_analysis.indentation);
     // Hertz's E* of plate and ball (a softer ball: a larger contact).
     const double Q =
@@ -64,5 +65,46 @@ namespace fgimpact
     setup.rigid_ball      = !ball.elastic;
     setup.ball_modulus    = scene.impactor().elastic_indentation_modulus();
     return setup;
+  }
+
+
+
+  LocalRefinement
+  contact_refinement_of(const Parameters &parameters, const Scene &scene)
+  {
+    LocalRefinement refinement;
+    refinement.centre         = scene.impact_point();
+    const double a_max        = scene.expected_contact_radius();
+    refinement.contact_radius = a_max;
+    refinement.levels =
+      parameters.geometry.contact_refinement_auto ?
+        automatic_contact_refinement_levels(parameters, a_max) :
+        parameters.geometry.contact_refinement_levels;
+    refinement.radius = (parameters.geometry.contact_refinement_radius > 0. ?
+                           parameters.geometry.contact_refinement_radius :
+                           1.5 * a_max);
+    return refinement;
+  }
+
+
+
+  unsigned int
+  automatic_contact_refinement_levels(const Parameters &parameters,
+                                      const double      contact_radius)
+  {
+    if (!parameters.uses_resolved_contact())
+      return 0;
+    // The fewest levels whose in-plane element size h0 / 2^L puts
+    // contact_elements_per_radius element sizes across the estimated
+    // largest contact radius (doc/contact.md derives the number).
+    const auto  &g = parameters.geometry;
+    const double h0 =
+      std::min(g.length / g.subdivisions_x, g.width / g.subdivisions_y);
+    unsigned int levels = 0;
+    while (levels < 12 &&
+           h0 / std::pow(2., levels) >
+             contact_radius / contact_elements_per_radius * (1. + 1e-12))
+      ++levels;
+    return levels;
   }
 } // namespace fgimpact

@@ -1,9 +1,9 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/tensor.h>
 
-#include <fgimpact/app/parameters.h>
-#include <fgimpact/plate/symmetry.h>
-#include <fgimpact/study/study.h>
+#include <fgimpact/problem/parameters.h>
+#include <fgimpact/problem/study_parameters.h>
+#include <fgimpact/problem/symmetry.h>
 
 #include <algorithm>
 #include <array>
@@ -89,7 +89,8 @@ namespace fgimpact
         }
       else
         AssertThrow(p.problem_type == ProblemType::static_load &&
-                      p.static_analysis.load == StaticAnalysis::Load::sphere,
+                      p.static_analysis.load ==
+                        StaticAnalysisParameters::Load::sphere,
                     ExcMessage(name + " is modelled for impacts and for "
                                       "Static/Load = sphere only; set "
                                       "Material/Plasticity = none for this "
@@ -327,8 +328,8 @@ namespace fgimpact
                       "shapes (subsection Modal).");
     AccuracyPreset::Parameters::declare_parameters(prm);
     PlateGeometry::Parameters::declare_parameters(prm);
-    StaticAnalysis::Parameters::declare_parameters(prm);
-    ModalAnalysis::Parameters::declare_parameters(prm);
+    StaticAnalysisParameters::declare_parameters(prm);
+    ModalAnalysisParameters::declare_parameters(prm);
     FunctionallyGradedMaterial::Parameters::declare_parameters(prm);
     GradedStrength::Parameters::declare_parameters(prm);
     HertzContactLaw::Parameters::declare_parameters(prm);
@@ -438,7 +439,7 @@ namespace fgimpact
     const bool               at_a_point =
       problem_type == ProblemType::impact ||
       (problem_type == ProblemType::static_load &&
-       static_analysis.load == StaticAnalysis::Load::point);
+       static_analysis.load == StaticAnalysisParameters::Load::point);
     if (!at_a_point)
       return result;
     const double   a = geometry.length, b = geometry.width;
@@ -471,6 +472,6 @@ namespace fgimpact
             contact_model.model ==
               ContactModelParameters::Model::resolved_sphere) ||
            (problem_type == ProblemType::static_load &&
-            static_analysis.load == StaticAnalysis::Load::sphere);
+            static_analysis.load == StaticAnalysisParameters::Load::sphere);
   }
 } // namespace fgimpact

@@ -4,12 +4,12 @@
 #include <fgimpact/analysis/static_analysis.h>
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/stop_signals.h>
-#include <fgimpact/app/simulator.h>
 #include <fgimpact/material/constitutive_law.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
-#include <fgimpact/plate/symmetry.h>
+#include <fgimpact/problem/symmetry.h>
 #include <fgimpact/study/converged_run.h>
+#include <fgimpact/study/simulator.h>
 
 #include <cmath>
 #include <cstdio>
@@ -373,47 +373,6 @@ namespace fgimpact
                   1e3 * geometry->thickness() * (layer + 1) / layers,
                   100. * error);
     pcout << line;
-  }
-
-
-
-  LocalRefinement
-  contact_refinement_of(const Parameters &parameters, const Scene &scene)
-  {
-    LocalRefinement refinement;
-    refinement.centre         = scene.impact_point();
-    const double a_max        = scene.expected_contact_radius();
-    refinement.contact_radius = a_max;
-    refinement.levels =
-      parameters.geometry.contact_refinement_auto ?
-        automatic_contact_refinement_levels(parameters, a_max) :
-        parameters.geometry.contact_refinement_levels;
-    refinement.radius = (parameters.geometry.contact_refinement_radius > 0. ?
-                           parameters.geometry.contact_refinement_radius :
-                           1.5 * a_max);
-    return refinement;
-  }
-
-
-
-  unsigned int
-  automatic_contact_refinement_levels(const Parameters &parameters,
-                                      const double      contact_radius)
-  {
-    if (!parameters.uses_resolved_contact())
-      return 0;
-    // The fewest levels whose in-plane element size h0 / 2^L puts
-    // contact_elements_per_radius element sizes across the estimated
-    // largest contact radius (doc/contact.md derives the number).
-    const auto  &g = parameters.geometry;
-    const double h0 =
-      std::min(g.length / g.subdivisions_x, g.width / g.subdivisions_y);
-    unsigned int levels = 0;
-    while (levels < 12 &&
-           h0 / std::pow(2., levels) >
-             contact_radius / contact_elements_per_radius * (1. + 1e-12))
-      ++levels;
-    return levels;
   }
 
 
