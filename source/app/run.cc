@@ -401,7 +401,8 @@ namespace fgimpact
     try
       {
         AssertThrow(options.resume_directory.empty() ||
-                      parameters.accuracy.preset != "converged",
+                      parameters.accuracy.preset !=
+                        AccuracyPreset::Preset::converged,
                     ExcMessage("--resume: an Accuracy = converged run is a "
                                "sequence of runs and cannot be resumed; "
                                "run it again."));

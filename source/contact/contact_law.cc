@@ -1,11 +1,27 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fgimpact/base/selection.h>
 #include <fgimpact/contact/contact_law.h>
 
 #include <cmath>
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// The names of Contact/Plate modulus.
+    const SelectionTable<HertzContactLaw::PlateModulus> &
+    plate_modulus_names()
+    {
+      using M                              = HertzContactLaw::PlateModulus;
+      static const SelectionTable<M> names = {
+        {"turner graded", M::turner_graded},
+        {"isotropic top", M::isotropic_top}};
+      return names;
+    }
+  } // namespace
+
+
   double
   turner_apparent_modulus(const TransverselyIsotropicConstants &c)
   {
@@ -53,7 +69,7 @@ namespace fgimpact
       prm.declare_entry(
         "Plate modulus",
         "turner graded",
-        Patterns::Selection("turner graded|isotropic top"),
+        plate_modulus_names().pattern(),
         "turner graded: the paper's modified Hertz law, Turner's apparent "
         "modulus (Eq. 2.9, consistent form) of the contact region whose "
         "Voigt/Reuss properties follow from V_m = 1/(1+n) (Eqs. 2.2-2.3). "
@@ -81,9 +97,7 @@ namespace fgimpact
   {
     prm.enter_subsection("Contact");
     {
-      plate_modulus   = (prm.get("Plate modulus") == "turner graded" ?
-                           PlateModulus::turner_graded :
-                           PlateModulus::isotropic_top);
+      plate_modulus   = plate_modulus_names().value(prm.get("Plate modulus"));
       swanson_beta    = prm.get_double("Swanson beta");
       given_stiffness = prm.get_double("Contact stiffness");
     }

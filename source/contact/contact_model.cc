@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fgimpact/base/selection.h>
 #include <fgimpact/contact/contact_model.h>
 #include <fgimpact/contact/resolved_contact.h>
 
@@ -8,6 +9,28 @@
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// The names of Contact/Gap shape: whether the gap is the paraboloid's.
+    const SelectionTable<bool> &
+    gap_shape_names()
+    {
+      static const SelectionTable<bool> names = {{"sphere", false},
+                                                 {"paraboloid", true}};
+      return names;
+    }
+
+    /// The names of Contact/Stabilization: whether the mass is modified.
+    const SelectionTable<bool> &
+    stabilization_names()
+    {
+      static const SelectionTable<bool> names = {{"modified mass", true},
+                                                 {"none", false}};
+      return names;
+    }
+  } // namespace
+
+
   namespace
   {
     /**
@@ -366,14 +389,14 @@ namespace fgimpact
       prm.declare_entry(
         "Gap shape",
         "sphere",
-        Patterns::Selection("sphere|paraboloid"),
+        gap_shape_names().pattern(),
         "resolved sphere: the height of the ball's surface above its lowest "
         "point at distance r, R - sqrt(R^2 - r^2) (sphere) or the Hertz "
         "approximation r^2/(2R) (paraboloid).");
       prm.declare_entry(
         "Stabilization",
         "modified mass",
-        Patterns::Selection("modified mass|none"),
+        stabilization_names().pattern(),
         "resolved sphere: modified mass = the contact candidates' z "
         "degrees of freedom carry no mass (Khenous, Laborde & Renard 2008), "
         "which removes the chatter and the energy error of Newmark with hard "
@@ -399,8 +422,8 @@ namespace fgimpact
   {
     prm.enter_subsection("Contact");
     model            = model_names().value(prm.get("Model"));
-    paraboloid_gap   = (prm.get("Gap shape") == "paraboloid");
-    modified_mass    = (prm.get("Stabilization") == "modified mass");
+    paraboloid_gap   = gap_shape_names().value(prm.get("Gap shape"));
+    modified_mass    = stabilization_names().value(prm.get("Stabilization"));
     candidate_radius = prm.get_double("Candidate radius");
     prm.leave_subsection();
   }

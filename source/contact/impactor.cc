@@ -1,3 +1,4 @@
+#include <fgimpact/base/selection.h>
 #include <fgimpact/contact/impactor.h>
 
 #include <cmath>
@@ -6,6 +7,19 @@
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// The names of Impactor/Material: whether the ball is elastic.
+    const SelectionTable<bool> &
+    ball_material_names()
+    {
+      static const SelectionTable<bool> names = {{"rigid", false},
+                                                 {"elastic", true}};
+      return names;
+    }
+  } // namespace
+
+
   void
   Impactor::Parameters::declare_parameters(ParameterHandler &prm)
   {
@@ -46,7 +60,7 @@ namespace fgimpact
                         "b/2. Unit: m.");
       prm.declare_entry("Material",
                         "rigid",
-                        Patterns::Selection("rigid|elastic"),
+                        ball_material_names().pattern(),
                         "rigid: Q_alpha = Q_zp (Eq. 2.7). elastic: "
                         "1/Q_alpha = 1/Q_zi + 1/Q_zp (Eq. 2.6) with the "
                         "impactor's Young's modulus and Poisson's ratio.");
@@ -77,7 +91,7 @@ namespace fgimpact
       initial_velocity = prm.get_double("Initial velocity");
       impact_x         = prm.get_double("Impact point x");
       impact_y         = prm.get_double("Impact point y");
-      elastic          = (prm.get("Material") == "elastic");
+      elastic          = ball_material_names().value(prm.get("Material"));
       youngs_modulus   = prm.get_double("Young's modulus");
       poissons_ratio   = prm.get_double("Poisson's ratio");
     }

@@ -1,9 +1,34 @@
 // The graded strengths of the validity report (strength.h).
 
+#include <fgimpact/base/selection.h>
 #include <fgimpact/material/strength.h>
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// The names of Material/Plasticity.
+    const SelectionTable<GradedStrength::Plasticity> &
+    plasticity_names()
+    {
+      using P                              = GradedStrength::Plasticity;
+      static const SelectionTable<P> names = {{"none", P::none}, {"J2", P::j2}};
+      return names;
+    }
+
+    /// The names of Material/Graded hardening.
+    const SelectionTable<GradedStrength::Parameters::GradedHardening> &
+    hardening_names()
+    {
+      using H = GradedStrength::Parameters::GradedHardening;
+      static const SelectionTable<H> names = {{"TTO tangent", H::tto_tangent},
+                                              {"scaled as yield",
+                                               H::scaled_as_yield}};
+      return names;
+    }
+  } // namespace
+
+
   void
   GradedStrength::Parameters::declare_parameters(ParameterHandler &prm)
   {
@@ -42,7 +67,7 @@ namespace fgimpact
     prm.declare_entry(
       "Plasticity",
       "none",
-      Patterns::Selection("none|J2"),
+      plasticity_names().pattern(),
       "none: the plate is elastic (the paper). J2: the metal-rich part "
       "(V_m >= 1/2) is elastic-plastic, small-strain von Mises plasticity "
       "with linear isotropic hardening, its yield strength graded by the "
@@ -62,7 +87,7 @@ namespace fgimpact
     prm.declare_entry(
       "Graded hardening",
       "TTO tangent",
-      Patterns::Selection("TTO tangent|scaled as yield"),
+      hardening_names().pattern(),
       "Plasticity = J2: the hardening modulus H(z) of the metal-rich "
       "mixture. TTO tangent: the mixture's own, from the TTO rule with "
       "the same q applied to the metal's tangent E_m H_m/(E_m + H_m) and "
@@ -82,12 +107,9 @@ namespace fgimpact
     metal_yield_strength     = prm.get_double("Metal yield strength");
     ceramic_tensile_strength = prm.get_double("Ceramic tensile strength");
     tto_q                    = prm.get_double("TTO q");
-    plasticity =
-      (prm.get("Plasticity") == "J2" ? Plasticity::j2 : Plasticity::none);
-    metal_hardening_modulus = prm.get_double("Metal hardening modulus");
-    graded_hardening = (prm.get("Graded hardening") == "scaled as yield" ?
-                          GradedHardening::scaled_as_yield :
-                          GradedHardening::tto_tangent);
+    plasticity               = plasticity_names().value(prm.get("Plasticity"));
+    metal_hardening_modulus  = prm.get_double("Metal hardening modulus");
+    graded_hardening = hardening_names().value(prm.get("Graded hardening"));
     prm.leave_subsection();
   }
 

@@ -2,12 +2,31 @@
 // formats, checkpoints, VTU fields and probe points (OutputParameters,
 // declared in monitor.h).
 
+#include <fgimpact/base/selection.h>
 #include <fgimpact/output/monitor.h>
 
 #include <algorithm>
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// The names of Output/VTU compression: zlib's levels.
+    const SelectionTable<DataOutBase::VtkFlags::ZlibCompressionLevel> &
+    compression_names()
+    {
+      using F = DataOutBase::VtkFlags;
+      static const SelectionTable<DataOutBase::VtkFlags::ZlibCompressionLevel>
+        names = {{"none", F::no_compression},
+                 {"speed", F::best_speed},
+                 {"default", F::default_compression},
+                 {"best", F::best_compression}};
+      return names;
+    }
+  } // namespace
+
+
+
   namespace
   {
     /// Output/Snapshot times and Snapshot at peak force.
@@ -81,7 +100,7 @@ namespace fgimpact
       prm.declare_entry(
         "VTU compression",
         "none",
-        Patterns::Selection("none|speed|default|best"),
+        compression_names().pattern(),
         "How the VTU data are stored: none (default: raw binary, the "
         "fastest to write and read, about 2.5 times the size of speed), "
         "or zlib-compressed at the level speed (fastest zlib), default "
@@ -131,12 +150,7 @@ namespace fgimpact
     print_timing    = prm.get_bool("Print timing");
     instrumentation = prm.get_bool("Instrumentation");
 
-    const std::string level = prm.get("VTU compression");
-    vtu_compression =
-      level == "none"    ? DataOutBase::VtkFlags::no_compression :
-      level == "default" ? DataOutBase::VtkFlags::default_compression :
-      level == "best"    ? DataOutBase::VtkFlags::best_compression :
-                           DataOutBase::VtkFlags::best_speed;
+    vtu_compression     = compression_names().value(prm.get("VTU compression"));
     overwrite           = prm.get_bool("Overwrite");
     checkpoint_interval = prm.get_integer("Checkpoint interval");
     vtu_fields.parse_parameters(prm);

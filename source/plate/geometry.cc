@@ -2,6 +2,7 @@
 
 #include <deal.II/grid/grid_generator.h>
 
+#include <fgimpact/base/selection.h>
 #include <fgimpact/plate/geometry.h>
 
 #include <algorithm>
@@ -9,6 +10,33 @@
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// The names of a face's support (Boundary conditions/*).
+    const SelectionTable<SideSupport> &
+    support_names()
+    {
+      static const SelectionTable<SideSupport> names = {
+        {"simply supported", SideSupport::simply_supported},
+        {"clamped", SideSupport::clamped},
+        {"free", SideSupport::free}};
+      return names;
+    }
+
+    /// The names of Geometry/Symmetry.
+    const SelectionTable<Symmetry> &
+    symmetry_names()
+    {
+      static const SelectionTable<Symmetry> names = {
+        {"auto", Symmetry::automatic},
+        {"none", Symmetry::none},
+        {"half", Symmetry::half},
+        {"quarter", Symmetry::quarter}};
+      return names;
+    }
+  } // namespace
+
+
   const std::array<std::string, 4> PlateGeometry::side_names = {
     {"Face x min", "Face x max", "Face y min", "Face y max"}};
 
@@ -26,7 +54,7 @@ namespace fgimpact
           prm.declare_entry(
             name,
             "simply supported",
-            Patterns::Selection("simply supported|clamped|free"),
+            support_names().pattern(),
             "Support of this whole side face (x min: x = 0, x max: x = a, y "
             "min: y = 0, y max: y = b). simply supported (Eq. 2.15): "
             "w = 0 and the tangential in-plane displacement = 0 on the face "
@@ -36,7 +64,7 @@ namespace fgimpact
         prm.declare_entry(
           "Face z min",
           "free",
-          Patterns::Selection("simply supported|clamped|free"),
+          support_names().pattern(),
           "Support of the bottom face z = 0: free (a plate), clamped "
           "(u = v = w = 0: bonded to a rigid base) or simply supported "
           "(w = 0 only: resting on a frictionless rigid base, which can pull "
@@ -103,7 +131,7 @@ namespace fgimpact
       prm.declare_entry(
         "Symmetry",
         "auto",
-        Patterns::Selection("auto|none|half|quarter"),
+        symmetry_names().pattern(),
         "Model a part of a symmetric scene: quarter = the part x <= a/2, "
         "y <= b/2 with u_x = 0 on x = a/2 and u_y = 0 on y = b/2; half = "
         "the part x <= a/2 (or y <= b/2 if only that plane is a symmetry "
@@ -139,24 +167,15 @@ namespace fgimpact
       contact_refinement_levels =
         contact_refinement_auto ? 0 : Utilities::string_to_int(levels);
       contact_refinement_radius = prm.get_double("Contact refinement radius");
-      const std::string s       = prm.get("Symmetry");
-      symmetry                  = (s == "auto"    ? Symmetry::automatic :
-                                   s == "half"    ? Symmetry::half :
-                                   s == "quarter" ? Symmetry::quarter :
-                                                    Symmetry::none);
+      symmetry                  = symmetry_names().value(prm.get("Symmetry"));
     }
     prm.leave_subsection();
 
     prm.enter_subsection("Boundary conditions");
     {
-      const auto to_support = [](const std::string &s) {
-        return (s == "simply supported" ? SideSupport::simply_supported :
-                s == "clamped"          ? SideSupport::clamped :
-                                          SideSupport::free);
-      };
       for (unsigned int f = 0; f < 4; ++f)
-        supports[f] = to_support(prm.get(side_names[f]));
-      bottom_support = to_support(prm.get("Face z min"));
+        supports[f] = support_names().value(prm.get(side_names[f]));
+      bottom_support = support_names().value(prm.get("Face z min"));
     }
     prm.leave_subsection();
   }

@@ -25,18 +25,19 @@ namespace fgimpact
    */
   struct EffectiveMatrixSolver::Cholmod
   {
-    explicit Cholmod(const std::string &ordering)
+    explicit Cholmod(const Ordering ordering)
     {
       cholmod_start(&common);
       common.supernodal = CHOLMOD_SUPERNODAL;
-      if (ordering != "auto")
+      if (ordering != Ordering::automatic)
         {
           // One ordering instead of CHOLMOD's default trials.
-          common.nmethods           = 1;
-          common.method[0].ordering = (ordering == "amd"   ? CHOLMOD_AMD :
-                                       ordering == "metis" ? CHOLMOD_METIS :
-                                                             CHOLMOD_NESDIS);
-          common.postorder          = true;
+          common.nmethods = 1;
+          common.method[0].ordering =
+            (ordering == Ordering::amd   ? CHOLMOD_AMD :
+             ordering == Ordering::metis ? CHOLMOD_METIS :
+                                           CHOLMOD_NESDIS);
+          common.postorder = true;
         }
     }
 
@@ -158,6 +159,44 @@ namespace fgimpact
 
 
 
+  const SelectionTable<EffectiveMatrixSolver::Type> &
+  EffectiveMatrixSolver::type_names()
+  {
+    static const SelectionTable<Type> names = {{"auto", Type::automatic},
+                                               {"cholmod", Type::cholmod},
+                                               {"klu", Type::klu},
+                                               {"mumps", Type::mumps},
+                                               {"cg", Type::cg}};
+    return names;
+  }
+
+
+
+  const SelectionTable<EffectiveMatrixSolver::Preconditioner> &
+  EffectiveMatrixSolver::preconditioner_names()
+  {
+    static const SelectionTable<Preconditioner> names = {
+      {"jacobi", Preconditioner::jacobi},
+      {"ssor", Preconditioner::ssor},
+      {"amg", Preconditioner::amg}};
+    return names;
+  }
+
+
+
+  const SelectionTable<EffectiveMatrixSolver::Ordering> &
+  EffectiveMatrixSolver::ordering_names()
+  {
+    static const SelectionTable<Ordering> names = {
+      {"auto", Ordering::automatic},
+      {"amd", Ordering::amd},
+      {"metis", Ordering::metis},
+      {"nesdis", Ordering::nesdis}};
+    return names;
+  }
+
+
+
   void
   EffectiveMatrixSolver::Parameters::declare_parameters(ParameterHandler &prm)
   {
@@ -166,7 +205,7 @@ namespace fgimpact
       prm.declare_entry(
         "Type",
         "auto",
-        Patterns::Selection("auto|cholmod|klu|mumps|cg"),
+        type_names().pattern(),
         "Solver for the constant effective matrix K + M/(beta dt^2). "
         "cholmod: supernodal Cholesky (SuiteSparse), factorized once. klu, "
         "mumps: Trilinos Amesos direct solvers. cg: preconditioned conjugate "
@@ -177,7 +216,7 @@ namespace fgimpact
         "(doc/performance.md).");
       prm.declare_entry("Preconditioner",
                         "jacobi",
-                        Patterns::Selection("jacobi|ssor|amg"),
+                        preconditioner_names().pattern(),
                         "Preconditioner of cg. The effective matrix is "
                         "dominated by M/(beta dt^2) for small dt, where "
                         "jacobi is cheapest; amg (Trilinos ML) for large dt.");
@@ -192,7 +231,7 @@ namespace fgimpact
                         "limit is set by memory (doc/performance.md).");
       prm.declare_entry("CHOLMOD ordering",
                         "auto",
-                        Patterns::Selection("auto|amd|metis|nesdis"),
+                        ordering_names().pattern(),
                         "Fill-reducing ordering of cholmod. auto: CHOLMOD "
                         "tries AMD and METIS and keeps the smaller factor; "
                         "forcing amd was up to 2x slower to factorize and "
@@ -219,10 +258,10 @@ namespace fgimpact
   {
     prm.enter_subsection("Linear solver");
     {
-      type             = prm.get("Type");
-      preconditioner   = prm.get("Preconditioner");
-      auto_limit       = prm.get_integer("Auto direct limit");
-      cholmod_ordering = prm.get("CHOLMOD ordering");
+      type           = type_names().value(prm.get("Type"));
+      preconditioner = preconditioner_names().value(prm.get("Preconditioner"));
+      auto_limit     = prm.get_integer("Auto direct limit");
+      cholmod_ordering = ordering_names().value(prm.get("CHOLMOD ordering"));
       tolerance        = prm.get_double("Tolerance");
       max_iterations   = prm.get_integer("Max iterations");
     }
@@ -292,12 +331,12 @@ namespace fgimpact
     // On several ranks the distributed MUMPS up to the DoF limit (no
     // symbolic analysis before its factorization), CG above.  On one rank
     // CHOLMOD's symbolic analysis decides below.
-    if (resolved_type == "auto" && n_ranks > 1)
-      resolved_type = (A.m() > parameters.auto_limit ? "cg" : "mumps");
+    if (resolved_type == Type::automatic && n_ranks > 1)
+      resolved_type = (A.m() > parameters.auto_limit ? Type::cg : Type::mumps);
 
-    if (resolved_type == "cholmod" || resolved_type == "auto")
+    if (resolved_type == Type::cholmod || resolved_type == Type::automatic)
       initialize_cholmod(A, n_ranks);
-    if (resolved_type == "klu" || resolved_type == "mumps")
+    if (resolved_type == Type::klu || resolved_type == Type::mumps)
       {
         // METIS (MUMPS's ordering) swallows SIGTERM: stop signals wait
         // until the factorization is done.
@@ -305,10 +344,10 @@ namespace fgimpact
         amesos = std::make_unique<TrilinosWrappers::SolverDirect>(
           amesos_control,
           TrilinosWrappers::SolverDirect::AdditionalData(
-            false, resolved_type == "klu" ? "Amesos_Klu" : "Amesos_Mumps"));
+            false, resolved_type == Type::klu ? "Amesos_Klu" : "Amesos_Mumps"));
         amesos->initialize(A);
       }
-    else if (resolved_type == "cg")
+    else if (resolved_type == Type::cg)
       {
         // ML's aggregation may call METIS too.
         const DeferStopSignals defer;
@@ -345,13 +384,13 @@ namespace fgimpact
           // A factor too large for CHOLMOD (more than 2^31 entries: status
           // -3) or the memory (-2): auto falls back to cg, as when the
           // factor does not fit; cholmod says so in one line.
-          if (resolved_type != "auto")
+          if (resolved_type != Type::automatic)
             throw;
           memory_report = "CHOLMOD symbolic analysis failed (status " +
                           std::to_string(cholmod->status()) +
                           ": the factor is too large); auto: cg";
           cholmod.reset();
-          resolved_type = "cg";
+          resolved_type = Type::cg;
           return false;
         }
     }
@@ -378,9 +417,9 @@ namespace fgimpact
            << cholmod->factor_nnz() << ", factor " << gigabytes(need) << ", "
            << gigabytes(available.bytes) << " available (" << available.source
            << ")";
-    if (resolved_type == "auto")
+    if (resolved_type == Type::automatic)
       {
-        resolved_type = fits ? "cholmod" : "cg";
+        resolved_type = fits ? Type::cholmod : Type::cg;
         report << (fits ? "; auto: cholmod" :
                           "; auto: cg (the factor does not fit)");
       }
@@ -396,7 +435,7 @@ namespace fgimpact
                              "); use Linear solver/Type = cg or auto, or "
                              "fewer Geometry/Subdivisions."));
     memory_report = report.str();
-    if (resolved_type == "cholmod")
+    if (resolved_type == Type::cholmod)
       {
         cholmod->factorize();
         note_blas_buffer_mapped();
@@ -412,13 +451,13 @@ namespace fgimpact
     const TrilinosWrappers::SparseMatrix &A,
     const DoFHandler<3>                  *dof_handler)
   {
-    if (parameters.preconditioner == "jacobi")
+    if (parameters.preconditioner == Preconditioner::jacobi)
       {
         auto p = std::make_unique<TrilinosWrappers::PreconditionJacobi>();
         p->initialize(A);
         preconditioner = std::move(p);
       }
-    else if (parameters.preconditioner == "ssor")
+    else if (parameters.preconditioner == Preconditioner::ssor)
       {
         auto p = std::make_unique<TrilinosWrappers::PreconditionSSOR>();
         p->initialize(A);

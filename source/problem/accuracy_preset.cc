@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <fgimpact/problem/accuracy_preset.h>
+#include <fgimpact/time/time_stepper.h>
 
 #include <algorithm>
 #include <cmath>
@@ -31,13 +32,27 @@ namespace fgimpact
 
 
 
+  const SelectionTable<AccuracyPreset::Preset> &
+  AccuracyPreset::preset_names()
+  {
+    static const SelectionTable<Preset> names = {{"custom", Preset::custom},
+                                                 {"fast", Preset::fast},
+                                                 {"standard", Preset::standard},
+                                                 {"accurate", Preset::accurate},
+                                                 {"converged",
+                                                  Preset::converged}};
+    return names;
+  }
+
+
+
   void
   AccuracyPreset::Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.declare_entry(
       "Accuracy",
       "custom",
-      Patterns::Selection("custom|fast|standard|accurate|converged"),
+      preset_names().pattern(),
       "Discretization preset. custom: Geometry/Subdivisions x, y, z and "
       "Time integration/Time step as given. The others overwrite those "
       "four entries (the written parameters.prm shows the effective "
@@ -76,23 +91,27 @@ namespace fgimpact
   void
   AccuracyPreset::Parameters::apply(ParameterHandler &prm)
   {
-    preset              = prm.get("Accuracy");
+    preset              = preset_names().value(prm.get("Accuracy"));
     tolerance           = prm.get_double("Accuracy tolerance");
     file_subdivisions_x = file_subdivisions_y = file_subdivisions_z = 0;
     file_time_step                                                  = 0;
-    if (preset == "custom" || preset == "converged")
+    if (preset == Preset::custom || preset == Preset::converged)
       return;
     const Setting &s =
       *std::find_if(settings().begin(),
                     settings().end(),
-                    [&](const Setting &x) { return x.name == preset; });
+                    [&](const Setting &x) {
+                      return x.name == preset_names().name(preset);
+                    });
 
     prm.enter_subsection("Time integration");
-    const bool   explicit_scheme = (prm.get("Scheme") == "explicit");
-    const double old_dt          = prm.get_double("Time step");
+    const bool explicit_scheme =
+      (TimeStepper::scheme_names().value(prm.get("Scheme")) ==
+       TimeStepper::Scheme::central_difference);
+    const double old_dt = prm.get_double("Time step");
     prm.leave_subsection();
     AssertThrow(!explicit_scheme,
-                ExcMessage("Accuracy = " + preset +
+                ExcMessage("Accuracy = " + preset_names().name(preset) +
                            " sets the implicit scheme's time step; with "
                            "Time integration/Scheme = explicit use "
                            "Accuracy = custom."));
@@ -108,7 +127,7 @@ namespace fgimpact
       s.subdivisions_z};
     // The entries' bound (Patterns::Integer(1, 100000)).
     AssertThrow(n[0] <= 100000 && n[1] <= 100000,
-                ExcMessage("Accuracy = " + preset +
+                ExcMessage("Accuracy = " + preset_names().name(preset) +
                            ": Geometry/Length a or Width b needs more than "
                            "100000 elements of 5 mm; use Accuracy = "
                            "custom."));
@@ -136,19 +155,21 @@ namespace fgimpact
                                               const unsigned int ny,
                                               const unsigned int nz) const
   {
-    if (preset == "custom" || preset == "converged")
+    if (preset == Preset::custom || preset == Preset::converged)
       return "";
     const Setting &s =
       *std::find_if(settings().begin(),
                     settings().end(),
-                    [&](const Setting &x) { return x.name == preset; });
+                    [&](const Setting &x) {
+                      return x.name == preset_names().name(preset);
+                    });
     char line[400];
     std::snprintf(line,
                   sizeof(line),
                   "Accuracy = %s sets Geometry/Subdivisions x, y, z = %u, "
                   "%u, %u (%g mm in plane) and Time integration/Time step "
                   "= %g us (the file had %u, %u, %u and %g us)",
-                  preset.c_str(),
+                  preset_names().name(preset).c_str(),
                   nx,
                   ny,
                   nz,

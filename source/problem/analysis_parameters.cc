@@ -1,7 +1,24 @@
+#include <fgimpact/base/selection.h>
 #include <fgimpact/problem/analysis_parameters.h>
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// The names of Static/Load.
+    const SelectionTable<StaticAnalysisParameters::Load> &
+    load_names()
+    {
+      using L                              = StaticAnalysisParameters::Load;
+      static const SelectionTable<L> names = {{"sinusoidal", L::sinusoidal},
+                                              {"uniform", L::uniform},
+                                              {"point", L::point},
+                                              {"sphere", L::sphere}};
+      return names;
+    }
+  } // namespace
+
+
   void
   StaticAnalysisParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -9,7 +26,7 @@ namespace fgimpact
     {
       prm.declare_entry("Load",
                         "sinusoidal",
-                        Patterns::Selection("sinusoidal|uniform|point|sphere"),
+                        load_names().pattern(),
                         "Load on the top face, downward: sinusoidal = "
                         "q0 sin(pi x/a) sin(pi y/b) (exact 3D solution exists "
                         "for simply supported plates), uniform = q0, point = "
@@ -52,15 +69,11 @@ namespace fgimpact
   {
     prm.enter_subsection("Static");
     {
-      const std::string l = prm.get("Load");
-      load                = (l == "sinusoidal" ? Load::sinusoidal :
-                             l == "uniform"    ? Load::uniform :
-                             l == "point"      ? Load::point :
-                                                 Load::sphere);
-      indentation         = prm.get_double("Indentation");
-      load_steps          = prm.get_integer("Load steps");
-      pressure            = prm.get_double("Pressure");
-      point_force         = prm.get_double("Point force");
+      load        = load_names().value(prm.get("Load"));
+      indentation = prm.get_double("Indentation");
+      load_steps  = prm.get_integer("Load steps");
+      pressure    = prm.get_double("Pressure");
+      point_force = prm.get_double("Point force");
     }
     prm.leave_subsection();
   }

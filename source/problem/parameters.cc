@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/tensor.h>
 
+#include <fgimpact/base/selection.h>
 #include <fgimpact/problem/parameters.h>
 #include <fgimpact/problem/study_parameters.h>
 #include <fgimpact/problem/symmetry.h>
@@ -14,6 +15,22 @@
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// The names of Problem type.
+    const SelectionTable<ProblemType> &
+    problem_type_names()
+    {
+      static const SelectionTable<ProblemType> names = {
+        {"impact", ProblemType::impact},
+        {"static", ProblemType::static_load},
+        {"modal", ProblemType::modal}};
+      return names;
+    }
+  } // namespace
+
+
+
   namespace
   {
     /// A snapshot the run never reaches would be missing without a word:
@@ -103,7 +120,7 @@ namespace fgimpact
     void
     check_converged_accuracy(const Parameters &p)
     {
-      if (p.accuracy.preset != "converged")
+      if (p.accuracy.preset != AccuracyPreset::Preset::converged)
         return;
       AssertThrow(p.problem_type == ProblemType::impact,
                   ExcMessage("Accuracy = converged is for Problem type = "
@@ -321,7 +338,7 @@ namespace fgimpact
   {
     prm.declare_entry("Problem type",
                       "impact",
-                      Patterns::Selection("impact|static|modal"),
+                      problem_type_names().pattern(),
                       "impact: the sphere strikes the plate (time history). "
                       "static: K u = f under the load of subsection Static. "
                       "modal: the lowest natural frequencies and mode "
@@ -345,10 +362,7 @@ namespace fgimpact
   void
   Parameters::parse_parameters(ParameterHandler &prm)
   {
-    const std::string type = prm.get("Problem type");
-    problem_type           = (type == "static" ? ProblemType::static_load :
-                              type == "modal"  ? ProblemType::modal :
-                                                 ProblemType::impact);
+    problem_type = problem_type_names().value(prm.get("Problem type"));
     // First, explicitly: a preset rewrites Geometry/Subdivisions and Time
     // integration/Time step in prm (so parameters.prm shows them).
     accuracy.apply(prm);

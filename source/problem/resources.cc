@@ -185,11 +185,12 @@ namespace fgimpact
     const bool explicit_scheme =
       impact && parameters.time_integration.scheme ==
                   TimeStepper::Scheme::central_difference;
-    e.factorizes = !explicit_scheme && parameters.linear_solver.type != "cg";
-    e.mesh       = bytes_per_cell * e.n_cells;
-    e.matrices   = bytes_per_entry * e.matrix_nnz;
-    e.vectors    = bytes_per_dof * e.n_dofs;
-    e.factor     = e.factorizes ? 8. * supernode_padding * e.factor_nnz : 0.;
+    e.factorizes = !explicit_scheme && parameters.linear_solver.type !=
+                                         EffectiveMatrixSolver::Type::cg;
+    e.mesh     = bytes_per_cell * e.n_cells;
+    e.matrices = bytes_per_entry * e.matrix_nnz;
+    e.vectors  = bytes_per_dof * e.n_dofs;
+    e.factor   = e.factorizes ? 8. * supernode_padding * e.factor_nnz : 0.;
     // End time = auto factorizes K once more for the plate's static
     // compliance (largest_static_compliance()) while K_eff's factor lives.
     if (impact && !explicit_scheme && parameters.time_integration.auto_end_time)
@@ -267,9 +268,10 @@ namespace fgimpact
     MPI_Comm_size(mpi_communicator, &n_ranks);
 
     // Only a solver that cannot fall back to cg needs its factor to fit.
-    const std::string &type = parameters.linear_solver.type;
-    const bool         must_factor =
-      estimate.factorizes && type != "auto" && type != "cg";
+    using Type      = EffectiveMatrixSolver::Type;
+    const Type type = parameters.linear_solver.type;
+    const bool must_factor =
+      estimate.factorizes && type != Type::automatic && type != Type::cg;
     const double total = estimate.total(must_factor);
 
     AvailableMemory available = available_memory();
@@ -291,7 +293,8 @@ namespace fgimpact
                ", resolved contact " + gigabytes(estimate.contact) :
                std::string())
          << (must_factor ?
-               ", " + type + " factor " + gigabytes(estimate.factor) :
+               ", " + EffectiveMatrixSolver::type_names().name(type) +
+                 " factor " + gigabytes(estimate.factor) :
                std::string())
          << ") but " << gigabytes(available.bytes) << " are available ("
          << available.source << "); use fewer Geometry/Subdivisions"

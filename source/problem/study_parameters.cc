@@ -3,6 +3,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <fgimpact/base/selection.h>
 #include <fgimpact/problem/study_parameters.h>
 
 #include <algorithm>
@@ -11,6 +12,30 @@
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// The names of Study/Combination.
+    const SelectionTable<StudyParameters::Combination> &
+    combination_names()
+    {
+      using C                              = StudyParameters::Combination;
+      static const SelectionTable<C> names = {{"product", C::product},
+                                              {"zip", C::zip}};
+      return names;
+    }
+
+    /// The names of Study/Method.
+    const SelectionTable<StudyParameters::Method> &
+    method_names()
+    {
+      using M                              = StudyParameters::Method;
+      static const SelectionTable<M> names = {{"auto", M::automatic},
+                                              {"time loop", M::time_loop}};
+      return names;
+    }
+  } // namespace
+
+
   void
   StudyParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -28,14 +53,14 @@ namespace fgimpact
         "summaries. The command-line option --study appends to this list.");
       prm.declare_entry("Combination",
                         "product",
-                        Patterns::Selection("product|zip"),
+                        combination_names().pattern(),
                         "product: every combination of the lists (the first "
                         "entry varies slowest). zip: the i-th case takes the "
                         "i-th value of every list (all lists equally long).");
       prm.declare_entry(
         "Method",
         "auto",
-        Patterns::Selection("auto|time loop"),
+        method_names().pattern(),
         "auto: cases that share the plate and differ only in the impactor, "
         "the contact law's constants or Newton's control run as "
         "convolutions of the plate's unit response (Hertz node contact, "
@@ -65,10 +90,8 @@ namespace fgimpact
          Utilities::split_string_list(prm.get("Entries"), ';'))
       if (!entry.empty())
         entries.push_back(entry);
-    combination = (prm.get("Combination") == "zip" ? Combination::zip :
-                                                     Combination::product);
-    method      = (prm.get("Method") == "time loop" ? Method::time_loop :
-                                                      Method::automatic);
+    combination = combination_names().value(prm.get("Combination"));
+    method      = method_names().value(prm.get("Method"));
     write_vtu   = prm.get_bool("Write VTU");
     prm.leave_subsection();
     n_file_entries = entries.size();

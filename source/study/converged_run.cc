@@ -148,7 +148,7 @@ namespace fgimpact
                               const BaseMesh    &base) const
   {
     Parameters p                         = parameters;
-    p.accuracy.preset                    = "custom";
+    p.accuracy.preset                    = AccuracyPreset::Preset::custom;
     p.geometry.contact_refinement_auto   = false;
     p.geometry.contact_refinement_levels = levels;
     p.geometry.subdivisions_x *= base.in_plane;

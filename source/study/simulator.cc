@@ -246,7 +246,7 @@ namespace fgimpact
   void
   Simulator::setup()
   {
-    if (parameters.accuracy.preset == "converged")
+    if (parameters.accuracy.preset == AccuracyPreset::Preset::converged)
       {
         converged = std::make_unique<ConvergedRun>(parameters,
                                                    mpi_communicator,

@@ -103,7 +103,7 @@ namespace fgimpact
       {
         mass.build_effective_matrix(newmark.mass_factor(), massless, effective);
         solver.initialize(effective, &plate.get_dof_handler());
-        iterative = (solver.type() == "cg");
+        iterative = (solver.type() == EffectiveMatrixSolver::Type::cg);
 
         for (auto *vector : {&u, &v, &a, &Mu, &Mv, &Ma, &u_new, &Mu_new, &rhs})
           plate.initialize_vector(*vector);
@@ -289,7 +289,7 @@ namespace fgimpact
         std::ostringstream s;
         s << "implicit Newmark (beta = " << newmark.beta()
           << ", gamma = " << newmark.gamma() << "), linear solver "
-          << solver.type();
+          << solver.type_name();
         if (!massless.empty())
           s << "; modified mass: the contact candidates' z DoFs massless ("
             << mass.removed() << " kg removed)";

@@ -235,7 +235,7 @@ namespace fgimpact_unit_tests::gradation_validation
         plate.setup();
 
         EffectiveMatrixSolver::Parameters lp;
-        lp.type = "cholmod";
+        lp.type = EffectiveMatrixSolver::Type::cholmod;
         const StaticAnalysis::Parameters sp;
         StaticAnalysis statics(sp, lp, plate, Point<2>(0.1, 0.05));
         statics.solve();

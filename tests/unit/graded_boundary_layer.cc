@@ -50,7 +50,7 @@ namespace fgimpact_unit_tests::graded_boundary_layer
       PlateModel plate(fp, geometry, material, MPI_COMM_WORLD);
       plate.setup();
       EffectiveMatrixSolver::Parameters lp;
-      lp.type = "cholmod";
+      lp.type = EffectiveMatrixSolver::Type::cholmod;
       const StaticAnalysis::Parameters sp;
       StaticAnalysis statics(sp, lp, plate, Point<2>(0.1, 0.05));
       statics.solve();

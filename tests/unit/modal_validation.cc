@@ -41,7 +41,7 @@ namespace fgimpact_unit_tests::modal_validation
       ModalAnalysis::Parameters mp2;
       mp2.n_modes = 8;
       EffectiveMatrixSolver::Parameters lp;
-      lp.type = "cholmod";
+      lp.type = EffectiveMatrixSolver::Type::cholmod;
       ModalAnalysis analysis(mp2, lp, plate);
       analysis.solve();
       std::vector<double> f;

@@ -58,7 +58,7 @@ namespace fgimpact_unit_tests::monolithic_newton
 
     // The library's eliminated stepper.
     EffectiveMatrixSolver::Parameters sp;
-    sp.type = "cholmod";
+    sp.type = EffectiveMatrixSolver::Type::cholmod;
     auto stepper =
       create_time_stepper(tp, sp, plate, contact_model, m, ip.initial_velocity);
     stepper->initialize(false);

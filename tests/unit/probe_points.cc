@@ -219,7 +219,7 @@ namespace fgimpact_unit_tests::probe_points
           const auto c = fgimpact_tests::make_plate(8 * k, 4 * k, 2 * k, 1, 1.);
           const auto                       &plate = *c.plate;
           EffectiveMatrixSolver::Parameters lp;
-          lp.type = "auto";
+          lp.type = EffectiveMatrixSolver::Type::automatic;
           StaticAnalysis analysis(StaticAnalysis::Parameters(),
                                   lp,
                                   plate,
@@ -298,7 +298,7 @@ namespace fgimpact_unit_tests::probe_points
       TimeStepper::Parameters tp;
       tp.time_step = 1e-6;
       EffectiveMatrixSolver::Parameters sp;
-      sp.type      = "auto";
+      sp.type      = EffectiveMatrixSolver::Type::automatic;
       auto stepper = create_time_stepper(
         tp, sp, plate, contact_model, impactor.mass(), ip.initial_velocity);
       stepper->initialize(false);

@@ -140,7 +140,7 @@ namespace fgimpact_unit_tests::static_loads
 
       const auto c = fgimpact_tests::make_plate(nx, ny, nz, degree, n);
       EffectiveMatrixSolver::Parameters lp;
-      lp.type = "cholmod";
+      lp.type = EffectiveMatrixSolver::Type::cholmod;
       StaticAnalysis analysis(sp, lp, *c.plate, Point<2>(a / 2, b / 2));
       analysis.solve();
       return analysis.get_results();

@@ -39,7 +39,7 @@ namespace fgimpact_unit_tests::static_validation
       const auto &plate = *c.plate;
       StaticAnalysis::Parameters        sp;
       EffectiveMatrixSolver::Parameters lp;
-      lp.type = "cholmod";
+      lp.type = EffectiveMatrixSolver::Type::cholmod;
       StaticAnalysis analysis(sp, lp, plate, Point<2>(0.1, 0.05));
       analysis.solve();
       return analysis.get_results().deflection[1];

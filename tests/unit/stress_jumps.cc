@@ -50,7 +50,7 @@ namespace fgimpact_unit_tests::stress_jumps
           const auto                       &plate    = *c.plate;
           const auto                       &geometry = *c.geometry;
           EffectiveMatrixSolver::Parameters lp;
-          lp.type = "cholmod";
+          lp.type = EffectiveMatrixSolver::Type::cholmod;
           StaticAnalysis analysis(StaticAnalysis::Parameters(),
                                   lp,
                                   plate,

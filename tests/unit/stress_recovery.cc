@@ -157,7 +157,7 @@ namespace fgimpact_unit_tests::stress_recovery
             nx * k, nx * k / 2, nx * k / 4, degree, 1.);
           const auto                       &plate = *c.plate;
           EffectiveMatrixSolver::Parameters lp;
-          lp.type = "cholmod";
+          lp.type = EffectiveMatrixSolver::Type::cholmod;
           StaticAnalysis analysis(StaticAnalysis::Parameters(),
                                   lp,
                                   plate,

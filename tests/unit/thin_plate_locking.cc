@@ -36,7 +36,7 @@ namespace fgimpact_unit_tests::thin_plate_locking
         nx, ny, nz, degree, 0., PropertyMode::graded, h);
       const auto                       &plate = *c.plate;
       EffectiveMatrixSolver::Parameters lp;
-      lp.type = "cholmod";
+      lp.type = EffectiveMatrixSolver::Type::cholmod;
       StaticAnalysis analysis(StaticAnalysis::Parameters(),
                               lp,
                               plate,

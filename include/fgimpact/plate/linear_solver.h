@@ -11,6 +11,8 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/base/selection.h>
+
 #include <memory>
 #include <string>
 
@@ -35,14 +37,46 @@ namespace fgimpact
   class EffectiveMatrixSolver
   {
   public:
+    /// Linear solver/Type.
+    enum class Type
+    {
+      automatic,
+      cholmod,
+      klu,
+      mumps,
+      cg
+    };
+    /// Linear solver/Preconditioner (of cg).
+    enum class Preconditioner
+    {
+      jacobi,
+      ssor,
+      amg
+    };
+    /// Linear solver/CHOLMOD ordering.
+    enum class Ordering
+    {
+      automatic,
+      amd,
+      metis,
+      nesdis
+    };
+    /// The names of the three selections.
+    static const SelectionTable<Type> &
+    type_names();
+    static const SelectionTable<Preconditioner> &
+    preconditioner_names();
+    static const SelectionTable<Ordering> &
+    ordering_names();
+
     struct Parameters
     {
-      std::string  type             = "auto";
-      std::string  preconditioner   = "jacobi";
-      unsigned int auto_limit       = 700000;
-      std::string  cholmod_ordering = "auto";
-      double       tolerance        = 1e-10;
-      unsigned int max_iterations   = 1000;
+      Type           type             = Type::automatic;
+      Preconditioner preconditioner   = Preconditioner::jacobi;
+      unsigned int   auto_limit       = 700000;
+      Ordering       cholmod_ordering = Ordering::automatic;
+      double         tolerance        = 1e-10;
+      unsigned int   max_iterations   = 1000;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -85,11 +119,18 @@ namespace fgimpact
                const double      *B,
                double            *X);
 
-    /// The solver actually used ("auto" resolved).
-    const std::string &
+    /// The solver actually used (auto resolved).
+    Type
     type() const
     {
       return resolved_type;
+    }
+
+    /// Its name, for the log.
+    const std::string &
+    type_name() const
+    {
+      return type_names().name(resolved_type);
     }
 
     /// The factor's size against the memory available (cholmod and auto
@@ -129,7 +170,7 @@ namespace fgimpact
     struct Cholmod; // pimpl: keeps CHOLMOD out of the headers
 
     const Parameters                      parameters;
-    std::string                           resolved_type;
+    Type                                  resolved_type = Type::automatic;
     std::string                           memory_report;
     const TrilinosWrappers::SparseMatrix *matrix = nullptr;
     /// Amesos keeps a reference to a SolverControl it does not use.

@@ -3,6 +3,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <fgimpact/base/selection.h>
+
 #include <string>
 #include <vector>
 
@@ -42,9 +44,23 @@ namespace fgimpact
     static const std::vector<Setting> &
     settings();
 
+    /// Accuracy.
+    enum class Preset
+    {
+      custom,
+      fast,
+      standard,
+      accurate,
+      converged
+    };
+
+    /// The names of Accuracy.
+    static const SelectionTable<Preset> &
+    preset_names();
+
     struct Parameters
     {
-      std::string preset = "custom";
+      Preset preset = Preset::custom;
       /// Accuracy = converged: the relative change of the headline numbers
       /// between two contact refinement levels at which the sequence stops
       /// (ConvergedRun).
