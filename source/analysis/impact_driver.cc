@@ -164,14 +164,10 @@ namespace fgimpact
       }
     catch (const SolverControl::NoConvergence &e)
       {
-        AssertThrow(false,
-                    ExcNumericalFailure(
-                      "the linear solver did not converge during set-up "
-                      "(the contact compliance solves) after " +
-                      std::to_string(e.last_step) +
-                      " iterations; raise Linear solver/Max iterations (now " +
-                      std::to_string(parameters.linear_solver.max_iterations) +
-                      ") or use Linear solver/Type = auto."));
+        AssertThrow(
+          false,
+          linear_solver_failure("during set-up (the contact compliance solves)",
+                                e.last_step));
       }
     catch (const ExcNumericalFailure &e)
       {

@@ -360,7 +360,6 @@ namespace fgimpact
           csv += line;
         }
       write_file_atomically(directory + "/frequencies.csv", csv);
-      summary().write(directory + "/summary.txt");
     });
     // Mode shapes scaled to a unit maximum displacement, as VTU "time"
     // steps 1..N, the mode numbers (ParaView's time bar then steps through

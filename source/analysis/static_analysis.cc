@@ -289,7 +289,6 @@ namespace fgimpact
           if (results.plastic.modelled)
             write_load_curve(directory + "/load_curve.csv");
         }
-      summary().write(directory + "/summary.txt");
     });
     TrilinosWrappers::MPI::Vector zero;
     plate.initialize_vector(zero);

@@ -107,10 +107,7 @@ namespace fgimpact
       {
         // deal.II's text is several sentences; the caller did not say
         // where, so name the parameters.
-        text = "the linear solver did not converge after " +
-               std::to_string(e.last_step) +
-               " iterations; raise Linear solver/Max iterations or use a "
-               "direct Linear solver/Type.";
+        text = message_of(linear_solver_failure("", e.last_step));
         code = 2;
       }
     catch (const ExcNumericalFailure &e)
@@ -149,6 +146,19 @@ namespace fgimpact
     if (root)
       std::cerr << "fgimpact: " << prefix << text << std::endl;
     return code;
+  }
+
+
+
+  ExcNumericalFailure
+  linear_solver_failure(const std::string &where, const unsigned int iterations)
+  {
+    return ExcNumericalFailure(
+      "the linear solver did not converge" +
+      (where.empty() ? std::string() : " " + where) + " after " +
+      std::to_string(iterations) +
+      " iterations; raise Linear solver/Max iterations or use a direct "
+      "solver (Linear solver/Type = auto or cholmod).");
   }
 
 

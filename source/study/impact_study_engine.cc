@@ -285,7 +285,7 @@ namespace fgimpact
     if (!supported)
       {
         reason = "the time stepper has no unit response here (an iterative "
-                 "linear solver: set Linear solver/Type = direct)";
+                 "linear solver: set Linear solver/Type = auto or cholmod)";
         return false;
       }
     compliance    = -contact_response[0];

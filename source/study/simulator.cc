@@ -61,14 +61,7 @@ namespace fgimpact
         catch (const SolverControl::NoConvergence &e)
           {
             AssertThrow(false,
-                        ExcNumericalFailure(
-                          "the linear solver did not converge in the " + phase +
-                          " after " + std::to_string(e.last_step) +
-                          " iterations; raise Linear solver/Max iterations "
-                          "(now " +
-                          std::to_string(
-                            parameters.linear_solver.max_iterations) +
-                          ") or use Linear solver/Type = auto."));
+                        linear_solver_failure("in the " + phase, e.last_step));
           }
         catch (const ExcNumericalFailure &e)
           {
@@ -85,6 +78,17 @@ namespace fgimpact
             throw;
           }
         stop_if_signalled(phase);
+      }
+
+      /// summary.txt through the run's one writer, on rank 0 (every rank
+      /// keeps the entries, for a study's study.csv); a failure on rank 0
+      /// stops every rank.
+      void
+      write_summary(const SummaryWriter &content) const
+      {
+        summary.keep(content);
+        run_on_root(plate.get_mpi_communicator(),
+                    [&]() { summary.write(content); });
       }
 
       /// SIGINT/SIGTERM/SIGHUP during the solve (which cannot stop midway,
@@ -152,8 +156,7 @@ namespace fgimpact
         analysis.write_output(parameters.output.directory,
                               parameters.output.vtu_compression,
                               parameters.output.vtu_fields);
-        // The entries on every rank, for a study's study.csv.
-        summary.keep(analysis.summary());
+        write_summary(analysis.summary());
         const auto &r = analysis.get_results();
         char        line[300];
         std::snprintf(line,
@@ -208,8 +211,7 @@ namespace fgimpact
         analysis.write_output(parameters.output.directory,
                               parameters.output.vtu_compression,
                               parameters.output.vtu_fields);
-        // The entries on every rank, for a study's study.csv.
-        summary.keep(analysis.summary());
+        write_summary(analysis.summary());
         pcout << "  " << analysis.get_modes().size() << " modes after "
               << analysis.n_iterations() << " subspace iterations:\n";
         for (unsigned int j = 0; j < analysis.get_modes().size(); ++j)

@@ -382,11 +382,8 @@ namespace fgimpact
         catch (const SolverControl::NoConvergence &e)
           {
             AssertThrow(false,
-                        ExcMessage("the linear solver did not converge at " +
-                                   time_step_label(step, t) + " after " +
-                                   std::to_string(e.last_step) +
-                                   " iterations; raise Linear solver/Max "
-                                   "iterations or use a direct solver."));
+                        linear_solver_failure("at " + time_step_label(step, t),
+                                              e.last_step));
           }
         last_linear_iterations = solver.last_iterations();
       }

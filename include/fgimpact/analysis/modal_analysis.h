@@ -62,12 +62,12 @@ namespace fgimpact
       return iterations;
     }
 
-    /// summary.txt's entries (every rank): SummaryFile::keep() gives
-    /// them to a study on every rank, write_output() writes them.
+    /// summary.txt's entries (every rank), which the run's SummaryFile
+    /// writes (the one writer of summary.txt) and keeps for a study.
     SummaryWriter
     summary() const;
 
-    /// frequencies.csv, summary.txt and one VTU per mode shape.
+    /// frequencies.csv and one VTU per mode shape.
     void
     write_output(const std::string &directory,
                  const DataOutBase::VtkFlags::ZlibCompressionLevel

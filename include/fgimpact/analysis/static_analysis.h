@@ -134,12 +134,12 @@ namespace fgimpact
       return u;
     }
 
-    /// summary.txt's entries (every rank): SummaryFile::keep() gives
-    /// them to a study on every rank, write_output() writes them.
+    /// summary.txt's entries (every rank), which the run's SummaryFile
+    /// writes (the one writer of summary.txt) and keeps for a study.
     SummaryWriter
     summary() const;
 
-    /// Write summary.txt and a VTU file of the fields into directory.
+    /// Write the CSV files and a VTU file of the fields into directory.
     void
     write_output(const std::string &directory,
                  const DataOutBase::VtkFlags::ZlibCompressionLevel

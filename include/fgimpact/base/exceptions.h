@@ -68,6 +68,14 @@ namespace fgimpact
                  const int                 default_code,
                  const std::string        &context = "error");
 
+  /// The one-line failure of an iterative linear solver that stopped after
+  /// `iterations` without converging `where` ("at time step 12 (t = 24
+  /// us)", "during set-up (...)"; empty: nowhere said): the two entries
+  /// to change.
+  ExcNumericalFailure
+  linear_solver_failure(const std::string &where,
+                        const unsigned int iterations);
+
   /// Whether the failure is one of a valid run (numerical, I/O, out of
   /// memory: exit code 2, with summary.txt marked failed) rather than bad
   /// input (exit code 1, nothing written).
