@@ -1,3 +1,7 @@
+// Accuracy = converged, its runs: the contact levels, the base mesh
+// refined in plane and through the thickness, the final run (the estimates
+// are in convergence_estimates.cc).
+
 #include <deal.II/base/timer.h>
 
 #include <fgimpact/base/exceptions.h>
@@ -46,34 +50,6 @@ namespace fgimpact
       malloc_trim(0);
     }
   } // namespace
-
-
-
-  const std::vector<ConvergedRun::Quantity> &
-  ConvergedRun::quantities()
-  {
-    static const std::vector<Quantity> q = {
-      {"peak_contact_force",
-       "peak_contact_force_N",
-       1.,
-       [](const ImpactResults &r) { return r.peak_contact_force; }},
-      {"contact_duration",
-       "contact_duration_us",
-       1e6,
-       [](const ImpactResults &r) { return r.contact_duration; }},
-      {"departure_velocity",
-       "departure_velocity_m_s",
-       1.,
-       [](const ImpactResults &r) { return r.departure_velocity; }},
-      {"max_midplane_deflection",
-       "max_midplane_deflection_um",
-       1e6,
-       [](const ImpactResults &r) { return r.max_midplane_deflection; }},
-      {"max_approach", "max_approach_um", 1e6, [](const ImpactResults &r) {
-         return r.max_approach;
-       }}};
-    return q;
-  }
 
 
 
@@ -239,36 +215,6 @@ namespace fgimpact
                     std::to_string(static_cast<long long>(std::llround(
                       parameters.time_integration.end_time * 1e6))) +
                     " us); set End time = auto or a later End time."));
-  }
-
-
-
-  std::pair<double, std::string>
-  ConvergedRun::largest_change() const
-  {
-    return largest_change(sequence[sequence.size() - 2].results,
-                          sequence.back().results);
-  }
-
-
-
-  std::pair<double, std::string>
-  ConvergedRun::largest_change(const ImpactResults &a,
-                               const ImpactResults &b) const
-  {
-    std::pair<double, std::string> largest = {0., ""};
-    for (const Quantity &q : quantities_of(b))
-      {
-        if (!q.steers)
-          continue;
-        double change =
-          std::abs(q.value(b) - q.value(a)) / std::abs(q.value(b));
-        if (!std::isfinite(change))
-          change = std::numeric_limits<double>::infinity();
-        if (change >= largest.first)
-          largest = {change, q.key};
-      }
-    return largest;
   }
 
 

@@ -1,4 +1,5 @@
-// Accuracy = converged, its report: the error estimate of each number,
+// Accuracy = converged, its report: the numbers it steers by and their
+// largest change, the error estimate of each number,
 // one per discretization source, in summary.txt and the log, and
 // convergence.csv (ConvergedRun's runs are in converged_run.cc).
 
@@ -13,6 +14,64 @@
 
 namespace fgimpact
 {
+  const std::vector<ConvergedRun::Quantity> &
+  ConvergedRun::quantities()
+  {
+    static const std::vector<Quantity> q = {
+      {"peak_contact_force",
+       "peak_contact_force_N",
+       1.,
+       [](const ImpactResults &r) { return r.peak_contact_force; }},
+      {"contact_duration",
+       "contact_duration_us",
+       1e6,
+       [](const ImpactResults &r) { return r.contact_duration; }},
+      {"departure_velocity",
+       "departure_velocity_m_s",
+       1.,
+       [](const ImpactResults &r) { return r.departure_velocity; }},
+      {"max_midplane_deflection",
+       "max_midplane_deflection_um",
+       1e6,
+       [](const ImpactResults &r) { return r.max_midplane_deflection; }},
+      {"max_approach", "max_approach_um", 1e6, [](const ImpactResults &r) {
+         return r.max_approach;
+       }}};
+    return q;
+  }
+
+
+
+  std::pair<double, std::string>
+  ConvergedRun::largest_change() const
+  {
+    return largest_change(sequence[sequence.size() - 2].results,
+                          sequence.back().results);
+  }
+
+
+
+  std::pair<double, std::string>
+  ConvergedRun::largest_change(const ImpactResults &a,
+                               const ImpactResults &b) const
+  {
+    std::pair<double, std::string> largest = {0., ""};
+    for (const Quantity &q : quantities_of(b))
+      {
+        if (!q.steers)
+          continue;
+        double change =
+          std::abs(q.value(b) - q.value(a)) / std::abs(q.value(b));
+        if (!std::isfinite(change))
+          change = std::numeric_limits<double>::infinity();
+        if (change >= largest.first)
+          largest = {change, q.key};
+      }
+    return largest;
+  }
+
+
+
   std::string
   ConvergedRun::percent(const double relative)
   {

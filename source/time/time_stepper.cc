@@ -4,6 +4,7 @@
 
 #include <deal.II/lac/solver_control.h>
 
+#include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/patterns.h>
 #include <fgimpact/contact/compliance.h>
 #include <fgimpact/time/contact_coupler.h>

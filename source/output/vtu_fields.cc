@@ -1,0 +1,188 @@
+// The VTU's fields: which ones a run writes (VtuFields, Output/VTU fields)
+// and the stress postprocessor that computes them per cell (the writer is in
+// postprocessing.cc).
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/numerics/data_out.h>
+
+#include <fgimpact/base/checkpoint.h>
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/files.h>
+#include <fgimpact/output/mirrored_data_out.h>
+#include <fgimpact/output/output_files.h>
+#include <fgimpact/output/postprocessing.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <sstream>
+
+namespace fgimpact
+{
+  StressPostprocessor::StressPostprocessor(const PlateModel &plate,
+                                           const bool        with_stress,
+                                           const bool        with_material)
+    : mapping(plate.get_mapping())
+    , properties(plate.get_fe().base_element(0), {}, plate.get_material())
+    , hooke(plate.get_material())
+    , with_stress(with_stress)
+    , with_material(with_material)
+  {}
+
+
+
+  std::vector<std::string>
+  StressPostprocessor::get_names() const
+  {
+    std::vector<std::string> names;
+    if (with_stress)
+      {
+        names.resize(9, "stress_MPa");
+        names.emplace_back("cell_von_mises_MPa");
+      }
+    if (with_material)
+      {
+        names.emplace_back("youngs_modulus_GPa");
+        names.emplace_back("density_kg_m3");
+      }
+    return names;
+  }
+
+
+
+  std::vector<DataComponentInterpretation::DataComponentInterpretation>
+  StressPostprocessor::get_data_component_interpretation() const
+  {
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation;
+    if (with_stress)
+      interpretation.resize(
+        9, DataComponentInterpretation::component_is_part_of_tensor);
+    interpretation.resize(get_names().size(),
+                          DataComponentInterpretation::component_is_scalar);
+    return interpretation;
+  }
+
+
+
+  UpdateFlags
+  StressPostprocessor::get_needed_update_flags() const
+  {
+    return update_gradients | update_quadrature_points;
+  }
+
+
+
+  void
+  StressPostprocessor::evaluate_vector_field(
+    const DataPostprocessorInputs::Vector<3> &inputs,
+    std::vector<Vector<double>>              &computed_quantities) const
+  {
+    const auto cell = inputs.template get_cell<3>();
+    for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
+      {
+        const auto [E, nu, rho] =
+          properties.value_at(cell, inputs.evaluation_points[p]);
+        unsigned int k = 0;
+        if (with_stress)
+          {
+            SymmetricTensor<2, 3> eps;
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = a; b < 3; ++b)
+                eps[a][b] = 0.5 * (inputs.solution_gradients[p][a][b] +
+                                   inputs.solution_gradients[p][b][a]);
+            SymmetricTensor<2, 3> sigma = hooke.stress(E, nu, eps);
+            if (plastic)
+              {
+                // The stress the material carries: C (eps - eps_p), on
+                // or inside the yield surface (as StressRecovery).
+                const PlasticState state =
+                  plastic->plastic_state(cell->active_cell_index(),
+                                         mapping.transform_real_to_unit_cell(
+                                           cell, inputs.evaluation_points[p]));
+                sigma = J2Plasticity::admissible_stress(
+                  hooke.stress(E, nu, eps - state.plastic_strain),
+                  plastic->yield_stress(inputs.evaluation_points[p][2],
+                                        state.equivalent_plastic_strain));
+              }
+            const SymmetricTensor<2, 3> s = deviator(sigma);
+
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = 0; b < 3; ++b)
+                computed_quantities[p][k++] = sigma[a][b] * 1e-6;
+            computed_quantities[p][k++] = std::sqrt(1.5 * (s * s)) * 1e-6;
+          }
+        if (with_material)
+          {
+            computed_quantities[p][k++] = E * 1e-9;
+            computed_quantities[p][k++] = rho;
+          }
+      }
+  }
+
+
+
+  void
+  VtuFields::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry(
+      "Fields",
+      "displacement, velocity, stress, von_mises, principal, material, peak",
+      Patterns::MultipleSelection("displacement|velocity|acceleration|stress|"
+                                  "von_mises|principal|strain|cell_stress|"
+                                  "material|peak"),
+      "The fields of the VTU files, a comma-separated list of: "
+      "displacement (displacement_m, m), velocity (velocity_m_s, m/s), "
+      "acceleration (impact runs: acceleration_m_s2, m/s^2), "
+      "stress (the recovered, continuous stress by nodal averaging: "
+      "sigma_xx_MPa, sigma_yy_MPa, sigma_zz_MPa, sigma_xy_MPa, sigma_xz_MPa, "
+      "sigma_yz_MPa, MPa), von_mises (recovered von_mises_MPa, MPa), "
+      "principal (recovered principal stresses sigma_1_MPa >= sigma_2_MPa "
+      ">= sigma_3_MPa, MPa), strain (recovered strain_xx ... strain_yz, "
+      "tensor components, dimensionless), cell_stress (the per-cell, "
+      "discontinuous stress tensor stress_MPa with components 0..8 = xx, "
+      "xy, xz, yx, yy, yz, zx, zy, zz and cell_von_mises_MPa, MPa), "
+      "material (youngs_modulus_GPa in GPa, density_kg_m3 in kg/m^3), peak "
+      "(impact runs: peak_fields.vtu at the end, the nodal maxima over the "
+      "VTU snapshots of the recovered von Mises stress and |sigma_zz|, "
+      "MPa).");
+    prm.declare_entry(
+      "Mirror symmetric part",
+      "true",
+      Patterns::Bool(),
+      "With Geometry/Symmetry modelling a half or a quarter of the plate: "
+      "true writes the VTU files of the whole plate (the part and its "
+      "reflections across the cut planes x = a/2, y = b/2, with the signs of "
+      "the odd vector and tensor components changed); false writes the "
+      "modelled part only (mirror it in ParaView with the Reflect filter). "
+      "No effect on a whole plate.");
+  }
+
+
+
+  void
+  VtuFields::parse_parameters(ParameterHandler &prm)
+  {
+    const auto list = Utilities::split_string_list(prm.get("Fields"));
+    auto       has  = [&list](const std::string &name) {
+      return std::find(list.begin(), list.end(), name) != list.end();
+    };
+    displacement = has("displacement");
+    velocity     = has("velocity");
+    acceleration = has("acceleration");
+    stress       = has("stress");
+    von_mises    = has("von_mises");
+    principal    = has("principal");
+    strain       = has("strain");
+    cell_stress  = has("cell_stress");
+    material     = has("material");
+    peak         = has("peak");
+    mirror       = prm.get_bool("Mirror symmetric part");
+  }
+} // namespace fgimpact
