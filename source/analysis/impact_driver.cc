@@ -97,31 +97,17 @@ namespace fgimpact
     // counts as output time (time_loop_s = loop - output stays >= 0).
     Timer loop_timer;
 
-    // SIGINT/SIGTERM and failed writes are looked at once per step, agreed
-    // over the ranks (one all-reduce of an int), so all stop together.
-    const MPI_Comm     comm       = plate.get_mpi_communicator();
-    unsigned int       steps_done = resume ? resume->step : 0;
-    int                stop       = 0;
-    const unsigned int interval   = parameters.output.checkpoint_interval;
-    std::string        checkpoint_failure;
+    const MPI_Comm comm       = plate.get_mpi_communicator();
+    unsigned int   steps_done = resume ? resume->step : 0;
+    int            stop       = 0;
+    std::string    checkpoint_failure;
     try
       {
         if (resume)
           monitor->resume_output(resume->step, resume->step * dt, *stepper);
         else
           monitor->record(0, 0., *stepper, ball, contact_state);
-        while (steps_done < n_steps && stop == 0)
-          {
-            timestep            = steps_done + 1;
-            const bool finished = do_timestep();
-            steps_done          = timestep;
-            stop = agreed_stop(comm, !monitor->output_failure().empty());
-            if (finished)
-              break;
-            if (stop == 0 && interval > 0 && steps_done % interval == 0 &&
-                steps_done < n_steps)
-              stop = write_checkpoint(steps_done);
-          }
+        stop = run_steps(steps_done);
         // SIGINT/SIGTERM: a checkpoint at the stop, whatever the interval
         // (a failure to write it does not hide the interruption).
         if (stop > 0)
@@ -150,16 +136,40 @@ namespace fgimpact
                     total_timer.wall_time());
     report_checkpoints(loop_timer.wall_time());
     if (stop > 0)
-      throw RunInterrupted(
-        stop,
-        interruption_message(stop,
-                             steps_done,
-                             n_steps,
-                             dt,
-                             parameters.output.directory,
-                             checkpoint_failure,
-                             Utilities::MPI::n_mpi_processes(
-                               plate.get_mpi_communicator())));
+      throw RunInterrupted(stop,
+                           interruption_message(stop,
+                                                steps_done,
+                                                n_steps,
+                                                dt,
+                                                parameters.output.directory,
+                                                checkpoint_failure,
+                                                Utilities::MPI::n_mpi_processes(
+                                                  comm)));
+  }
+
+
+
+  int
+  ImpactDriver::run_steps(unsigned int &steps_done)
+  {
+    // SIGINT/SIGTERM and failed writes are looked at once per step, agreed
+    // over the ranks (one all-reduce of an int), so all stop together.
+    const MPI_Comm     comm     = plate.get_mpi_communicator();
+    const unsigned int interval = parameters.output.checkpoint_interval;
+    int                stop     = 0;
+    while (steps_done < n_steps && stop == 0)
+      {
+        timestep            = steps_done + 1;
+        const bool finished = do_timestep();
+        steps_done          = timestep;
+        stop = agreed_stop(comm, !monitor->output_failure().empty());
+        if (finished)
+          break;
+        if (stop == 0 && interval > 0 && steps_done % interval == 0 &&
+            steps_done < n_steps)
+          stop = write_checkpoint(steps_done);
+      }
+    return stop;
   }
 
 

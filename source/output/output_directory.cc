@@ -236,90 +236,132 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// Create the output directory and check that a byte can be written
+    /// there: one byte, written, closed and read back (an empty test file
+    /// passes on a full disk).
+    void
+    create_writable_directory(const std::string &directory)
+    {
+      namespace fs = std::filesystem;
+      std::error_code error;
+      fs::create_directories(directory, error);
+      AssertThrow(!error && fs::is_directory(directory),
+                  ExcMessage("Output/Directory '" + directory +
+                             "' cannot be created: " + error.message()));
+      const std::string probe = directory + "/.fgimpact_write_test";
+      bool              writable;
+      {
+        std::ofstream test(probe, std::ios::binary);
+        test.put('x');
+        test.close();
+        writable = !test.fail() && fs::file_size(probe, error) == 1 && !error;
+      }
+      fs::remove(probe, error);
+      AssertThrow(writable,
+                  ExcMessage("Output/Directory '" + directory +
+                             "' is not writable (a one-byte test file could "
+                             "not be written: no permission or disk full)."));
+    }
+
+    /// The entries of `directory` this program wrote (files its manifest
+    /// lists or named as ours; the vtu, convergence and checkpoint
+    /// directories) and the others, the lock and the manifest aside.
+    std::pair<std::vector<std::filesystem::path>,
+              std::vector<std::filesystem::path>>
+    own_and_foreign_entries(const std::string &directory)
+    {
+      namespace fs = std::filesystem;
+      std::error_code       error;
+      std::vector<fs::path> own, foreign;
+      const auto            own_output = own_output_of(directory);
+      for (const auto &entry : fs::directory_iterator(directory, error))
+        if (entry.path().filename() != lock_file_name &&
+            entry.path().filename() != manifest_file_name)
+          ((entry.is_regular_file() &&
+            own_output(entry.path().filename().string())) ||
+               (entry.is_directory() &&
+                (is_checkpoint_directory(entry.path().filename().string()) ||
+                 entry.path().filename() == "vtu" ||
+                 entry.path().filename() == "convergence")) ?
+             own :
+             foreign)
+            .push_back(entry.path());
+      return {own, foreign};
+    }
+
+    /// A checkpoint directory is replaced as a whole when a checkpoint is
+    /// written: one that holds a file of the user's is refused, before
+    /// anything is removed.
+    void
+    refuse_foreign_checkpoint_files(
+      const std::string                        &directory,
+      const std::vector<std::filesystem::path> &own)
+    {
+      namespace fs = std::filesystem;
+      std::error_code error;
+      for (const auto &path : own)
+        if (fs::is_directory(path) && path.filename() != "vtu" &&
+            path.filename() != "convergence")
+          for (const auto &entry : fs::directory_iterator(path, error))
+            AssertThrow(
+              entry.is_regular_file() &&
+                (is_checkpoint_file(entry.path().filename().string()) ||
+                 entry.path().filename() == manifest_file_name),
+              ExcMessage("Output/Directory '" + directory + "' holds " +
+                         entry.path().string() +
+                         ", which this program did not write, in the "
+                         "directory it replaces with its checkpoints; "
+                         "move it or choose another directory."));
+    }
+
+    /// Remove exactly this program's files: no stale snapshot or summary
+    /// of an earlier run survives next to the new ones.
+    void
+    remove_earlier_run(const std::vector<std::filesystem::path> &own)
+    {
+      namespace fs = std::filesystem;
+      std::error_code error;
+      for (const auto &file : own)
+        {
+          if (file.filename() == "convergence")
+            {
+              remove_convergence_directory(file);
+              continue;
+            }
+          if (fs::is_directory(file))
+            {
+              remove_own_files(file,
+                               file.filename() == "vtu" ? own_output_of(file) :
+                                                          is_checkpoint_file);
+              continue;
+            }
+          fs::remove(file, error);
+          AssertThrow(!error,
+                      ExcMessage("Output/Directory: cannot remove the "
+                                 "earlier run's " +
+                                 file.string() + ": " + error.message()));
+        }
+    }
+  } // namespace
+
+
+
   void
   prepare_output_directory(const OutputParameters &output)
   {
-    namespace fs                = std::filesystem;
     const std::string directory = output.directory;
-    std::error_code   error;
-    fs::create_directories(directory, error);
-    AssertThrow(!error && fs::is_directory(directory),
-                ExcMessage("Output/Directory '" + directory +
-                           "' cannot be created: " + error.message()));
-
-    // One byte, written, closed and read back: an empty test file passes
-    // on a full disk.
-    const std::string probe = directory + "/.fgimpact_write_test";
-    bool              writable;
-    {
-      std::ofstream test(probe, std::ios::binary);
-      test.put('x');
-      test.close();
-      writable = !test.fail() && fs::file_size(probe, error) == 1 && !error;
-    }
-    fs::remove(probe, error);
-    AssertThrow(writable,
-                ExcMessage("Output/Directory '" + directory +
-                           "' is not writable (a one-byte test file could "
-                           "not be written: no permission or disk full)."));
-
-    std::vector<fs::path> own, foreign;
-    const auto            own_output = own_output_of(directory);
-    for (const auto &entry : fs::directory_iterator(directory, error))
-      if (entry.path().filename() != lock_file_name &&
-          entry.path().filename() != manifest_file_name)
-        ((entry.is_regular_file() &&
-          own_output(entry.path().filename().string())) ||
-             (entry.is_directory() &&
-              (is_checkpoint_directory(entry.path().filename().string()) ||
-               entry.path().filename() == "vtu" ||
-               entry.path().filename() == "convergence")) ?
-           own :
-           foreign)
-          .push_back(entry.path());
-    // A checkpoint directory is replaced as a whole when a checkpoint is
-    // written: one that holds a file of the user's is refused, before
-    // anything is removed.
-    for (const auto &path : own)
-      if (fs::is_directory(path) && path.filename() != "vtu" &&
-          path.filename() != "convergence")
-        for (const auto &entry : fs::directory_iterator(path, error))
-          AssertThrow(entry.is_regular_file() &&
-                        (is_checkpoint_file(entry.path().filename().string()) ||
-                         entry.path().filename() == manifest_file_name),
-                      ExcMessage("Output/Directory '" + directory + "' holds " +
-                                 entry.path().string() +
-                                 ", which this program did not write, in the "
-                                 "directory it replaces with its checkpoints; "
-                                 "move it or choose another directory."));
+    create_writable_directory(directory);
+    const auto [own, foreign] = own_and_foreign_entries(directory);
+    refuse_foreign_checkpoint_files(directory, own);
     if (!output.overwrite)
       AssertThrow(own.empty() && foreign.empty(),
                   ExcMessage("Output/Directory '" + directory +
                              "' is not empty and Output/Overwrite = false; "
                              "choose an empty directory or set Overwrite = "
                              "true."));
-    // Exactly this program's files: no stale snapshot or summary of an
-    // earlier run survives next to the new ones.
-    for (const auto &file : own)
-      {
-        if (file.filename() == "convergence")
-          {
-            remove_convergence_directory(file);
-            continue;
-          }
-        if (fs::is_directory(file))
-          {
-            remove_own_files(file,
-                             file.filename() == "vtu" ? own_output_of(file) :
-                                                        is_checkpoint_file);
-            continue;
-          }
-        fs::remove(file, error);
-        AssertThrow(!error,
-                    ExcMessage("Output/Directory: cannot remove the earlier "
-                               "run's " +
-                               file.string() + ": " + error.message()));
-      }
+    remove_earlier_run(own);
     // This run's manifest starts empty: the files just removed were the
     // earlier run's; a user's file with our name stays unlisted.
     reset_manifest(directory);

@@ -153,6 +153,12 @@ namespace fgimpact
     void
     report_checkpoints(const double loop_time) const;
 
+    /// The time steps from steps_done on (updated as they are done) until
+    /// the end, the ball's departure for good or a stop: agreed_stop()'s
+    /// value (0: none), the periodic checkpoints written.
+    int
+    run_steps(unsigned int &steps_done);
+
     /// Create the monitor (it opens the output files; on resume it
     /// continues them) with its observers and contact output; every rank
     /// stops if rank 0 could not open them.
