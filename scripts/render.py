@@ -162,6 +162,11 @@ def main():
             ball = pv.Transform(Input=sphere)
             ball.Transform = "Transform"
 
+    # Said in the titles: how the ball is placed.
+    ball_note = ("" if ball is None or resolved or not top else
+                 "\nthe ball rests on the magnified top node (the Hertz "
+                 "indentation is a law, not drawn)")
+
     def place_ball(t):
         if ball is not None and not resolved and top:
             ball.Transform.Translate = [0, 0, -factor * 1e-6 *
@@ -181,6 +186,13 @@ def main():
     title_display.Color = [0, 0, 0]
     title_display.FontSize = 14
     title_display.WindowLocation = "Upper Center"
+    # The colour rule and ranges, below the plate: on the colour bar's
+    # (vertical) title they ran over its tick labels.
+    note = pv.Text(Text="")
+    note_display = pv.Show(note, view)
+    note_display.Color = [0, 0, 0]
+    note_display.FontSize = 12
+    note_display.WindowLocation = "Lower Center"
 
     # One colour rule per field, for the stills and the animation alike:
     # a signed stress (sigma_*) on a diverging map centred on 0, from -M to
@@ -232,7 +244,7 @@ def main():
         lut.RescaleTransferFunction(low, high)
         lut.AutomaticRescaleRangeMode = "Never"
         here = shown_range(source, field, t)
-        label = "%s\n%s, [%.3g, %.3g] over the run\nhere [%.3g, %.3g]" % (
+        note.Text = "%s: %s, [%.3g, %.3g] over the run; here [%.3g, %.3g]" % (
             label, rule, low, high, here[0], here[1])
         display.SetScalarBarVisibility(view, True)
         bar = pv.GetScalarBar(lut, view)
@@ -286,8 +298,8 @@ def main():
     for field, label, name in pictures:
         if field in fields:
             colour(plate_display, field, label, name, plate, times, t_show)
-            set_title("Deformed plate (displacement x %.0f), %s" %
-                      (factor, label), t_show)
+            set_title("Deformed plate (displacement x %.0f), %s%s" %
+                      (factor, label, ball_note), t_show)
             save(name)
 
     # The section y = b/2 through the impact point.
@@ -349,7 +361,8 @@ def main():
            if "von_mises_MPa" in fields else "displacement (m)",
            "scene.pvsm and animation", plate, times, t_show)
     camera_3d()
-    set_title("Deformed plate (displacement x %.0f)" % factor, t_show)
+    set_title("Deformed plate (displacement x %.0f)%s" % (factor, ball_note),
+              t_show)
     pv.SaveState(os.path.join(out, "scene.pvsm"))
     written.append(os.path.join(out, "scene.pvsm"))
 
@@ -361,7 +374,8 @@ def main():
             t = min(times, key=lambda s: abs(s - t))
             view.ViewTime = t
             place_ball(t)
-            set_title("Deformed plate (displacement x %.0f)" % factor, t)
+            set_title("Deformed plate (displacement x %.0f)%s" %
+                      (factor, ball_note), t)
             save(os.path.join("animation", "frame_%04d.png" % k))
     with open(os.path.join(out, "colours.csv"), "w") as f:
         f.write("picture,field,map,low,high,shown_min,shown_max\n")
