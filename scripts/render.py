@@ -15,9 +15,10 @@ writes into OUTPUT_DIR/pictures (or --out):
   deformed_sigma_zz.png   the same, coloured by sigma_zz (MPa)
   section.png             the section y = b/2 through the impact point,
                           coloured by von Mises stress (MPa), at the peak
-  contact_pressure.png    the contact nodes seen from above, coloured by the
-                          contact pressure (MPa), at the peak (resolved
-                          contact only)
+  contact_pressure.png    the contact pressure (MPa) on the top face seen from
+                          above, interpolated between the contact nodes
+                          (dots), with isobars at 25, 50 and 75 % of the
+                          run's largest, at the peak (resolved contact only)
   plastic_strain.png      the equivalent plastic strain (when the files
                           hold it)
   animation/frame_NNNN.png  the deformed plate over the run (--frames, 0: none)
@@ -335,12 +336,28 @@ def main():
         nodes = pv.PVDReader(FileName=os.path.join(directory, "contact.pvd"))
         if ball_display is not None:
             pv.Hide(ball, view)
+        # A map on the top face, not a point cloud: the nodes' pressure
+        # interpolated on their Delaunay triangulation (in the plane they
+        # lie in, the undeformed top face), isobars at a quarter, half and
+        # three quarters of the run's largest pressure, the nodes as dots.
+        surface = pv.Delaunay2D(Input=nodes)
+        surface_display = pv.Show(surface, view)
+        colour(surface_display, "contact_pressure_MPa",
+               "contact pressure (MPa)", "contact_pressure.png", nodes,
+               pvd_times(os.path.join(directory, "contact.pvd")), t_show)
+        peak = rows[-1][4]  # the colour range's top: the run's largest
+        isobars = pv.Contour(Input=surface,
+                             ContourBy=["POINTS", "contact_pressure_MPa"],
+                             Isosurfaces=[f * peak for f in (0.25, 0.5, 0.75)])
+        isobar_display = pv.Show(isobars, view)
+        isobar_display.ColorArrayName = [None, ""]
+        isobar_display.AmbientColor = isobar_display.DiffuseColor = [0, 0, 0]
+        isobar_display.LineWidth = 1.5
         node_display = pv.Show(nodes, view)
         node_display.SetRepresentationType("Points")
-        node_display.PointSize = 8
-        colour(node_display, "contact_pressure_MPa", "contact pressure (MPa)",
-               "contact_pressure.png", nodes,
-               pvd_times(os.path.join(directory, "contact.pvd")), t_show)
+        node_display.ColorArrayName = [None, ""]
+        node_display.AmbientColor = node_display.DiffuseColor = [0.3, 0.3, 0.3]
+        node_display.PointSize = 2
         nodes.UpdatePipeline(t_show)
         nb = nodes.GetDataInformation().GetBounds()
         centre = [0.5 * (nb[0] + nb[1]), 0.5 * (nb[2] + nb[3]), nb[5]]
@@ -348,9 +365,11 @@ def main():
         view.CameraFocalPoint = centre
         view.CameraViewUp = [0, 1, 0]
         view.ResetCamera(False)
-        set_title("Contact pressure at the nodes", t_show)
+        set_title("Contact pressure on the top face (nodes as dots; isobars "
+                  "at 25, 50, 75 %% of %.0f MPa)" % peak, t_show)
         save("contact_pressure.png")
-        pv.Hide(nodes, view)
+        for source in (nodes, surface, isobars):
+            pv.Hide(source, view)
         if ball_display is not None:
             pv.Show(ball, view)
 
