@@ -38,8 +38,8 @@ check "a directory without solution.pvd refused (exit 2, one line)" \
   -s "Time integration/End time=120e-6" -s "Output/Log interval=0" \
   -s "Output/VTU interval=10" >/dev/null
 scripts/render.sh "$work/run" --frames 2 --size 640 400 >"$work/list"
-check "render.py lists 7 files (4 pictures, the state, 2 frames)" \
-  test "$(wc -l <"$work/list")" = 7
+check "render.py lists 9 files (6 pictures, the state, 2 frames)" \
+  test "$(wc -l <"$work/list")" = 9
 grep '\.png$' "$work/list" >"$work/pngs" || true
 cat >"$work/blank.py" <<'PY'
 import sys

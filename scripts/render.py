@@ -15,6 +15,10 @@ writes into OUTPUT_DIR/pictures (or --out):
   deformed_sigma_zz.png   the same, coloured by sigma_zz (MPa)
   section.png             the section y = b/2 through the impact point,
                           coloured by von Mises stress (MPa), at the peak
+  section_contact_von_mises.png, section_contact_sigma_zz.png
+                          the same section at the contact's scale (3 largest
+                          contact radii each side, true geometry), the
+                          plastic zone and the ball outlined
   contact_pressure.png    the contact pressure (MPa) on the top face seen from
                           above, interpolated between the contact nodes
                           (dots), with isobars at 25, 50 and 75 % of the
@@ -279,6 +283,77 @@ def main():
         pv.SaveScreenshot(path, view, ImageResolution=args.size)
         written.append(path)
 
+    def contact_scale_sections(origin, top_face):
+        """The section through the impact point at the contact's scale:
+        the true geometry (displacement x 1: magnified, the contact would
+        be distorted), 3 largest contact radii (summary.txt) each side,
+        von Mises and sigma_zz, the plastic zone (equivalent plastic strain
+        above 1e-6) and the ball's section (resolved contact) outlined."""
+        radius = 1e-3 * float(keys.get("max_contact_radius_mm", "nan"))
+        if not (math.isfinite(radius) and radius > 0):
+            return
+        true_plate = pv.WarpByVector(Input=plate,
+                                     Vectors=["POINTS", "displacement_m"],
+                                     ScaleFactor=1.0)
+        near = pv.Slice(Input=true_plate)
+        near.SliceType = "Plane"
+        near.SliceType.Origin = list(origin)
+        near.SliceType.Normal = [0, 1, 0]
+        near_display = pv.Show(near, view)
+        outlines = []
+        # The nodal (recovered) field: the cell field is constant in each
+        # cell, which has no isoline.
+        plastic = [f for f in ("equivalent_plastic_strain_nodal",
+                               "equivalent_plastic_strain") if f in fields]
+        if plastic:
+            outlines.append(pv.Contour(
+                Input=near, ContourBy=["POINTS", plastic[0]],
+                Isosurfaces=[1e-6]))
+        if resolved and ball is not None:
+            true_ball = pv.WarpByVector(Input=sphere,
+                                        Vectors=["POINTS", "displacement_m"],
+                                        ScaleFactor=1.0)
+            cut = pv.Slice(Input=true_ball)
+            cut.SliceType = "Plane"
+            cut.SliceType.Origin = list(origin)
+            cut.SliceType.Normal = [0, 1, 0]
+            outlines.append(cut)
+        # Moved a little towards the camera: lines in the section's plane
+        # would hide behind its surface.
+        outlines = [pv.Transform(Input=outline) for outline in outlines]
+        for outline in outlines:
+            outline.Transform = "Transform"
+            outline.Transform.Translate = [0, -0.05 * radius, 0]
+            d = pv.Show(outline, view)
+            d.ColorArrayName = [None, ""]
+            d.AmbientColor = d.DiffuseColor = [0, 0, 0]
+            d.LineWidth = 2
+        if ball_display is not None:
+            pv.Hide(ball, view)
+        focus = [origin[0], origin[1], top_face - 1.2 * radius]
+        view.CameraPosition = [focus[0], focus[1] - 10 * radius, focus[2]]
+        view.CameraFocalPoint = focus
+        view.CameraViewUp = [0, 0, 1]
+        view.CameraParallelProjection = 1
+        view.CameraParallelScale = 1.8 * radius
+        for field, label, name in [
+                ("von_mises_MPa", "von Mises stress (MPa)",
+                 "section_contact_von_mises.png"),
+                ("sigma_zz_MPa", "sigma_zz (MPa)",
+                 "section_contact_sigma_zz.png")]:
+            if field not in fields:
+                continue
+            colour(near_display, field, label, name, plate, times, t_show)
+            set_title("Section through the impact point at the contact's "
+                      "scale (a = %.3g mm; true geometry)%s" %
+                      (1e3 * radius, "; plastic zone outlined" if plastic
+                       else ""), t_show)
+            save(name)
+        for source in [near] + outlines:
+            pv.Hide(source, view)
+        if ball_display is not None:
+            pv.Show(ball, view)
+
     view.ViewTime = t_show
     place_ball(t_show)
     plate_display = pv.Show(warp, view)
@@ -329,6 +404,7 @@ def main():
               % factor, t_show)
     save("section.png")
     pv.Hide(section, view)
+    contact_scale_sections(section.SliceType.Origin, bounds[5])
     view.CameraParallelProjection = 0
 
     # The contact pressure, seen from above.
