@@ -18,7 +18,7 @@ writes into OUTPUT_DIR/pictures (or --out):
   section_contact_von_mises.png, section_contact_sigma_zz.png
                           the same section at the contact's scale (3 largest
                           contact radii each side, true geometry), the
-                          plastic zone and the ball outlined
+                          plastic zone shaded, the ball outlined
   contact_pressure.png    the contact pressure (MPa) on the top face seen from
                           above, interpolated between the contact nodes
                           (dots), with isobars at 25, 50 and 75 % of the
@@ -297,18 +297,34 @@ def main():
                                      ScaleFactor=1.0)
         near = pv.Slice(Input=true_plate)
         near.SliceType = "Plane"
-        near.SliceType.Origin = list(origin)
+        # Just beside the mesh plane y = b/2: through the cells, not along
+        # their faces (whose two sides would each give a polygon).
+        near.SliceType.Origin = [origin[0], origin[1] + 1e-3 * radius,
+                                 origin[2]]
         near.SliceType.Normal = [0, 1, 0]
         near_display = pv.Show(near, view)
         outlines = []
-        # The nodal (recovered) field: the cell field is constant in each
-        # cell, which has no isoline.
-        plastic = [f for f in ("equivalent_plastic_strain_nodal",
-                               "equivalent_plastic_strain") if f in fields]
+        # The plastic zone: the cells whose plastic strain (constant in a
+        # cell) is above 0, as summary.txt's plastic zone is measured,
+        # shaded white over the colours (an isoline of the nodal field
+        # would reach one element further out; the outline of cells of two
+        # refinement levels has T-junctions).
+        plastic = "equivalent_plastic_strain" in fields
+        zone = None
         if plastic:
-            outlines.append(pv.Contour(
-                Input=near, ContourBy=["POINTS", plastic[0]],
-                Isosurfaces=[1e-6]))
+            zone = pv.Threshold(Input=near)
+            zone.Scalars = ["POINTS", "equivalent_plastic_strain"]
+            zone.LowerThreshold = 1e-12
+            zone.UpperThreshold = 1e30
+            zone.ThresholdMethod = "Between"
+            zone.AllScalars = 1
+            zone = pv.Transform(Input=zone)
+            zone.Transform = "Transform"
+            zone.Transform.Translate = [0, -0.05 * radius, 0]
+            zone_display = pv.Show(zone, view)
+            zone_display.ColorArrayName = [None, ""]
+            zone_display.AmbientColor = zone_display.DiffuseColor = [1, 1, 1]
+            zone_display.Opacity = 0.35
         if resolved and ball is not None:
             true_ball = pv.WarpByVector(Input=sphere,
                                         Vectors=["POINTS", "displacement_m"],
@@ -346,10 +362,10 @@ def main():
             colour(near_display, field, label, name, plate, times, t_show)
             set_title("Section through the impact point at the contact's "
                       "scale (a = %.3g mm; true geometry)%s" %
-                      (1e3 * radius, "; plastic zone outlined" if plastic
-                       else ""), t_show)
+                      (1e3 * radius, "; plastic zone shaded white" if
+                       plastic else ""), t_show)
             save(name)
-        for source in [near] + outlines:
+        for source in [near] + outlines + ([zone] if zone else []):
             pv.Hide(source, view)
         if ball_display is not None:
             pv.Show(ball, view)
