@@ -30,6 +30,63 @@ namespace fgimpact
         thetas.push_back(theta);
       return thetas;
     }
+
+    /// A sphere's surface: its points and triangles.
+    struct SphereSurface
+    {
+      std::vector<Point<3>>                    points;
+      std::vector<std::array<unsigned int, 3>> triangles;
+    };
+
+    /// The ball's surface with its lowest point at `lowest` (m), radius R.
+    SphereSurface
+    sphere_surface(const Point<3> &lowest, const double R)
+    {
+      // A latitude-longitude triangulation: rings of 48 points and the two
+      // poles, at the reference position (touching the undeformed top face
+      // at the impact point); the point field displacement_m moves it by w,
+      // as WarpByVector moves the plate.  The rings are graded towards the
+      // lowest point, where the ball touches the plate (sphere_ring_angles():
+      // 70 rings): a contact of radius a = 0.01, 0.03, 0.05, 0.1 R spans 9,
+      // 14, 17, 22 of them, so the ball does not look like a cone at the
+      // contact's scale (24 even rings put the first at 7.5 degrees, 1.96 mm
+      // from the axis for R = 15 mm, beyond the default scene's a = 0.8 mm).
+      const std::vector<double> thetas   = sphere_ring_angles();
+      const unsigned int        n_rings  = thetas.size() + 1;
+      const unsigned int        n_around = 48;
+      const Point<3>            centre(lowest[0], lowest[1], lowest[2] + R);
+      std::vector<Point<3>>     points{centre + Point<3>(0, 0, -R)};
+      for (unsigned int i = 1; i < n_rings; ++i)
+        for (unsigned int j = 0; j < n_around; ++j)
+          {
+            const double theta = thetas[i - 1]; // from the bottom
+            const double phi   = 2. * numbers::PI * j / n_around;
+            points.push_back(centre +
+                             Point<3>(R * std::sin(theta) * std::cos(phi),
+                                      R * std::sin(theta) * std::sin(phi),
+                                      -R * std::cos(theta)));
+          }
+      points.push_back(centre + Point<3>(0, 0, R));
+      const unsigned int                       top = points.size() - 1;
+      std::vector<std::array<unsigned int, 3>> triangles;
+      const auto ring = [&](const unsigned int i, const unsigned int j) {
+        return 1 + (i - 1) * n_around + j % n_around;
+      };
+      for (unsigned int j = 0; j < n_around; ++j)
+        {
+          triangles.push_back({{0, ring(1, j + 1), ring(1, j)}});
+          triangles.push_back(
+            {{top, ring(n_rings - 1, j), ring(n_rings - 1, j + 1)}});
+          for (unsigned int i = 1; i + 1 < n_rings; ++i)
+            {
+              triangles.push_back(
+                {{ring(i, j), ring(i, j + 1), ring(i + 1, j)}});
+              triangles.push_back(
+                {{ring(i, j + 1), ring(i + 1, j + 1), ring(i + 1, j)}});
+            }
+        }
+      return {points, triangles};
+    }
   } // namespace
 
 
@@ -114,50 +171,8 @@ namespace fgimpact
                                  const double       w,
                                  const double       F) const
   {
-    // A latitude-longitude triangulation: rings of 48 points and the two
-    // poles, at the reference position (touching the undeformed top face
-    // at the impact point); the point field displacement_m moves it by w,
-    // as WarpByVector moves the plate.  The rings are graded towards the
-    // lowest point, where the ball touches the plate (sphere_ring_angles():
-    // 70 rings): a contact of radius a = 0.01, 0.03, 0.05, 0.1 R spans 9,
-    // 14, 17, 22 of them, so the ball does not look like a cone at the
-    // contact's scale (24 even rings put the first at 7.5 degrees, 1.96 mm
-    // from the axis for R = 15 mm, beyond the default scene's a = 0.8 mm).
-    const std::vector<double> thetas   = sphere_ring_angles();
-    const unsigned int        n_rings  = thetas.size() + 1;
-    const unsigned int        n_around = 48;
-    const Point<3>            centre(impact_point[0],
-                          impact_point[1],
-                          impact_point[2] + R);
-    std::vector<Point<3>>     points{centre + Point<3>(0, 0, -R)};
-    for (unsigned int i = 1; i < n_rings; ++i)
-      for (unsigned int j = 0; j < n_around; ++j)
-        {
-          const double theta = thetas[i - 1]; // from the bottom
-          const double phi   = 2. * numbers::PI * j / n_around;
-          points.push_back(centre +
-                           Point<3>(R * std::sin(theta) * std::cos(phi),
-                                    R * std::sin(theta) * std::sin(phi),
-                                    -R * std::cos(theta)));
-        }
-    points.push_back(centre + Point<3>(0, 0, R));
-    const unsigned int                       top = points.size() - 1;
-    std::vector<std::array<unsigned int, 3>> triangles;
-    const auto ring = [&](const unsigned int i, const unsigned int j) {
-      return 1 + (i - 1) * n_around + j % n_around;
-    };
-    for (unsigned int j = 0; j < n_around; ++j)
-      {
-        triangles.push_back({{0, ring(1, j + 1), ring(1, j)}});
-        triangles.push_back(
-          {{top, ring(n_rings - 1, j), ring(n_rings - 1, j + 1)}});
-        for (unsigned int i = 1; i + 1 < n_rings; ++i)
-          {
-            triangles.push_back({{ring(i, j), ring(i, j + 1), ring(i + 1, j)}});
-            triangles.push_back(
-              {{ring(i, j + 1), ring(i + 1, j + 1), ring(i + 1, j)}});
-          }
-      }
+    const auto [points, triangles] =
+      sphere_surface(impact_point, R); // at the reference position
 
     std::ostringstream out;
     out.precision(10);

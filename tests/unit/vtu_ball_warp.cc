@@ -13,7 +13,12 @@
 //  (3) warped by factor 1, every node with a positive contact pressure
 //      lies on the warped sphere: u_z + w - (R - sqrt(R^2 - r^2)) = 0 (the
 //      LCP's complementarity, R and the impact point taken from the
-//      sphere's file).
+//      sphere's file);
+//  (4) the ball as drawn at the contact's scale: its points on the sphere,
+//      at least 8 rings within the contact radius, and its facets there
+//      within 1 % of the impactor displacement w of the sphere (chord sag
+//      R (1 - cos(dtheta/2))); with 24 even rings the first lay beyond the
+//      contact and the sag was R dtheta^2/8 = 8 um against w = 38 um.
 // Before, the sphere was written at its true position without a point
 // field (a warped plate left it floating), and the nodes had none.
 
@@ -134,7 +139,7 @@ namespace fgimpact_unit_tests::vtu_ball_warp
     const auto plate_points = fgimpact_tests::read_points(file("solution", n));
     const auto plate_u =
       fgimpact_tests::read_array(file("solution", n), "displacement_m");
-    double       largest_uz = 0, worst_plate = 0, worst_gap = 0;
+    double       largest_uz = 0, worst_plate = 0, worst_gap = 0, a = 0;
     unsigned int matched = 0, active = 0;
     for (std::size_t j = 0; j < pressure.size(); ++j)
       largest_uz = std::max(largest_uz, std::abs(d[3 * j + 2]));
@@ -159,6 +164,7 @@ namespace fgimpact_unit_tests::vtu_ball_warp
             const double gap = R - std::sqrt(R * R - r2);
             worst_gap =
               std::max(worst_gap, std::abs(d[3 * j + 2] + w[n] - gap) / w[n]);
+            a = std::max(a, std::sqrt(r2));
             ++active;
           }
       }
@@ -176,6 +182,55 @@ namespace fgimpact_unit_tests::vtu_ball_warp
                 active,
                 worst_gap < 1e-6 ? "yes" : "NO",
                 gap_ok ? "yes" : "NO");
-    return sphere_ok && plate_ok && gap_ok ? 0 : 1;
+
+    // (4) The drawn ball at the contact's scale: every point on the sphere
+    // |p - c| = R, and the facets within the contact radius a (the nodes in
+    // contact above) depart from the sphere by less than 1 % of w: a chord
+    // between two rings dtheta apart sags R (1 - cos(dtheta/2)) below it.
+    const auto sphere =
+      fgimpact_tests::ascii_array(fgimpact_tests::file_text(file("sphere", n)),
+                                  "");
+    double zlow = 1e9;
+    for (std::size_t k = 2; k < sphere.size(); k += 3)
+      zlow = std::min(zlow, sphere[k]);
+    const double        zc           = zlow + R; // the centre
+    double              worst_radius = 0;
+    std::vector<double> thetas;
+    for (std::size_t k = 0; k < sphere.size(); k += 3)
+      {
+        const double dx = sphere[k] - x0, dy = sphere[k + 1] - y0,
+                     dz  = sphere[k + 2] - zc;
+        const double rho = std::sqrt(dx * dx + dy * dy + dz * dz);
+        worst_radius     = std::max(worst_radius, std::abs(rho - R) / R);
+        thetas.push_back(std::acos(std::clamp(-dz / rho, -1., 1.)));
+      }
+    std::sort(thetas.begin(), thetas.end());
+    thetas.erase(std::unique(thetas.begin(),
+                             thetas.end(),
+                             [](double s, double t) {
+                               return std::abs(s - t) < 1e-9;
+                             }),
+                 thetas.end());
+    unsigned int rings_inside = 0;
+    double       worst_sag    = 0;
+    for (std::size_t i = 1; i < thetas.size(); ++i)
+      if (thetas[i - 1] < 0.5 * M_PI && R * std::sin(thetas[i - 1]) < a)
+        {
+          // The lower hemisphere only (sin is small at the top pole too).
+          rings_inside += (R * std::sin(thetas[i]) < a);
+          worst_sag =
+            std::max(worst_sag,
+                     R * (1. - std::cos(0.5 * (thetas[i] - thetas[i - 1]))));
+        }
+    const bool ball_ok =
+      worst_radius < 1e-8 && rings_inside >= 8 && worst_sag < 1e-2 * w[n];
+    std::printf("the ball's points on the sphere (|p - c| - R below 1e-8 R: "
+                "%s); within the contact radius at least 8 rings (%s) and "
+                "facets within 1 %% of w of the sphere (%s): %s\n",
+                worst_radius < 1e-8 ? "yes" : "NO",
+                rings_inside >= 8 ? "yes" : "NO",
+                worst_sag < 1e-2 * w[n] ? "yes" : "NO",
+                ball_ok ? "yes" : "NO");
+    return sphere_ok && plate_ok && gap_ok && ball_ok ? 0 : 1;
   }
 } // namespace fgimpact_unit_tests::vtu_ball_warp
