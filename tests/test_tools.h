@@ -146,8 +146,10 @@ namespace fgimpact_tests
              const unsigned int           degree,
              const double                 n,
              const fgimpact::PropertyMode mode = fgimpact::PropertyMode::graded,
-             const double                 thickness    = 0.02,
-             const MPI_Comm               communicator = MPI_COMM_WORLD)
+             const double                 thickness       = 0.02,
+             const MPI_Comm               communicator    = MPI_COMM_WORLD,
+             const double                 poissons_ratio  = 0.3,
+             const bool                   mean_dilatation = false)
   {
     fgimpact::PlateGeometry::Parameters gp;
     gp.thickness      = thickness;
@@ -157,8 +159,10 @@ namespace fgimpact_tests
     fgimpact::FunctionallyGradedMaterial::Parameters mp;
     mp.power_law_index = n;
     mp.property_mode   = mode;
+    mp.poissons_ratio  = poissons_ratio;
     fgimpact::PlateModel::Parameters fp;
-    fp.degree = degree;
+    fp.degree          = degree;
+    fp.mean_dilatation = mean_dilatation;
 
     PlateCase c;
     c.geometry = std::make_unique<fgimpact::PlateGeometry>(gp);

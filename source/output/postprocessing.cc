@@ -73,6 +73,7 @@ namespace fgimpact
                      plate.get_mpi_communicator());
     v_ghosted.reinit(u_ghosted);
     a_ghosted.reinit(u_ghosted);
+    postprocessor.set_displacement(u_ghosted);
   }
 
 

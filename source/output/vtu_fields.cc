@@ -28,7 +28,8 @@ namespace fgimpact
   StressPostprocessor::StressPostprocessor(const PlateModel &plate,
                                            const bool        with_stress,
                                            const bool        with_material)
-    : mapping(plate.get_mapping())
+    : plate(plate)
+    , mapping(plate.get_mapping())
     , properties(plate.get_fe().base_element(0), {}, plate.get_material())
     , hooke(plate.get_material())
     , with_stress(with_stress)
@@ -85,6 +86,9 @@ namespace fgimpact
     std::vector<Vector<double>>              &computed_quantities) const
   {
     const auto cell = inputs.template get_cell<3>();
+    // B-bar: the cell's mean dilatation replaces the pointwise one.
+    const bool   bbar  = with_stress && plate.uses_mean_dilatation();
+    const double theta = bbar ? plate.mean_dilatation(cell, *displacement) : 0.;
     for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
       {
         const auto [E, nu, rho] =
@@ -97,6 +101,8 @@ namespace fgimpact
               for (unsigned int b = a; b < 3; ++b)
                 eps[a][b] = 0.5 * (inputs.solution_gradients[p][a][b] +
                                    inputs.solution_gradients[p][b][a]);
+            if (bbar)
+              eps = PlateModel::with_dilatation(eps, theta);
             SymmetricTensor<2, 3> sigma = hooke.stress(E, nu, eps);
             if (plastic)
               {

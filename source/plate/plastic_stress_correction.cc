@@ -48,6 +48,7 @@ namespace fgimpact
                   {}};
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     cell->get_dof_indices(dofs);
+    const auto mean_div = plate.mean_divergence(cell);
     for (unsigned int i = 0; i < dofs.size(); ++i)
       {
         record.local_index.push_back(static_cast<int>(dofs[i]));
@@ -56,6 +57,8 @@ namespace fgimpact
         SymmetricTensor<2, 3> eps;
         for (unsigned int d = 0; d < 3; ++d)
           eps[c][d] += (c == d ? 1. : 0.5) * g[d];
+        if (mean_div.size() > 0) // B-bar
+          eps = PlateModel::with_dilatation(eps, mean_div[i]);
         record.strain.push_back(eps);
       }
     records.push_back(std::move(record));

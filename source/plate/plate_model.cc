@@ -9,6 +9,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <fgimpact/base/selection.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <algorithm>
@@ -17,6 +18,15 @@
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// Finite element/Volumetric strain: true for the cell's mean.
+    const SelectionTable<bool> volumetric_strain_names = {{"pointwise", false},
+                                                          {"cell mean", true}};
+  } // namespace
+
+
+
   void
   PlateModel::Parameters::declare_parameters(ParameterHandler &prm)
   {
@@ -28,6 +38,18 @@ namespace fgimpact
                         "Polynomial degree p of the FE_Q(p)^3 displacement "
                         "element: 1 = the paper's 8-node graded brick, 2 = "
                         "27-node brick.");
+      prm.declare_entry(
+        "Volumetric strain",
+        "pointwise",
+        volumetric_strain_names.pattern(),
+        "The element's volumetric strain div u, in the stiffness and in every "
+        "strain and stress written: pointwise (the paper's fully integrated "
+        "brick), or the cell's mean (B-bar: Simo and Hughes' mean "
+        "dilatation, Abaqus' C3D8 with selectively reduced integration), "
+        "which does not lock when the material is nearly incompressible "
+        "(Poisson's ratio near 1/2, or J2 plastic flow: a pressure that "
+        "jumps sign between nodes). With Degree = 2 one constant per cell "
+        "is a poor pressure (Q2-P0): use it with Degree = 1.");
     }
     prm.leave_subsection();
   }
@@ -39,6 +61,8 @@ namespace fgimpact
   {
     prm.enter_subsection("Finite element");
     degree = prm.get_integer("Degree");
+    mean_dilatation =
+      volumetric_strain_names.value(prm.get("Volumetric strain"));
     prm.leave_subsection();
   }
 
@@ -285,6 +309,10 @@ namespace fgimpact
     FullMatrix<double>                   cell_M(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
     std::vector<double>                  E, nu, rho;
+    std::vector<double>                  mean_div(dofs_per_cell);
+    if (parameters.mean_dilatation)
+      mean_divergences.assign(triangulation.n_active_cells() * dofs_per_cell,
+                              0.);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -325,12 +353,90 @@ namespace fgimpact
                 }
             }
 
+          if (parameters.mean_dilatation)
+            replace_dilatation(fe_values, E, nu, cell_K, mean_div, cell);
           cell->get_dof_indices(local_dofs);
           constraints.distribute_local_to_global(cell_K, local_dofs, stiffness);
           constraints.distribute_local_to_global(cell_M, local_dofs, mass);
         }
     stiffness.compress(VectorOperation::add);
     mass.compress(VectorOperation::add);
+  }
+
+
+
+  void
+  PlateModel::replace_dilatation(
+    const FEValues<3>                         &fe_values,
+    const std::vector<double>                 &E,
+    const std::vector<double>                 &nu,
+    FullMatrix<double>                        &cell_K,
+    std::vector<double>                       &mean_div,
+    const DoFHandler<3>::active_cell_iterator &cell)
+  {
+    // K_ij = int kappa div_i div_j + 2 mu dev eps_i : dev eps_j with
+    // kappa = lambda + 2 mu / 3; B-bar replaces div_i div_j by the cell
+    // means: K_ij - int kappa div_i div_j + (int kappa) m_i m_j.
+    const unsigned int n      = fe.n_dofs_per_cell();
+    double             volume = 0, kappa_sum = 0;
+    std::fill(mean_div.begin(), mean_div.end(), 0.);
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      {
+        const double kappa =
+          HookeLaw::lambda(E[q], nu[q]) + 2. / 3. * HookeLaw::mu(E[q], nu[q]);
+        const double JxW = fe_values.JxW(q);
+        volume += JxW;
+        kappa_sum += kappa * JxW;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const unsigned int ci  = fe.system_to_component_index(i).first;
+            const double       d_i = fe_values.shape_grad(i, q)[ci];
+            mean_div[i] += d_i * JxW;
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const unsigned int cj = fe.system_to_component_index(j).first;
+                cell_K(i, j) -=
+                  kappa * d_i * fe_values.shape_grad(j, q)[cj] * JxW;
+              }
+          }
+      }
+    for (auto &m : mean_div)
+      m /= volume;
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        cell_K(i, j) += kappa_sum * mean_div[i] * mean_div[j];
+    std::copy(mean_div.begin(),
+              mean_div.end(),
+              mean_divergences.begin() + cell->active_cell_index() * n);
+  }
+
+
+
+  ArrayView<const double>
+  PlateModel::mean_divergence(
+    const DoFHandler<3>::active_cell_iterator &cell) const
+  {
+    if (mean_divergences.empty())
+      return {};
+    const unsigned int n = fe.n_dofs_per_cell();
+    return {mean_divergences.data() + cell->active_cell_index() * n, n};
+  }
+
+
+
+  double
+  PlateModel::mean_dilatation(const DoFHandler<3>::active_cell_iterator &cell,
+                              const TrilinosWrappers::MPI::Vector &u) const
+  {
+    const auto weights = mean_divergence(cell);
+    if (weights.size() == 0)
+      return 0.;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    cell->get_dof_indices(dofs);
+    double theta = 0;
+    for (unsigned int i = 0; i < dofs.size(); ++i)
+      theta += weights[i] * u(dofs[i]);
+    return theta;
   }
 
 

@@ -194,6 +194,7 @@ namespace fgimpact
           fe_values.reinit(cell);
           properties.values(cell, E, nu, rho);
           cell->get_dof_indices(dofs);
+          const auto mean_div = plate.mean_divergence(cell);
           // The same points for a plastic run's correction.
           for (unsigned int q = 0; q < sdofs.size(); ++q)
             {
@@ -220,6 +221,8 @@ namespace fgimpact
                 SymmetricTensor<2, 3> eps;
                 for (unsigned int d = 0; d < 3; ++d)
                   eps[c][d] += (c == d ? 1. : 0.5) * g[d];
+                if (mean_div.size() > 0) // B-bar
+                  eps = PlateModel::with_dilatation(eps, mean_div[i]);
                 const SymmetricTensor<2, 3> sigma =
                   hooke.stress(E[q], nu[q], eps);
                 // A node on a cut plane: the odd shear components of
@@ -323,6 +326,12 @@ namespace fgimpact
             continue;
           fe_values.reinit(cell);
           properties.values(cell, E, nu, rho);
+          // B-bar: the strains of z_S and of phi_j take the cell's mean
+          // dilatation, as the stiffness a(z_S, u) does.
+          const auto mean_div = plate.mean_divergence(cell);
+          double     theta_s  = 0;
+          for (unsigned int i = 0; i < mean_div.size(); ++i)
+            theta_s += supported[i] * mean_div[i];
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               // z_S and its strain at q.
@@ -336,6 +345,8 @@ namespace fgimpact
                     for (unsigned int d = 0; d < 3; ++d)
                       eps_s[2][d] += (d == 2 ? 1. : 0.5) * g[d];
                   }
+              if (mean_div.size() > 0)
+                eps_s = PlateModel::with_dilatation(eps_s, theta_s);
               const SymmetricTensor<2, 3> sigma_s =
                 hooke.stress(E[q], nu[q], eps_s);
               const double JxW = fe_values.JxW(q);
@@ -350,6 +361,8 @@ namespace fgimpact
                   double     k = 0;
                   for (unsigned int d = 0; d < 3; ++d)
                     k += sigma_s[c][d] * g[d];
+                  if (mean_div.size() > 0) // + (m_j - div phi_j) tr sigma / 3
+                    k += (mean_div[j] - g[c]) * trace(sigma_s) / 3.;
                   w[0](dofs[j]) += k * JxW;
                   if (c == 2)
                     w[1](dofs[j]) +=

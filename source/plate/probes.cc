@@ -146,6 +146,7 @@ namespace fgimpact
                                         quadrature.get_points(),
                                         plate.get_material());
         properties.values(cell, E, nu, rho);
+        const auto mean_div = plate.mean_divergence(cell);
 
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
@@ -156,6 +157,8 @@ namespace fgimpact
             SymmetricTensor<2, 3> eps;
             for (unsigned int d = 0; d < 3; ++d)
               eps[c][d] += (c == d ? 1. : 0.5) * g[d];
+            if (mean_div.size() > 0) // B-bar
+              eps = PlateModel::with_dilatation(eps, mean_div[i]);
             const SymmetricTensor<2, 3> sigma =
               HookeLaw::stress(E[0], nu[0], eps);
             for (unsigned int s = 0; s < 6; ++s)

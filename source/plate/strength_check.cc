@@ -75,6 +75,14 @@ namespace fgimpact
               gradients.emplace_back(n_points * n_scalar * 3);
               gradient_bound.push_back(0.);
               extents.push_back(extent);
+              mean_divergences.emplace_back();
+              const auto m = plate.mean_divergence(cell);
+              for (unsigned int i = 0; i < m.size(); ++i)
+                {
+                  const auto [c, s] = fe.system_to_component_index(i);
+                  mean_divergences.back().resize(n_dofs);
+                  mean_divergences.back()[s * 3 + c] = m[i];
+                }
             }
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
@@ -172,7 +180,11 @@ namespace fgimpact
           plasticity && plasticity->holds_plastic_strain(active_index[c]);
         if (!plastic_cell && can_skip(c, cell_u))
           continue;
-        const double *const grad = gradients[table[c]].data();
+        const double *const grad  = gradients[table[c]].data();
+        const auto         &m     = mean_divergences[table[c]];
+        double              theta = 0; // B-bar: the cell's mean dilatation
+        for (unsigned int i = 0; i < m.size(); ++i)
+          theta += m[i] * cell_u[i];
         for (unsigned int q = 0; q < n_points; ++q)
           {
             const unsigned int k = c * n_points + q;
@@ -187,6 +199,12 @@ namespace fgimpact
                 for (unsigned int a = 0; a < 3; ++a)
                   for (unsigned int d = 0; d < 3; ++d)
                     G[a][d] += us[a] * g[d];
+              }
+            if (!m.empty())
+              {
+                const double shift = (theta - G[0][0] - G[1][1] - G[2][2]) / 3.;
+                for (unsigned int a = 0; a < 3; ++a)
+                  G[a][a] += shift;
               }
             double yield_stress = 0.;
             if (plasticity && metal[k])

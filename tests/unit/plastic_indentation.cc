@@ -56,7 +56,8 @@ namespace fgimpact_unit_tests::plastic_indentation
            const double                                     tolerance = 1e-3,
            const std::function<void(const PlateModel &,
                                     const TrilinosWrappers::MPI::Vector &,
-                                    const PlasticPlate &)> &inspect   = {})
+                                    const PlasticPlate &)> &inspect   = {},
+           const bool mean_dilatation                                 = false)
     {
       PlateGeometry::Parameters gp;
       gp.length         = 0.04;
@@ -77,7 +78,8 @@ namespace fgimpact_unit_tests::plastic_indentation
       const PlateGeometry              geometry(gp, {{true, true}});
       const FunctionallyGradedMaterial material(mp, gp.thickness);
       PlateModel::Parameters           fe;
-      fe.degree = degree;
+      fe.degree          = degree;
+      fe.mean_dilatation = mean_dilatation; // B-bar
       PlateModel      plate(fe, geometry, material, MPI_COMM_WORLD);
       LocalRefinement refinement;
       refinement.centre = Point<3>(gp.length / 2, gp.width / 2, gp.thickness);
@@ -238,71 +240,78 @@ namespace fgimpact_unit_tests::plastic_indentation
     // mesh and with 2 contact levels, whose refinement reaches the bottom:
     // hanging nodes between a clamped and a free vertex carry half of the
     // support (z_S = 1/2 there).
-    for (const unsigned int levels : {0u, 2u})
-      {
-        double       with_plastic = 0, elastic_part = 0;
-        unsigned int half_supported = 0;
-        const auto   r =
-          indent(100e6,
-                 1,
-                 levels,
-                 0.003,
-                 1e-9,
-                 [&](const PlateModel                    &plate,
-                     const TrilinosWrappers::MPI::Vector &u,
-                     const PlasticPlate                  &plasticity) {
-                   TrilinosWrappers::MPI::Vector u_distributed = u, zero;
-                   plate.get_constraints().distribute(u_distributed);
-                   plate.initialize_vector(zero);
-                   half_supported = count_half_supported(plate);
-                   ProbeSet probes(plate, {});
-                   // The part's reactions, scaled to the whole plate (the
-                   // force's).
-                   const double whole = 1. / plate.get_geometry().share();
-                   elastic_part =
-                     whole * probes.evaluate(u_distributed, zero, zero, false)
-                               .support_reaction_z;
-                   probes.set_plasticity(plasticity);
-                   with_plastic =
-                     whole * probes.evaluate(u_distributed, zero, zero, false)
-                               .support_reaction_z;
-                 });
-        const double peak = r.contact_force;
-        const bool   zero = std::abs(with_plastic) < 1e-6 * peak;
-        std::printf("unloaded 3 mm plate on a clamped bottom, %u contact "
-                    "levels (%u hanging z DoFs half on the support; peak "
-                    "force %.0f N, largest plastic strain %.3f): support "
-                    "reaction below 1e-6 of the peak force: %s; without the "
-                    "plastic part a(z_S, u) is %.1f %% of it\n",
-                    levels,
-                    half_supported,
-                    peak,
-                    r.plastic.max_plastic_strain,
-                    zero ? "yes" : "NO",
-                    100 * std::abs(elastic_part) / peak);
-        if (std::getenv("FGIMPACT_VERBOSE"))
-          std::fprintf(stderr, "reaction %.3e N\n", with_plastic);
-        ok = ok && zero && std::abs(elastic_part) > 1e-3 * peak &&
-             (levels == 0 || half_supported > 0);
-      }
+    // Both elements: B-bar's reaction weights take the cell's mean
+    // dilatation, as its stiffness.
+    for (const bool bbar : {false, true})
+      for (const unsigned int levels : {0u, 2u})
+        {
+          double       with_plastic = 0, elastic_part = 0;
+          unsigned int half_supported = 0;
+          const auto   r              = indent(
+            100e6,
+            1,
+            levels,
+            0.003,
+            1e-9,
+            [&](const PlateModel                    &plate,
+                const TrilinosWrappers::MPI::Vector &u,
+                const PlasticPlate                  &plasticity) {
+              TrilinosWrappers::MPI::Vector u_distributed = u, zero;
+              plate.get_constraints().distribute(u_distributed);
+              plate.initialize_vector(zero);
+              half_supported = count_half_supported(plate);
+              ProbeSet probes(plate, {});
+              // The part's reactions, scaled to the whole plate (the
+              // force's).
+              const double whole = 1. / plate.get_geometry().share();
+              elastic_part =
+                whole * probes.evaluate(u_distributed, zero, zero, false)
+                          .support_reaction_z;
+              probes.set_plasticity(plasticity);
+              with_plastic =
+                whole * probes.evaluate(u_distributed, zero, zero, false)
+                          .support_reaction_z;
+            },
+            bbar);
+          const double peak = r.contact_force;
+          const bool   zero = std::abs(with_plastic) < 1e-6 * peak;
+          std::printf("unloaded 3 mm plate on a clamped bottom%s, %u contact "
+                      "levels (%u hanging z DoFs half on the support; peak "
+                      "force %.0f N, largest plastic strain %.3f): support "
+                      "reaction below 1e-6 of the peak force: %s; without the "
+                      "plastic part a(z_S, u) is %.1f %% of it\n",
+                      bbar ? " (B-bar)" : "",
+                      levels,
+                      half_supported,
+                      peak,
+                      r.plastic.max_plastic_strain,
+                      zero ? "yes" : "NO",
+                      100 * std::abs(elastic_part) / peak);
+          if (std::getenv("FGIMPACT_VERBOSE"))
+            std::fprintf(stderr, "reaction %.3e N\n", with_plastic);
+          ok = ok && zero && std::abs(elastic_part) > 1e-3 * peak &&
+               (levels == 0 || half_supported > 0);
+        }
 
-    // 4. The elastic limit of the plastic path.
-    {
-      const auto   elastic = indent(0);
-      const auto   stiff   = indent(1e12);
-      const double error =
-        std::abs(stiff.contact_force / elastic.contact_force - 1);
-      // The forces to 1e-6 relative and the difference as a verdict: the
-      // solves' round-off (the CPU's) must not reach the printed digits.
-      std::printf("yield strength 1e12 Pa: force %.2f N, elastic solve "
-                  "%.2f N, difference below 1e-9: %s; first yield %s\n",
-                  stiff.contact_force,
-                  elastic.contact_force,
-                  error < 1e-9 ? "yes" : "NO",
-                  std::isnan(stiff.plastic.first_yield_force) ? "none" :
-                                                                "FOUND");
-      ok = ok && error < 1e-9 && std::isnan(stiff.plastic.first_yield_force);
-    }
+    // 4. The elastic limit of the plastic path, with either element.
+    for (const bool bbar : {false, true})
+      {
+        const auto   elastic = indent(0, 1, 5, 0.02, 1e-3, {}, bbar);
+        const auto   stiff   = indent(1e12, 1, 5, 0.02, 1e-3, {}, bbar);
+        const double error =
+          std::abs(stiff.contact_force / elastic.contact_force - 1);
+        // The forces to 1e-6 relative and the difference as a verdict: the
+        // solves' round-off (the CPU's) must not reach the printed digits.
+        std::printf("yield strength 1e12 Pa%s: force %.2f N, elastic solve "
+                    "%.2f N, difference below 1e-9: %s; first yield %s\n",
+                    bbar ? " (B-bar)" : "",
+                    stiff.contact_force,
+                    elastic.contact_force,
+                    error < 1e-9 ? "yes" : "NO",
+                    std::isnan(stiff.plastic.first_yield_force) ? "none" :
+                                                                  "FOUND");
+        ok = ok && error < 1e-9 && std::isnan(stiff.plastic.first_yield_force);
+      }
 
     std::printf("%s\n", ok ? "all checks passed" : "CHECK FAILED");
     return ok ? 0 : 1;

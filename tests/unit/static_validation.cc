@@ -4,7 +4,11 @@
 // q0 sin(pi x/a) sin(pi y/b).
 //  - Q1: mid-plane centre deflection error under uniform refinement in all
 //    three directions, observed order of convergence (expected 2);
-//  - Q2: within 0.5 % of exact on a 20 x 10 x 4 mesh.
+//  - Q2: within 0.5 % of exact on a 20 x 10 x 4 mesh;
+//  - B-bar (Finite element/Volumetric strain = cell mean) on a nearly
+//    incompressible homogeneous plate (nu = 0.499), where the pointwise
+//    brick locks: order 2 and within 1 % on 40 x 20 x 8, and the pointwise
+//    brick's error at least 5 x as large there.
 // Set FGIMPACT_VERBOSE=1 to print the numbers.
 
 #include <deal.II/base/mpi.h>
@@ -33,16 +37,69 @@ namespace fgimpact_unit_tests::static_validation
                   const unsigned int nx,
                   const unsigned int ny,
                   const unsigned int nz,
-                  const PropertyMode mode = PropertyMode::graded)
+                  const PropertyMode mode            = PropertyMode::graded,
+                  const double       nu              = 0.3,
+                  const bool         mean_dilatation = false)
     {
-      const auto  c = fgimpact_tests::make_plate(nx, ny, nz, degree, n, mode);
-      const auto &plate = *c.plate;
+      const auto c = fgimpact_tests::make_plate(
+        nx, ny, nz, degree, n, mode, 0.02, MPI_COMM_WORLD, nu, mean_dilatation);
+      const auto                       &plate = *c.plate;
       StaticAnalysis::Parameters        sp;
       EffectiveMatrixSolver::Parameters lp;
       lp.type = EffectiveMatrixSolver::Type::cholmod;
       StaticAnalysis analysis(sp, lp, plate, Point<2>(0.1, 0.05));
       analysis.solve();
       return analysis.get_results().deflection[1];
+    }
+
+
+    /// Q1 with the cell's mean dilatation (B-bar) against the pointwise
+    /// brick on a homogeneous plate with nu = 0.499 (kappa / mu = 500).
+    bool
+    nearly_incompressible()
+    {
+      const double nu = 0.499;
+      const double exact =
+        -fgimpact_exact::static_sinusoidal(
+           fgimpact_exact::homogeneous_plate(70e9, 2707., nu), 1e6, 1, 1)
+           .W(0.01);
+      std::printf("homogeneous plate, nu = 0.499, exact mid-plane deflection "
+                  "%.4f um\n",
+                  exact * 1e6);
+      double bbar[3], pointwise[3];
+      for (unsigned int l = 0; l < 3; ++l)
+        {
+          const unsigned int k = 1u << l;
+          bbar[l]              = std::abs(
+            fe_deflection(
+              0., 1, 10 * k, 5 * k, 2 * k, PropertyMode::graded, nu, true) /
+              exact -
+            1);
+          pointwise[l] = std::abs(
+            fe_deflection(
+              0., 1, 10 * k, 5 * k, 2 * k, PropertyMode::graded, nu, false) /
+              exact -
+            1);
+          if (verbose)
+            std::fprintf(stderr,
+                         "  Q1 %ux%ux%u: B-bar error %.3e, pointwise %.3e\n",
+                         10 * k,
+                         5 * k,
+                         2 * k,
+                         bbar[l],
+                         pointwise[l]);
+        }
+      const double order    = std::log2(bbar[1] / bbar[2]);
+      const bool   order_ok = std::abs(order - 2.) < 0.2;
+      const bool   close    = bbar[2] < 1e-2;
+      const bool   locks    = pointwise[2] > 5. * bbar[2];
+      std::printf("  Q1 B-bar observed order of convergence 2 +- 0.2: %s; "
+                  "within 1 %% on 40 x 20 x 8: %s; the pointwise brick's "
+                  "error at least 5 x B-bar's there: %s\n",
+                  order_ok ? "yes" : "NO",
+                  close ? "yes" : "NO",
+                  locks ? "yes" : "NO");
+      return order_ok && close && locks;
     }
   } // namespace
 
@@ -96,6 +153,7 @@ namespace fgimpact_unit_tests::static_validation
                     q2_ok ? "yes" : "NO");
         ok = ok && order_ok && q2_ok;
       }
+    ok = nearly_incompressible() && ok;
     std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
     return ok ? 0 : 1;
   }

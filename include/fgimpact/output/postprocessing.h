@@ -63,12 +63,22 @@ namespace fgimpact
       plastic = &plasticity;
     }
 
+    /// The ghosted displacement DataOut evaluates, whose cell means give
+    /// the dilatation of a plate with B-bar (PlateModel::mean_dilatation()).
+    void
+    set_displacement(const TrilinosWrappers::MPI::Vector &u_ghosted)
+    {
+      displacement = &u_ghosted;
+    }
+
   private:
-    const Mapping<3>          &mapping;
-    const PropertyInterpolator properties;
-    const HookeLaw             hooke;
-    const bool                 with_stress, with_material;
-    const PlasticPlate        *plastic = nullptr;
+    const PlateModel                    &plate;
+    const Mapping<3>                    &mapping;
+    const PropertyInterpolator           properties;
+    const HookeLaw                       hooke;
+    const bool                           with_stress, with_material;
+    const PlasticPlate                  *plastic      = nullptr;
+    const TrilinosWrappers::MPI::Vector *displacement = nullptr;
   };
 
 

@@ -1,18 +1,22 @@
 #ifndef fgimpact_plate_model_h
 #define fgimpact_plate_model_h
 
+#include <deal.II/base/array_view.h>
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/symmetric_tensor.h>
 
 #include <deal.II/distributed/tria.h>
 
 #include <deal.II/dofs/dof_handler.h>
 
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
@@ -40,6 +44,11 @@ namespace fgimpact
     struct Parameters
     {
       unsigned int degree = 1;
+
+      /// B-bar (Finite element/Volumetric strain = cell mean): the
+      /// volumetric strain is the cell's mean (Simo-Hughes' mean
+      /// dilatation, Abaqus' selectively reduced C3D8).
+      bool mean_dilatation = false;
 
       static void
       declare_parameters(ParameterHandler &prm);
@@ -141,6 +150,38 @@ namespace fgimpact
     dof_values(const TrilinosWrappers::MPI::Vector        &v,
                const std::vector<types::global_dof_index> &dofs) const;
 
+    /**
+     * B-bar (Parameters::mean_dilatation): in every strain the plate
+     * evaluates, the cell's mean volumetric strain theta = (1/|K|) int_K
+     * div u replaces the pointwise div u, so that a nearly incompressible
+     * (plastic) flow does not lock the element's pressure.  These are the
+     * weights of theta over the cell's DoFs, (1/|K|) int_K div phi_i in
+     * the cell's DoF order (1/m); empty when the strain is pointwise.
+     * Locally owned cells only.
+     */
+    ArrayView<const double>
+    mean_divergence(const DoFHandler<3>::active_cell_iterator &cell) const;
+
+    /// True if the plate's strains take the cell's mean dilatation.
+    bool
+    uses_mean_dilatation() const
+    {
+      return parameters.mean_dilatation;
+    }
+
+    /// theta of a ghosted vector on a locally owned cell (0 without
+    /// B-bar: use with_mean_dilatation() only when it applies).
+    double
+    mean_dilatation(const DoFHandler<3>::active_cell_iterator &cell,
+                    const TrilinosWrappers::MPI::Vector       &u) const;
+
+    /// eps with its trace replaced by theta: eps + (theta - tr eps)/3 1.
+    static SymmetricTensor<2, 3>
+    with_dilatation(const SymmetricTensor<2, 3> &eps, const double theta)
+    {
+      return eps + ((theta - trace(eps)) / 3.) * unit_symmetric_tensor<3>();
+    }
+
     /// The MPI rank that owns a DoF. Collective.
     unsigned int
     dof_owner(const types::global_dof_index dof) const;
@@ -216,6 +257,15 @@ namespace fgimpact
     make_constraints(AffineConstraints<double> &c, const bool with_cuts) const;
     void
     assemble();
+    /// B-bar: the pointwise dilatation of cell_K replaced by the cell's
+    /// mean; its weights into mean_divergences.
+    void
+    replace_dilatation(const FEValues<3>                         &fe_values,
+                       const std::vector<double>                 &E,
+                       const std::vector<double>                 &nu,
+                       FullMatrix<double>                        &cell_K,
+                       std::vector<double>                       &mean_div,
+                       const DoFHandler<3>::active_cell_iterator &cell);
 
     const Parameters                  parameters;
     const PlateGeometry              &geometry;
@@ -231,6 +281,8 @@ namespace fgimpact
     TrilinosWrappers::SparseMatrix          stiffness, mass;
     TrilinosWrappers::MPI::Vector           cut_coupling;
     LocalRefinement                         refinement;
+    /// mean_divergence() of every locally owned cell, by active index.
+    std::vector<double> mean_divergences;
 
     void
     assemble_cut_mass_coupling();

@@ -119,6 +119,9 @@ namespace fgimpact
     std::vector<double> gradient_bound;
     /// Per table: the cell's extents (m).
     std::vector<std::array<double, 3>> extents;
+    /// Per table, with B-bar (PlateModel::mean_divergence()): the weights
+    /// of the cell's mean dilatation over its DoFs, in the order s * 3 + c.
+    std::vector<std::vector<double>> mean_divergences;
     /// Per checked cell, over its points (strength included, so the
     /// factors bound ratios): the von Mises stress per |dev eps| of the
     /// metal-rich points; of the ceramic-rich points sigma_1 per
