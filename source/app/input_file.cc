@@ -2,6 +2,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <fgimpact/app/input_file.h>
+#include <fgimpact/app/prm_names.h>
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/files.h>
 
@@ -64,166 +65,6 @@ namespace fgimpact
         else if (i + 1 == text.size() || text[i + 1] != '\n')
           clean += '\n';
       return clean;
-    }
-
-    std::string
-    join(const std::vector<std::string> &parts, const std::string &separator)
-    {
-      std::string joined;
-      for (std::size_t i = 0; i < parts.size(); ++i)
-        joined += (i ? separator : "") + parts[i];
-      return joined;
-    }
-
-    /// A line without its comment (deal.II's rule: from the first '#' not
-    /// escaped as "\#"), trimmed.
-    std::string
-    strip_comment(const std::string &line)
-    {
-      std::size_t pos = 0;
-      while ((pos = line.find('#', pos)) != std::string::npos && pos > 0 &&
-             line[pos - 1] == '\\')
-        ++pos;
-      return Utilities::trim(line.substr(0, pos));
-    }
-
-    /// Does line start with keyword (lower or upper case) and a blank?
-    bool
-    starts_with_keyword(const std::string &line, const std::string &keyword)
-    {
-      std::string upper = keyword;
-      for (char &c : upper)
-        c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-      return line.size() > keyword.size() &&
-             (line.compare(0, keyword.size(), keyword) == 0 ||
-              line.compare(0, keyword.size(), upper) == 0) &&
-             std::isspace(static_cast<unsigned char>(line[keyword.size()]));
-    }
-
-    /// Every declared entry and subsection, by full path ("A/B/name").
-    struct DeclaredNames
-    {
-      std::map<std::string, std::vector<std::string>> entries;
-      std::vector<std::string>                        subsections;
-    };
-
-    DeclaredNames
-    declared_names(const ParameterHandler &prm)
-    {
-      std::ostringstream text;
-      prm.print_parameters(text, ParameterHandler::ShortPRM);
-      DeclaredNames            names;
-      std::vector<std::string> path;
-      std::istringstream       in(text.str());
-      for (std::string line; std::getline(in, line);)
-        {
-          line = strip_comment(line);
-          if (starts_with_keyword(line, "subsection"))
-            {
-              path.push_back(Utilities::trim(line.substr(10)));
-              names.subsections.push_back(join(path, "/"));
-            }
-          else if (line == "end" && !path.empty())
-            path.pop_back();
-          else if (starts_with_keyword(line, "set"))
-            {
-              std::vector<std::string> components = path;
-              components.push_back(
-                Utilities::trim(line.substr(3, line.find('=') - 3)));
-              names.entries[join(components, "/")] = components;
-            }
-        }
-      return names;
-    }
-
-    std::string
-    lower(std::string s)
-    {
-      for (char &c : s)
-        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-      return s;
-    }
-
-    /// Edit distance (insert, delete, substitute), ignoring case.
-    unsigned int
-    edit_distance(const std::string &a_in, const std::string &b_in)
-    {
-      const std::string         a = lower(a_in), b = lower(b_in);
-      std::vector<unsigned int> row(b.size() + 1);
-      for (unsigned int j = 0; j <= b.size(); ++j)
-        row[j] = j;
-      for (unsigned int i = 1; i <= a.size(); ++i)
-        {
-          unsigned int diagonal = row[0];
-          row[0]                = i;
-          for (unsigned int j = 1; j <= b.size(); ++j)
-            {
-              const unsigned int above = row[j];
-              row[j]                   = std::min({row[j] + 1,
-                                                   row[j - 1] + 1,
-                                                   diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-              diagonal                 = above;
-            }
-        }
-      return row[b.size()];
-    }
-
-    /// The candidate closest to given, if close enough to be a misspelling.
-    std::string
-    closest(const std::string              &given,
-            const std::vector<std::string> &candidates)
-    {
-      const unsigned int limit =
-        std::max<unsigned int>(2, static_cast<unsigned int>(given.size()) / 3);
-      std::string  best;
-      unsigned int best_distance = limit + 1;
-      for (const std::string &candidate : candidates)
-        {
-          const unsigned int d = edit_distance(given, candidate);
-          if (d < best_distance)
-            {
-              best          = candidate;
-              best_distance = d;
-            }
-        }
-      return best;
-    }
-
-    std::string
-    did_you_mean(const std::string &suggestion)
-    {
-      return suggestion.empty() ? "" : " (did you mean '" + suggestion + "'?)";
-    }
-
-    /**
-     * The suggestion for an undeclared entry `name` in subsection `path`:
-     * the closest entry of that subsection, else an entry of that name (or
-     * close to it) in another subsection, by full path.
-     */
-    std::string
-    suggest_entry(const DeclaredNames &names,
-                  const std::string   &path,
-                  const std::string   &name)
-    {
-      std::vector<std::string> here, full, last;
-      for (const auto &[full_path, components] : names.entries)
-        {
-          const std::string section =
-            full_path.substr(0, full_path.size() - components.back().size());
-          if (section == (path.empty() ? "" : path + "/"))
-            here.push_back(components.back());
-          full.push_back(full_path);
-          last.push_back(components.back());
-        }
-      std::string suggestion = closest(name, here);
-      if (suggestion.empty())
-        {
-          const std::string near = closest(name, last);
-          for (std::size_t i = 0; i < last.size() && !near.empty(); ++i)
-            if (last[i] == near)
-              return full[i];
-        }
-      return suggestion;
     }
 
     std::string
@@ -305,8 +146,8 @@ namespace fgimpact
     for (std::string line; std::getline(in, line);)
       {
         ++line_number;
-        const std::string content = strip_comment(line);
-        if (!starts_with_keyword(content, "include"))
+        const std::string content = prm_names::strip_comment(line);
+        if (!prm_names::starts_with_keyword(content, "include"))
           {
             expanded_text += line + "\n";
             origins.push_back({filename, line_number});
@@ -395,13 +236,13 @@ namespace fgimpact
   std::string
   InputFile::find_undeclared_name(const ParameterHandler &prm) const
   {
-    const DeclaredNames      names = declared_names(prm);
-    std::vector<std::string> path;
-    std::istringstream       in(expanded_text);
-    unsigned int             index = 0;
+    const prm_names::DeclaredNames names = prm_names::declared_names(prm);
+    std::vector<std::string>       path;
+    std::istringstream             in(expanded_text);
+    unsigned int                   index = 0;
     for (std::string line; std::getline(in, line); ++index)
       {
-        const std::string content = strip_comment(line);
+        const std::string content = prm_names::strip_comment(line);
         const std::string where =
           index < origins.size() ?
             "line " + std::to_string(origins[index].line) +
@@ -409,12 +250,12 @@ namespace fgimpact
                                              " of " + origins[index].file) +
               ": " :
             "";
-        const std::string here = join(path, "/");
-        if (starts_with_keyword(content, "subsection"))
+        const std::string here = prm_names::join(path, "/");
+        if (prm_names::starts_with_keyword(content, "subsection"))
           {
             const std::string section = Utilities::trim(content.substr(10));
             path.push_back(section);
-            const std::string full = join(path, "/");
+            const std::string full = prm_names::join(path, "/");
             if (std::find(names.subsections.begin(),
                           names.subsections.end(),
                           full) == names.subsections.end())
@@ -428,7 +269,8 @@ namespace fgimpact
                       here.empty() ? s : s.substr(here.size() + 1));
                 return where + "no subsection '" + section + "' " +
                        quoted_section(here) +
-                       did_you_mean(closest(section, siblings));
+                       prm_names::did_you_mean(
+                         prm_names::closest(section, siblings));
               }
           }
         else if (content == "end" || content == "END")
@@ -436,7 +278,7 @@ namespace fgimpact
             if (!path.empty())
               path.pop_back();
           }
-        else if (starts_with_keyword(content, "set"))
+        else if (prm_names::starts_with_keyword(content, "set"))
           {
             const std::string entry =
               Utilities::trim(content.substr(3, content.find('=') - 3));
@@ -444,7 +286,8 @@ namespace fgimpact
             if (names.entries.count(full) == 0)
               return where + "no entry '" + entry + "' " +
                      quoted_section(here) +
-                     did_you_mean(suggest_entry(names, here, entry));
+                     prm_names::did_you_mean(
+                       prm_names::suggest_entry(names, here, entry));
           }
       }
     return "";
@@ -464,25 +307,25 @@ namespace fgimpact
     const std::string path  = Utilities::trim(assignment.substr(0, eq));
     const std::string value = Utilities::trim(assignment.substr(eq + 1));
 
-    const DeclaredNames names = declared_names(prm);
-    const auto          entry = names.entries.find(path);
+    const prm_names::DeclaredNames names = prm_names::declared_names(prm);
+    const auto                     entry = names.entries.find(path);
     if (entry == names.entries.end())
       {
         std::vector<std::string> all;
         for (const auto &e : names.entries)
           all.push_back(e.first);
-        std::string suggestion = closest(path, all);
+        std::string suggestion = prm_names::closest(path, all);
         if (suggestion.empty())
           {
             const auto slash = path.rfind('/');
-            suggestion       = suggest_entry(names,
-                                       "",
-                                       slash == std::string::npos ?
-                                               path :
-                                               path.substr(slash + 1));
+            suggestion       = prm_names::suggest_entry(names,
+                                                  "",
+                                                  slash == std::string::npos ?
+                                                          path :
+                                                          path.substr(slash + 1));
           }
         throw ExcMessage(what + "no entry '" + path + "' is declared" +
-                         did_you_mean(suggestion));
+                         prm_names::did_you_mean(suggestion));
       }
     const std::vector<std::string> &components = entry->second;
     for (std::size_t i = 0; i + 1 < components.size(); ++i)

@@ -150,6 +150,10 @@ namespace fgimpact
     sparsity.compress();
     stiffness.reinit(sparsity);
     mass.reinit(sparsity);
+    if (parameters.mean_dilatation)
+      mean_divergences.assign(triangulation.n_active_cells() *
+                                fe.n_dofs_per_cell(),
+                              0.);
     assemble();
     if (geometry.is_cut(0) || geometry.is_cut(1))
       assemble_cut_mass_coupling();
@@ -309,10 +313,6 @@ namespace fgimpact
     FullMatrix<double>                   cell_M(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
     std::vector<double>                  E, nu, rho;
-    std::vector<double>                  mean_div(dofs_per_cell);
-    if (parameters.mean_dilatation)
-      mean_divergences.assign(triangulation.n_active_cells() * dofs_per_cell,
-                              0.);
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -354,89 +354,13 @@ namespace fgimpact
             }
 
           if (parameters.mean_dilatation)
-            replace_dilatation(fe_values, E, nu, cell_K, mean_div, cell);
+            replace_dilatation(fe_values, E, nu, cell, cell_K);
           cell->get_dof_indices(local_dofs);
           constraints.distribute_local_to_global(cell_K, local_dofs, stiffness);
           constraints.distribute_local_to_global(cell_M, local_dofs, mass);
         }
     stiffness.compress(VectorOperation::add);
     mass.compress(VectorOperation::add);
-  }
-
-
-
-  void
-  PlateModel::replace_dilatation(
-    const FEValues<3>                         &fe_values,
-    const std::vector<double>                 &E,
-    const std::vector<double>                 &nu,
-    FullMatrix<double>                        &cell_K,
-    std::vector<double>                       &mean_div,
-    const DoFHandler<3>::active_cell_iterator &cell)
-  {
-    // K_ij = int kappa div_i div_j + 2 mu dev eps_i : dev eps_j with
-    // kappa = lambda + 2 mu / 3; B-bar replaces div_i div_j by the cell
-    // means: K_ij - int kappa div_i div_j + (int kappa) m_i m_j.
-    const unsigned int n      = fe.n_dofs_per_cell();
-    double             volume = 0, kappa_sum = 0;
-    std::fill(mean_div.begin(), mean_div.end(), 0.);
-    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
-      {
-        const double kappa =
-          HookeLaw::lambda(E[q], nu[q]) + 2. / 3. * HookeLaw::mu(E[q], nu[q]);
-        const double JxW = fe_values.JxW(q);
-        volume += JxW;
-        kappa_sum += kappa * JxW;
-        for (unsigned int i = 0; i < n; ++i)
-          {
-            const unsigned int ci  = fe.system_to_component_index(i).first;
-            const double       d_i = fe_values.shape_grad(i, q)[ci];
-            mean_div[i] += d_i * JxW;
-            for (unsigned int j = 0; j < n; ++j)
-              {
-                const unsigned int cj = fe.system_to_component_index(j).first;
-                cell_K(i, j) -=
-                  kappa * d_i * fe_values.shape_grad(j, q)[cj] * JxW;
-              }
-          }
-      }
-    for (auto &m : mean_div)
-      m /= volume;
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < n; ++j)
-        cell_K(i, j) += kappa_sum * mean_div[i] * mean_div[j];
-    std::copy(mean_div.begin(),
-              mean_div.end(),
-              mean_divergences.begin() + cell->active_cell_index() * n);
-  }
-
-
-
-  ArrayView<const double>
-  PlateModel::mean_divergence(
-    const DoFHandler<3>::active_cell_iterator &cell) const
-  {
-    if (mean_divergences.empty())
-      return {};
-    const unsigned int n = fe.n_dofs_per_cell();
-    return {mean_divergences.data() + cell->active_cell_index() * n, n};
-  }
-
-
-
-  double
-  PlateModel::mean_dilatation(const DoFHandler<3>::active_cell_iterator &cell,
-                              const TrilinosWrappers::MPI::Vector &u) const
-  {
-    const auto weights = mean_divergence(cell);
-    if (weights.size() == 0)
-      return 0.;
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    cell->get_dof_indices(dofs);
-    double theta = 0;
-    for (unsigned int i = 0; i < dofs.size(); ++i)
-      theta += weights[i] * u(dofs[i]);
-    return theta;
   }
 
 

@@ -180,9 +180,8 @@ namespace fgimpact
           plasticity && plasticity->holds_plastic_strain(active_index[c]);
         if (!plastic_cell && can_skip(c, cell_u))
           continue;
-        const double *const grad  = gradients[table[c]].data();
-        const auto         &m     = mean_divergences[table[c]];
-        double              theta = 0; // B-bar: the cell's mean dilatation
+        const auto &m     = mean_divergences[table[c]];
+        double      theta = 0; // B-bar: the cell's mean dilatation
         for (unsigned int i = 0; i < m.size(); ++i)
           theta += m[i] * cell_u[i];
         for (unsigned int q = 0; q < n_points; ++q)
@@ -190,22 +189,9 @@ namespace fgimpact
             const unsigned int k = c * n_points + q;
             if (inverse_strength[k] == 0.)
               continue;
-            // G_cd = sum_s u_sc dN_s/dx_d.
-            double G[3][3] = {};
-            for (unsigned int s = 0; s < n_scalar; ++s)
-              {
-                const double *const g  = grad + (q * n_scalar + s) * 3;
-                const double *const us = cell_u.data() + 3 * s;
-                for (unsigned int a = 0; a < 3; ++a)
-                  for (unsigned int d = 0; d < 3; ++d)
-                    G[a][d] += us[a] * g[d];
-              }
-            if (!m.empty())
-              {
-                const double shift = (theta - G[0][0] - G[1][1] - G[2][2]) / 3.;
-                for (unsigned int a = 0; a < 3; ++a)
-                  G[a][a] += shift;
-              }
+            double G[3][3];
+            displacement_gradient(
+              c, q, cell_u, m.empty() ? nullptr : &theta, G);
             double yield_stress = 0.;
             if (plasticity && metal[k])
               yield_stress = plasticity->yield_stress(points[k][2], 0.);
@@ -224,6 +210,36 @@ namespace fgimpact
               }
             check_point(k, G, t, yield_stress);
           }
+      }
+  }
+
+
+
+  void
+  StrengthCheck::displacement_gradient(const unsigned int         c,
+                                       const unsigned int         q,
+                                       const std::vector<double> &cell_u,
+                                       const double *const        theta,
+                                       double                     G[3][3]) const
+  {
+    // G_cd = sum_s u_sc dN_s/dx_d.
+    const double *const grad = gradients[table[c]].data();
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int d = 0; d < 3; ++d)
+        G[a][d] = 0.;
+    for (unsigned int s = 0; s < n_scalar; ++s)
+      {
+        const double *const g  = grad + (q * n_scalar + s) * 3;
+        const double *const us = cell_u.data() + 3 * s;
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int d = 0; d < 3; ++d)
+            G[a][d] += us[a] * g[d];
+      }
+    if (theta != nullptr) // B-bar: the trace is the cell's mean
+      {
+        const double shift = (*theta - G[0][0] - G[1][1] - G[2][2]) / 3.;
+        for (unsigned int a = 0; a < 3; ++a)
+          G[a][a] += shift;
       }
   }
 

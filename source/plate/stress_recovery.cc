@@ -216,12 +216,7 @@ namespace fgimpact
           fe_values.reinit(cell);
           fe_values[displacement].get_function_symmetric_gradients(u_ghosted,
                                                                    eps);
-          if (plate.uses_mean_dilatation())
-            {
-              const double theta = plate.mean_dilatation(cell, u_ghosted);
-              for (auto &e : eps)
-                e = PlateModel::with_dilatation(e, theta);
-            }
+          plate.apply_mean_dilatation(cell, u_ghosted, eps); // B-bar
           properties.values(cell, E, nu, rho);
           const DoFHandler<3>::active_cell_iterator scalar_cell(
             &dof_handler.get_triangulation(),

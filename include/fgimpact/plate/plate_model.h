@@ -175,6 +175,14 @@ namespace fgimpact
     mean_dilatation(const DoFHandler<3>::active_cell_iterator &cell,
                     const TrilinosWrappers::MPI::Vector       &u) const;
 
+    /// With B-bar, every eps of a locally owned cell with its trace
+    /// replaced by the cell's mean dilatation of the ghosted u; else
+    /// nothing.
+    void
+    apply_mean_dilatation(const DoFHandler<3>::active_cell_iterator &cell,
+                          const TrilinosWrappers::MPI::Vector       &u,
+                          std::vector<SymmetricTensor<2, 3>>        &eps) const;
+
     /// eps with its trace replaced by theta: eps + (theta - tr eps)/3 1.
     static SymmetricTensor<2, 3>
     with_dilatation(const SymmetricTensor<2, 3> &eps, const double theta)
@@ -258,14 +266,14 @@ namespace fgimpact
     void
     assemble();
     /// B-bar: the pointwise dilatation of cell_K replaced by the cell's
-    /// mean; its weights into mean_divergences.
+    /// mean (source/plate/mean_dilatation.cc); its weights into
+    /// mean_divergences.
     void
     replace_dilatation(const FEValues<3>                         &fe_values,
                        const std::vector<double>                 &E,
                        const std::vector<double>                 &nu,
-                       FullMatrix<double>                        &cell_K,
-                       std::vector<double>                       &mean_div,
-                       const DoFHandler<3>::active_cell_iterator &cell);
+                       const DoFHandler<3>::active_cell_iterator &cell,
+                       FullMatrix<double>                        &cell_K);
 
     const Parameters                  parameters;
     const PlateGeometry              &geometry;

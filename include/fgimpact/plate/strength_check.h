@@ -87,6 +87,15 @@ namespace fgimpact
     void
     add_point(const Point<3> &x, const double E, const double nu);
 
+    /// The displacement gradient at point q of owned cell c (cell_u in the
+    /// order s * 3 + c); with theta (B-bar), its trace replaced by it.
+    void
+    displacement_gradient(const unsigned int         c,
+                          const unsigned int         q,
+                          const std::vector<double> &cell_u,
+                          const double *const        theta,
+                          double                     G[3][3]) const;
+
     /// The point k's stress from its displacement gradient G at time t
     /// (with the plastic strain taken off), against its strength, or for
     /// a plastic metal point against `yield_stress` (Pa) if positive.

@@ -239,6 +239,15 @@ namespace fgimpact
 
 
 
+  /// The implicit scheme (source/time/implicit_newmark_stepper.cc): Newmark
+  /// with the contact's Newton block-eliminated.
+  std::unique_ptr<TimeStepper>
+  create_implicit_newmark_stepper(
+    const TimeStepper::Parameters           &parameters,
+    const EffectiveMatrixSolver::Parameters &solver,
+    const PlateModel                        &plate,
+    const ContactModel                      &contact);
+
   /// The explicit scheme (source/time/central_difference_stepper.cc);
   /// contact_stiffness (N/m) bounds the contact's stiffening of the
   /// contact DoFs (ContactModel::stiffness_bound()).
