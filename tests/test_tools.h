@@ -11,6 +11,8 @@
 #include <fgimpact/app/run.h>
 #include <fgimpact/study/simulator.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -29,6 +31,41 @@ namespace fgimpact_tests
     fgimpact::ImpactResults          results;
     std::vector<std::vector<double>> history;
   };
+
+  /// A whole file as it is on disk ("" if it cannot be read).
+  inline std::string
+  read_text(const std::string &filename)
+  {
+    std::ifstream     in(filename, std::ios::binary);
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    return buffer.str();
+  }
+
+  /// Two histories' difference: the largest over the columns of max_i
+  /// |a_ic - b_ic| / max_i |b_ic| (b the reference; columns of zeros are
+  /// left out, since a column that crosses zero has no pointwise relative
+  /// error); 1 if the row counts differ or b is empty.
+  inline double
+  history_difference(const std::vector<std::vector<double>> &a,
+                     const std::vector<std::vector<double>> &b)
+  {
+    if (a.size() != b.size() || b.empty())
+      return 1.;
+    double worst = 0.;
+    for (unsigned int c = 0; c < b[0].size(); ++c)
+      {
+        double scale = 0, difference = 0;
+        for (unsigned int n = 0; n < b.size(); ++n)
+          {
+            scale      = std::max(scale, std::abs(b[n][c]));
+            difference = std::max(difference, std::abs(a[n][c] - b[n][c]));
+          }
+        if (scale > 0)
+          worst = std::max(worst, difference / scale);
+      }
+    return worst;
+  }
 
   /// summary.txt's entries, key -> text (the provenance comments left
   /// out).

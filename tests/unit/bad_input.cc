@@ -18,6 +18,7 @@
 #include <string>
 #include <sys/stat.h>
 #include <sys/wait.h>
+#include <test_tools.h>
 #include <vector>
 
 namespace fgimpact_unit_tests::bad_input
@@ -137,14 +138,7 @@ namespace fgimpact_unit_tests::bad_input
               "convergence/base_20x12_level_3/summary.txt"};
     }
 
-    std::string
-    read(const std::string &filename)
-    {
-      std::ifstream     in(filename, std::ios::binary);
-      std::stringstream buffer;
-      buffer << in.rdbuf();
-      return buffer.str();
-    }
+    using fgimpact_tests::read_text;
 
     /// Nothing half-written in dir: no temporary file, every history.csv
     /// row has the header's number of fields and ends with a newline, and
@@ -159,7 +153,7 @@ namespace fgimpact_unit_tests::bad_input
           return false;
       // (Regular files only: history.csv may be a link to /dev/full.)
       const std::string history = fs::is_regular_file(dir + "/history.csv") ?
-                                    read(dir + "/history.csv") :
+                                    read_text(dir + "/history.csv") :
                                     "";
       if (!history.empty())
         {
@@ -175,7 +169,7 @@ namespace fgimpact_unit_tests::bad_input
         }
       if (fs::is_regular_file(dir + "/summary.txt"))
         {
-          const std::string summary = read(dir + "/summary.txt");
+          const std::string summary = read_text(dir + "/summary.txt");
           if (summary.find("status = ") == std::string::npos ||
               summary.find("nan") != std::string::npos ||
               summary.find("inf") != std::string::npos)
@@ -752,7 +746,7 @@ namespace fgimpact_unit_tests::bad_input
       const bool crashed   = !WIFEXITED(status) || exit_code > 128;
       crashes += crashed ? 1 : 0;
 
-      const std::string text       = read("case.stderr");
+      const std::string text       = read_text("case.stderr");
       const auto        lines      = std::count(text.begin(), text.end(), '\n');
       const bool        right_code = exit_code == c.exit_code;
       // A refusal or a warning: exactly one line, naming the parameter.
@@ -761,18 +755,19 @@ namespace fgimpact_unit_tests::bad_input
       const bool named    = text.find(c.must_name) != std::string::npos;
       bool       clean    = output_is_clean(dir);
       if (c.exit_code == 1)
-        clean = clean && (c.setup == Setup::not_empty ?
-                            !fs::exists(dir + "/history.csv") :
-                          c.setup == Setup::user_checkpoint ?
-                            !fs::exists(dir + "/history.csv") &&
-                              read(dir + "/checkpoint/mydata.bin") == "mine\n" :
-                          c.setup == Setup::directory_is_a_file ?
-                            fs::is_regular_file(dir) :
-                            !fs::exists(dir));
+        clean =
+          clean &&
+          (c.setup == Setup::not_empty ?
+             !fs::exists(dir + "/history.csv") :
+           c.setup == Setup::user_checkpoint ?
+             !fs::exists(dir + "/history.csv") &&
+               read_text(dir + "/checkpoint/mydata.bin") == "mine\n" :
+           c.setup == Setup::directory_is_a_file ? fs::is_regular_file(dir) :
+                                                   !fs::exists(dir));
       if (c.exit_code == 0)
         {
           // A run that completed; a quantity that does not exist is 'none'.
-          const std::string summary = read(dir + "/summary.txt");
+          const std::string summary = read_text(dir + "/summary.txt");
           clean =
             clean && summary.find("status = completed") != std::string::npos;
           if (c.setup == Setup::stale_files)
@@ -780,9 +775,9 @@ namespace fgimpact_unit_tests::bad_input
               // Exactly the earlier run's files went; every decoy stayed.
               // (summary.txt is this run's again.)
               for (const auto &name : stale_names())
-                clean = clean && read(dir + "/" + name) != "stale\n";
+                clean = clean && read_text(dir + "/" + name) != "stale\n";
               for (const auto &name : decoy_names())
-                clean = clean && read(dir + "/" + name) == "mine\n";
+                clean = clean && read_text(dir + "/" + name) == "mine\n";
               clean =
                 clean && !fs::exists(dir + "/checkpoint.old/rank_0000.bin");
               // An earlier converged run's level without a user's file went.
@@ -795,9 +790,9 @@ namespace fgimpact_unit_tests::bad_input
               // user's file with our exact name stayed (issue 40: it was
               // removed).
               for (const auto &name : listed_names())
-                clean = clean && read(dir + "/" + name) != "stale\n";
+                clean = clean && read_text(dir + "/" + name) != "stale\n";
               for (const auto &name : unlisted_names())
-                clean = clean && read(dir + "/" + name) == "mine\n";
+                clean = clean && read_text(dir + "/" + name) == "mine\n";
             }
           // Not written, and said so in summary.txt's warnings (it was
           // dropped without a word).
@@ -812,7 +807,7 @@ namespace fgimpact_unit_tests::bad_input
             {
               // Every mode found: no 0 Hz (LAPACK's failure used to leave
               // zeros), six rows.
-              const std::string csv = read(dir + "/frequencies.csv");
+              const std::string csv = read_text(dir + "/frequencies.csv");
               clean = clean && csv.find(",0.0000,") == std::string::npos &&
                       std::count(csv.begin(), csv.end(), '\n') == 7;
             }
@@ -826,16 +821,15 @@ namespace fgimpact_unit_tests::bad_input
       // The log warned that the step cannot resolve the contact.
       if (c.name == std::string("time step longer than the contact") ||
           c.name == std::string("time step of 1/8 of the contact"))
-        clean =
-          clean &&
-          read("case.stdout").find("WARNING: Time integration/Time step") !=
-            std::string::npos;
+        clean = clean && read_text("case.stdout")
+                             .find("WARNING: Time integration/Time step") !=
+                           std::string::npos;
       // A failed run (numerical or I/O, also in set-up) always leaves a
       // summary.txt marked failed, unless summary.txt itself is what
       // cannot be written.
       if (c.exit_code == 2 && c.full_file != std::string("summary.txt.tmp"))
         clean = clean && fs::is_regular_file(dir + "/summary.txt") &&
-                read(dir + "/summary.txt").find("status = failed") !=
+                read_text(dir + "/summary.txt").find("status = failed") !=
                   std::string::npos;
       (c.exit_code == 0 ? ran : refused) += right_code ? 1 : 0;
 

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <test_tools.h>
 
 namespace fgimpact_unit_tests::command_line
 {
@@ -37,14 +38,7 @@ namespace fgimpact_unit_tests::command_line
       return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     }
 
-    std::string
-    read(const std::string &filename)
-    {
-      std::ifstream     in(filename);
-      std::stringstream buffer;
-      buffer << in.rdbuf();
-      return buffer.str();
-    }
+    using fgimpact_tests::read_text;
 
     void
     write(const std::string &filename, const std::string &text)
@@ -126,7 +120,7 @@ namespace fgimpact_unit_tests::command_line
     std::string
     history(const std::string &out)
     {
-      return read(out + "/history.csv");
+      return read_text(out + "/history.csv");
     }
   } // namespace
 
@@ -156,14 +150,14 @@ namespace fgimpact_unit_tests::command_line
     // --version and no arguments.
     {
       const int         code = run("--version");
-      const std::string out  = read("cli.stdout");
+      const std::string out  = read_text("cli.stdout");
       check("--version exits 0 and names program, commit, deal.II, Trilinos",
             code == 0 && contains(out, "fgimpact ") &&
               contains(out, "git commit ") && contains(out, "deal.II 9.") &&
               contains(out, "Trilinos "));
       const int code_none = run("");
       check("no argument: exit 1 and the usage",
-            code_none == 1 && contains(read("cli.stderr"), "Usage:"));
+            code_none == 1 && contains(read_text("cli.stderr"), "Usage:"));
     }
 
     // The base run, the edited file, and the same edit by -s.
@@ -190,8 +184,9 @@ namespace fgimpact_unit_tests::command_line
     {
       const int    code = run("cli_study.prm --study 'Impactor/Initial "
                               "velocity=1,2'");
-      const double diff = csv_difference(read("cli_study/case_001/history.csv"),
-                                         history("cli_edited"));
+      const double diff =
+        csv_difference(read_text("cli_study/case_001/history.csv"),
+                       history("cli_edited"));
       // A verdict, not the difference (in units of the last printed digit).
       // The case runs as a convolution (Study/Method = auto), which agrees
       // with the time loop to 1e-11 relative (study_convolution): a value at
@@ -201,7 +196,7 @@ namespace fgimpact_unit_tests::command_line
                   diff <= 1.01 ? "yes" : "NO");
       check("--study: exit 0, study.csv with a header and 2 cases, the case's "
             "history.csv equal to the separate run's",
-            code == 0 && n_lines(read("cli_study/study.csv")) == 3 &&
+            code == 0 && n_lines(read_text("cli_study/study.csv")) == 3 &&
               diff <= 1.01);
     }
 
@@ -220,8 +215,9 @@ namespace fgimpact_unit_tests::command_line
     {
       const int    code     = run("cli_zip.prm");
       const int    code_one = run("cli_zip_one.prm");
-      const double diff = csv_difference(read("cli_zip/case_001/history.csv"),
-                                         history("cli_zip_one"));
+      const double diff =
+        csv_difference(read_text("cli_zip/case_001/history.csv"),
+                       history("cli_zip_one"));
       std::printf("Study subsection, zip, time loop: case 1 against the "
                   "separate run: history.csv the same in every printed digit: "
                   "%s\n",
@@ -229,7 +225,7 @@ namespace fgimpact_unit_tests::command_line
       check("Study subsection (zip, time loop): exit 0, 2 cases in study.csv, "
             "case 1 equal to the separate run",
             code == 0 && code_one == 0 &&
-              n_lines(read("cli_zip/study.csv")) == 3 && diff == 0. &&
+              n_lines(read_text("cli_zip/study.csv")) == 3 && diff == 0. &&
               !fs::exists("cli_zip/case_002"));
       const std::string first = history("cli_zip/case_001");
       fs::remove_all("cli_zip/case_001");
@@ -248,15 +244,15 @@ namespace fgimpact_unit_tests::command_line
       const int code =
         run("cli_fail.prm --study 'Time integration/Time step=2e-6,1e-4' "
             "-s 'Time integration/End time=4e-3'");
-      const std::string err = read("cli.stderr");
-      const std::string csv = read("cli_fail/study.csv");
+      const std::string err = read_text("cli.stderr");
+      const std::string csv = read_text("cli_fail/study.csv");
       check("a study with a failing case: exit 2, one line naming case_001, "
             "case_000 completed, case_001's summary failed, study.csv lists "
             "both with their status",
             code == 2 && n_lines(err) == 1 && contains(err, "case_001") &&
-              contains(read("cli_fail/case_000/summary.txt"),
+              contains(read_text("cli_fail/case_000/summary.txt"),
                        "status = completed") &&
-              contains(read("cli_fail/case_001/summary.txt"),
+              contains(read_text("cli_fail/case_001/summary.txt"),
                        "status = failed") &&
               n_lines(csv) == 3 && contains(csv, ",completed") &&
               contains(csv, ",failed"));
@@ -265,7 +261,7 @@ namespace fgimpact_unit_tests::command_line
       const int         code = run("cli_fail.prm --study 'Impactor/Initial "
                                    "velocity=1,2' --study 'Impactor/Initial "
                                    "velocity=3'");
-      const std::string err  = read("cli.stderr");
+      const std::string err  = read_text("cli.stderr");
       check("the same entry twice in a study: exit 1, one line saying so",
             code == 1 && n_lines(err) == 1 && contains(err, "listed twice"));
     }
@@ -274,7 +270,7 @@ namespace fgimpact_unit_tests::command_line
     {
       const int         code = run("cli_fail.prm --study 'Geometry/Subdivision "
                                    "z=2,4'");
-      const std::string err  = read("cli.stderr");
+      const std::string err  = read_text("cli.stderr");
       check("a misspelled --study entry: exit 1, one line naming --study and "
             "the closest entry",
             code == 1 && n_lines(err) == 1 &&
@@ -288,7 +284,7 @@ namespace fgimpact_unit_tests::command_line
                   "subsection Study\n set Entries = Impactor/Initial velocity "
                   "= 1, fast\nend\n"));
       const int         code = run("cli_entries.prm");
-      const std::string err  = read("cli.stderr");
+      const std::string err  = read_text("cli.stderr");
       check("a bad value in Study/Entries: exit 1, one line naming "
             "Study/Entries and the value",
             code == 1 && n_lines(err) == 1 &&
@@ -300,7 +296,7 @@ namespace fgimpact_unit_tests::command_line
     {
       const int code = run("cli_fail.prm --study 'Output/Directory=cli_d1,"
                            "cli_d2'");
-      const std::string err = read("cli.stderr");
+      const std::string err = read_text("cli.stderr");
       check("a study varying Output/Directory: exit 1, one line naming it, "
             "nothing written",
             code == 1 && n_lines(err) == 1 &&
@@ -315,7 +311,7 @@ namespace fgimpact_unit_tests::command_line
             scene("cli_nul") + "subsection Impactor\n set Radius = 0.0" +
               std::string(1, '\0') + "1\nend\n");
       const int         code = run("cli_nul.prm");
-      const std::string err  = read("cli.stderr");
+      const std::string err  = read_text("cli.stderr");
       check("a NUL byte in a value: exit 1, one line naming the file's line "
             "and the NUL byte, the byte not echoed",
             code == 1 && n_lines(err) == 1 && contains(err, "cli_nul.prm") &&
@@ -323,14 +319,14 @@ namespace fgimpact_unit_tests::command_line
       fs::remove_all("cli_a");
       write("cli_nul_dir.prm", scene("cli_a" + std::string(1, '\0') + "b"));
       const int         dir_code = run("cli_nul_dir.prm");
-      const std::string dir_err  = read("cli.stderr");
+      const std::string dir_err  = read_text("cli.stderr");
       check("... a NUL byte in Output/Directory: exit 1, one line, no "
             "directory cut at the NUL ('cli_a') written",
             dir_code == 1 && n_lines(dir_err) == 1 &&
               contains(dir_err, "NUL byte") && !fs::exists("cli_a"));
       const int long_code = run(
         "cli_base.prm -s 'Impactor/Radius=" + std::string(100000, 'x') + "'");
-      const std::string long_err = read("cli.stderr");
+      const std::string long_err = read_text("cli.stderr");
       std::printf("a value of 100,000 characters: error line of %zu "
                   "characters\n",
                   long_err.size());
@@ -357,7 +353,7 @@ namespace fgimpact_unit_tests::command_line
     write("cli_sub/loop.prm", "include loop.prm\n");
     {
       const int         code = run("cli_sub/loop.prm");
-      const std::string err  = read("cli.stderr");
+      const std::string err  = read_text("cli.stderr");
       check("an include loop: exit 1, one line naming the include",
             code == 1 && n_lines(err) == 1 && contains(err, "include"));
     }
@@ -366,7 +362,7 @@ namespace fgimpact_unit_tests::command_line
     // read back would differ, and so would the directory it cleans).
     {
       const int         code = run("cli_base.prm -s 'Output/Directory=cli#x'");
-      const std::string err  = read("cli.stderr");
+      const std::string err  = read_text("cli.stderr");
       check("'#' in Output/Directory (-s): exit 1, one line naming it, "
             "nothing written",
             code == 1 && n_lines(err) == 1 &&
@@ -378,7 +374,7 @@ namespace fgimpact_unit_tests::command_line
     {
       const int code =
         run("cli_base.prm -s \"$(printf 'Output/Directory=cli_nl\\nx')\"");
-      const std::string err = read("cli.stderr");
+      const std::string err = read_text("cli.stderr");
       check("a newline in Output/Directory (-s): exit 1, one line naming it, "
             "nothing written",
             code == 1 && n_lines(err) == 1 &&
@@ -387,7 +383,7 @@ namespace fgimpact_unit_tests::command_line
     // --study-case without a study was ignored without a word.
     {
       const int         code = run("cli_base.prm --study-case 0");
-      const std::string err  = read("cli.stderr");
+      const std::string err  = read_text("cli.stderr");
       check("--study-case without a study: exit 1, one line naming it",
             code == 1 && n_lines(err) == 1 && contains(err, "--study-case"));
     }
@@ -405,7 +401,7 @@ namespace fgimpact_unit_tests::command_line
     {
       const int         code = run("cli_sub/tab.prm -s 'Impactor/Initial "
                                    "velocity=2'");
-      const std::string prm  = read("cli_tab/parameters.prm");
+      const std::string prm  = read_text("cli_tab/parameters.prm");
       const auto        at   = prm.find("set Profile file");
       const std::string line =
         at == std::string::npos ? "" : prm.substr(at, prm.find('\n', at) - at);
@@ -423,7 +419,7 @@ namespace fgimpact_unit_tests::command_line
                                     "cli_tab_study' --study 'Impactor/Initial "
                                     "velocity=1,2'");
       const double diff =
-        csv_difference(read("cli_tab_study/case_001/history.csv"),
+        csv_difference(read_text("cli_tab_study/case_001/history.csv"),
                        history("cli_tab"));
       // A convolution case, as above: one unit of a last digit at most.
       std::printf("tabulated study case V0 = 2 against the separate run: "
@@ -436,8 +432,8 @@ namespace fgimpact_unit_tests::command_line
 
     // Provenance and the log.
     {
-      const std::string log     = read("cli_set/log.txt");
-      const std::string summary = read("cli_set/summary.txt");
+      const std::string log     = read_text("cli_set/log.txt");
+      const std::string summary = read_text("cli_set/summary.txt");
       check("log.txt starts with the version and has the command line",
             log.rfind("# fgimpact ", 0) == 0 && contains(log, "# command ") &&
               contains(log, "Impactor/Initial velocity=2") &&
@@ -449,8 +445,9 @@ namespace fgimpact_unit_tests::command_line
             summary.rfind("# fgimpact ", 0) == 0 &&
               contains(summary, "\npeak_contact_force_N = "));
       check("input.prm is the input as given",
-            read("cli_set/input.prm") == read("cli_set.prm") &&
-              read("cli_include/input.prm") == read("cli_sub/case.prm"));
+            read_text("cli_set/input.prm") == read_text("cli_set.prm") &&
+              read_text("cli_include/input.prm") ==
+                read_text("cli_sub/case.prm"));
     }
 
     // --validate: checks, runs nothing, writes nothing.
@@ -462,7 +459,7 @@ namespace fgimpact_unit_tests::command_line
           scene("cli_bad", "subsection Impactor\n set Radious = 0.01\nend\n"));
     {
       const int         code = run("--validate cli_bad.prm");
-      const std::string err  = read("cli.stderr");
+      const std::string err  = read_text("cli.stderr");
       check("--validate of a misspelled entry: exit 1, one line, 'did you "
             "mean 'Radius'?'",
             code == 1 && n_lines(err) == 1 &&
@@ -472,7 +469,7 @@ namespace fgimpact_unit_tests::command_line
           scene("cli_bad", "subsection Impacter\n set Radius = 0.01\nend\n"));
     {
       const int         code = run("cli_bad.prm");
-      const std::string err  = read("cli.stderr");
+      const std::string err  = read_text("cli.stderr");
       check("a misspelled subsection: exit 1, one line, 'did you mean "
             "'Impactor'?'",
             code == 1 && n_lines(err) == 1 &&
@@ -481,14 +478,14 @@ namespace fgimpact_unit_tests::command_line
     }
     {
       const int code = run("cli_base.prm -s 'Impactor/Initial velocty=2'");
-      const std::string err = read("cli.stderr");
+      const std::string err = read_text("cli.stderr");
       check("-s with a misspelled path: exit 1, one line, the closest path",
             code == 1 && n_lines(err) == 1 &&
               contains(err, "did you mean 'Impactor/Initial velocity'"));
     }
     {
       const int code = run("cli_base.prm -s 'Impactor/Initial velocity=x'");
-      const std::string err = read("cli.stderr");
+      const std::string err = read_text("cli.stderr");
       check("-s with a bad value: exit 1, one line naming the entry",
             code == 1 && n_lines(err) == 1 &&
               contains(err, "Impactor/Initial velocity"));
@@ -498,7 +495,7 @@ namespace fgimpact_unit_tests::command_line
     // and the range listed is the one the program enforces.
     {
       const int          code    = run("--print-parameters");
-      const std::string  listing = read("cli.stdout");
+      const std::string  listing = read_text("cli.stdout");
       std::istringstream lines(listing);
       std::string        line, previous, vtu_allowed;
       unsigned int       n_set = 0, n_annotated = 0;
@@ -534,7 +531,7 @@ namespace fgimpact_unit_tests::command_line
       write("cli_probes.prm", scene("cli_probes"));
       const int code = run("cli_probes.prm -s 'Output/Probe points=corner: "
                            "0, 0, 0; q: 0.25a, 0.5b, 0.015'");
-      const std::string probes = read("cli_probes/probes.csv");
+      const std::string probes = read_text("cli_probes/probes.csv");
       check("named probes: probes.csv has t_us, support_reaction_z_N, the "
             "named columns and a row per history row",
             code == 0 &&
@@ -543,15 +540,15 @@ namespace fgimpact_unit_tests::command_line
               n_lines(probes) == n_lines(history("cli_probes")));
       const int         outside = run("cli_probes.prm -s 'Output/Probe "
                                       "points=far: 0.25, 0.05, 0.005'");
-      const std::string err     = read("cli.stderr");
+      const std::string err     = read_text("cli.stderr");
       check("a probe outside the plate: exit 1, one line naming the entry "
             "and the point",
             outside == 1 && n_lines(err) == 1 &&
               contains(err, "Output/Probe points") && contains(err, "'far'"));
       const int bad = run("cli_probes.prm -s 'Output/Probe points=p: 1, 2'");
       check("a probe with two coordinates: exit 1, one line naming the entry",
-            bad == 1 && n_lines(read("cli.stderr")) == 1 &&
-              contains(read("cli.stderr"), "Output/Probe points"));
+            bad == 1 && n_lines(read_text("cli.stderr")) == 1 &&
+              contains(read_text("cli.stderr"), "Output/Probe points"));
     }
     std::printf("%s\n", all_ok ? "OK" : "FAILED");
     return all_ok ? 0 : 1;

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <test_tools.h>
 
 namespace fgimpact_unit_tests::mpi_output_failure
 {
@@ -24,14 +25,7 @@ namespace fgimpact_unit_tests::mpi_output_failure
 
   namespace
   {
-    std::string
-    read(const std::string &filename)
-    {
-      std::ifstream     in(filename, std::ios::binary);
-      std::stringstream buffer;
-      buffer << in.rdbuf();
-      return buffer.str();
-    }
+    using fgimpact_tests::read_text;
 
     /// Run `mpiexec -n 2 fgimpact` on a small plate into dir (extra output
     /// settings appended); the exit code, 124 for a hang (timeout).
@@ -59,7 +53,7 @@ namespace fgimpact_unit_tests::mpi_output_failure
     std::string
     our_line(unsigned int &n_ours)
     {
-      std::istringstream err(read("failure.stderr"));
+      std::istringstream err(read_text("failure.stderr"));
       std::string        line, ours;
       n_ours = 0;
       while (std::getline(err, line))
@@ -87,7 +81,7 @@ namespace fgimpact_unit_tests::mpi_output_failure
       const bool        exit_two = exit_code == 2;
       const bool        named =
         n_ours == 1 && ours.find("history.csv") != std::string::npos;
-      const std::string summary = read(dir + "/summary.txt");
+      const std::string summary = read_text(dir + "/summary.txt");
       const bool        failed =
         summary.find("status = failed") != std::string::npos &&
         summary.find("n_time_steps = 0\n") != std::string::npos;
@@ -103,7 +97,7 @@ namespace fgimpact_unit_tests::mpi_output_failure
       if (!ok)
         std::printf("  exit code %d, stderr: %s\n  summary:\n%s\n",
                     exit_code,
-                    read("failure.stderr").c_str(),
+                    read_text("failure.stderr").c_str(),
                     summary.c_str());
       return ok;
     }
@@ -132,12 +126,12 @@ namespace fgimpact_unit_tests::mpi_output_failure
     const bool        one_line = n_ours == 1;
     const bool named = ours.find("solution_00010.2.vtu") != std::string::npos;
 
-    const std::string summary = read(dir + "/summary.txt");
+    const std::string summary = read_text(dir + "/summary.txt");
     const bool        failed =
       summary.find("status = failed") != std::string::npos &&
       summary.find("n_time_steps = 10\n") != std::string::npos;
     // history.csv: the header and the rows of steps 0..10, all complete.
-    const std::string  history = read(dir + "/history.csv");
+    const std::string  history = read_text(dir + "/history.csv");
     std::istringstream rows(history);
     std::getline(rows, line);
     const auto   fields   = std::count(line.begin(), line.end(), ',');
@@ -170,7 +164,7 @@ namespace fgimpact_unit_tests::mpi_output_failure
     if (!ok)
       std::printf("  exit code %d, stderr: %s\n  summary:\n%s\n",
                   exit_code,
-                  read("failure.stderr").c_str(),
+                  read_text("failure.stderr").c_str(),
                   summary.c_str());
     ok = history_fails_on_rank_0() && ok;
     std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");

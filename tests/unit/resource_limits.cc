@@ -24,6 +24,7 @@
 #include <string>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <test_tools.h>
 
 namespace fgimpact_unit_tests::resource_limits
 {
@@ -32,14 +33,7 @@ namespace fgimpact_unit_tests::resource_limits
 
   namespace
   {
-    std::string
-    read(const std::string &filename)
-    {
-      std::ifstream     in(filename);
-      std::stringstream buffer;
-      buffer << in.rdbuf();
-      return buffer.str();
-    }
+    using fgimpact_tests::read_text;
 
     struct Outcome
     {
@@ -69,8 +63,8 @@ namespace fgimpact_unit_tests::resource_limits
       struct rusage usage;
       getrusage(RUSAGE_CHILDREN, &usage);
       o.peak_rss_bytes = 1024. * usage.ru_maxrss;
-      o.out            = read("case.stdout");
-      o.err            = read("case.stderr");
+      o.out            = read_text("case.stdout");
+      o.err            = read_text("case.stderr");
       return o;
     }
 

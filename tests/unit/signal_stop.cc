@@ -26,6 +26,7 @@
 #include <string>
 #include <sys/resource.h>
 #include <sys/wait.h>
+#include <test_tools.h>
 #include <thread>
 #include <unistd.h>
 #include <utility>
@@ -37,14 +38,7 @@ namespace fgimpact_unit_tests::signal_stop
 
   namespace
   {
-    std::string
-    read(const std::string &filename)
-    {
-      std::ifstream     in(filename, std::ios::binary);
-      std::stringstream buffer;
-      buffer << in.rdbuf();
-      return buffer.str();
-    }
+    using fgimpact_tests::read_text;
 
     /// The value of key in summary.txt text ("" if absent).
     std::string
@@ -68,7 +62,7 @@ namespace fgimpact_unit_tests::signal_stop
           if (name.find_first_not_of("0123456789") != std::string::npos)
             continue;
           // /proc/N/stat: "N (command) state ppid ..."
-          const std::string stat  = read(entry.path().string() + "/stat");
+          const std::string stat  = read_text(entry.path().string() + "/stat");
           const auto        paren = stat.rfind(')');
           if (paren == std::string::npos)
             continue;
@@ -149,7 +143,7 @@ namespace fgimpact_unit_tests::signal_stop
 
       const bool exit_code =
         WIFEXITED(status) && WEXITSTATUS(status) == 128 + signal;
-      const std::string err = read("signal.stderr");
+      const std::string err = read_text("signal.stderr");
       // One line from fgimpact (on two ranks, from rank 0 only; mpiexec
       // adds its own notice of the non-zero exit code).
       std::istringstream err_lines(err);
@@ -170,14 +164,14 @@ namespace fgimpact_unit_tests::signal_stop
       const bool resume_command =
         err.find(std::string("continue with: ") + (mpi ? "mpirun -n 2 " : "") +
                  "fgimpact --resume " + dir + "\n") != std::string::npos;
-      const std::string summary = read(dir + "/summary.txt");
+      const std::string summary = read_text(dir + "/summary.txt");
       const bool        interrupted =
         value_of(summary, "status") == "interrupted" &&
         value_of(summary, "n_mpi_ranks") == (mpi ? "2" : "1");
       const std::string steps = value_of(summary, "n_time_steps");
       const std::string t_end = value_of(summary, "time_reached_us");
       // history.csv: the header and one complete row per step done.
-      const std::string  history = read(dir + "/history.csv");
+      const std::string  history = read_text(dir + "/history.csv");
       std::istringstream lines(history);
       std::string        line;
       std::getline(lines, line);
@@ -198,7 +192,7 @@ namespace fgimpact_unit_tests::signal_stop
       const bool same_time =
         !t_end.empty() && std::abs(std::stod(last.substr(0, last.find(','))) -
                                    std::stod(t_end)) < 1e-3;
-      const std::string pvd = read(dir + "/solution.pvd");
+      const std::string pvd = read_text(dir + "/solution.pvd");
       const bool pvd_closed = pvd.find("</VTKFile>") != std::string::npos &&
                               !fs::exists(dir + "/solution.pvd.tmp");
 
@@ -251,7 +245,7 @@ namespace fgimpact_unit_tests::signal_stop
       fs::remove("early.stdout");
       const pid_t pid = start("early.prm", "early", false);
       for (unsigned int i = 0;
-           i < 6000 && read("early.stdout").find("fgimpact: FGM plate") ==
+           i < 6000 && read_text("early.stdout").find("fgimpact: FGM plate") ==
                          std::string::npos;
            ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -276,13 +270,13 @@ namespace fgimpact_unit_tests::signal_stop
           std::this_thread::sleep_for(std::chrono::milliseconds(10));
         }
       const bool        code = WIFEXITED(status) && WEXITSTATUS(status) == 143;
-      const std::string err  = read("early.stderr");
+      const std::string err  = read_text("early.stderr");
       // Where it landed depends on the machine (the set-up, the solve, or
       // for an impact the first time steps): each says so in its line.
       const bool one = std::count(err.begin(), err.end(), '\n') == 1 &&
                        err.find("interrupted by SIGTERM") != std::string::npos;
       const bool interrupted =
-        value_of(read(dir + "/summary.txt"), "status") == "interrupted";
+        value_of(read_text(dir + "/summary.txt"), "status") == "interrupted";
       std::printf("SIGTERM %u ms into the %s run's set-up: exit code 143 %s, "
                   "one line %s, status = interrupted %s\n",
                   delay_ms,
@@ -335,7 +329,7 @@ namespace fgimpact_unit_tests::signal_stop
       int status = 0;
       waitpid(pid, &status, 0);
       const bool stopped    = WIFEXITED(status) && WEXITSTATUS(status) == 143;
-      const std::string err = read("study.stderr");
+      const std::string err = read_text("study.stderr");
       const std::string prefix = "continue with: fgimpact ";
       const auto        at     = err.find(prefix);
       const std::string arguments =
@@ -346,15 +340,16 @@ namespace fgimpact_unit_tests::signal_stop
       const bool        printed = arguments == "--resume " + dir + "/case_000";
       const std::string resume  = std::string(FGIMPACT_EXECUTABLE) + " " +
                                  arguments + " > study_resume.out 2>&1";
-      const bool resumed =
-        printed && std::system(resume.c_str()) == 0 &&
-        value_of(read(dir + "/case_000/summary.txt"), "status") == "completed";
+      const bool resumed = printed && std::system(resume.c_str()) == 0 &&
+                           value_of(read_text(dir + "/case_000/summary.txt"),
+                                    "status") == "completed";
       const std::string fresh = std::string(FGIMPACT_EXECUTABLE) + " " + dir +
                                 "/case_000/parameters.prm -s "
                                 "Output/Directory=study_fresh > /dev/null 2>&1";
-      const bool same = resumed && std::system(fresh.c_str()) == 0 &&
-                        read(history) == read("study_fresh/history.csv") &&
-                        !read(history).empty();
+      const bool same =
+        resumed && std::system(fresh.c_str()) == 0 &&
+        read_text(history) == read_text("study_fresh/history.csv") &&
+        !read_text(history).empty();
       std::printf("SIGTERM in a study's first case: exit code 143 %s, it "
                   "prints --resume %s/case_000 %s, that command completes the "
                   "case %s, its history.csv equals an uninterrupted run's %s\n",
@@ -367,7 +362,7 @@ namespace fgimpact_unit_tests::signal_stop
         std::printf("  status %d, stderr: %s  resume: %s\n",
                     status,
                     err.c_str(),
-                    read("study_resume.out").c_str());
+                    read_text("study_resume.out").c_str());
       return stopped && printed && resumed && same;
     }
 
@@ -401,7 +396,7 @@ namespace fgimpact_unit_tests::signal_stop
       int status = 0;
       waitpid(pid, &status, 0);
       const bool stopped    = WIFEXITED(status) && WEXITSTATUS(status) == 143;
-      const std::string err = read("convolution.stderr");
+      const std::string err = read_text("convolution.stderr");
       const bool        named =
         err.find("interrupted by SIGTERM while the convolution study was being "
                  "prepared") != std::string::npos &&
@@ -449,7 +444,7 @@ namespace fgimpact_unit_tests::signal_stop
       int status = 0;
       waitpid(pid, &status, 0);
       const bool stopped    = WIFEXITED(status) && WEXITSTATUS(status) == 143;
-      const std::string err = read("converged.stderr");
+      const std::string err = read_text("converged.stderr");
       const bool        named =
         err.find("Accuracy = converged interrupted by signal 15 in the run at "
                  "contact refinement level") != std::string::npos &&
@@ -490,12 +485,13 @@ namespace fgimpact_unit_tests::signal_stop
                                   " pipe.prm 2>&1 | head -c 300 > /dev/null; "
                                   "echo ${PIPESTATUS[0]} > pipe.status'";
       const int         status  = std::system(command.c_str());
-      const std::string code    = read("pipe.status");
-      const std::string summary = read(dir + "/summary.txt");
-      const std::string history = read(dir + "/history.csv");
+      const std::string code    = read_text("pipe.status");
+      const std::string summary = read_text(dir + "/summary.txt");
+      const std::string history = read_text(dir + "/history.csv");
       const auto        rows = std::count(history.begin(), history.end(), '\n');
-      const bool logged = read(dir + "/log.txt").find("fgimpact: results in") !=
-                          std::string::npos;
+      const bool        logged =
+        read_text(dir + "/log.txt").find("fgimpact: results in") !=
+        std::string::npos;
       const bool ok = status == 0 && code == "0\n" &&
                       value_of(summary, "status") == "completed" &&
                       rows == 2002 && logged;
@@ -575,7 +571,7 @@ namespace fgimpact_unit_tests::signal_stop
                     "Subdivisions y = 4\n set Subdivisions z = 2\nend\n",
                     RLIMIT_AS,
                     700000ul * 1024);
-      const std::string error = read("limited.stderr");
+      const std::string error = read_text("limited.stderr");
       const bool one_line = std::count(error.begin(), error.end(), '\n') == 1 &&
                             error.find("RLIMIT_AS") != std::string::npos;
       const int  code = ended && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -606,12 +602,12 @@ namespace fgimpact_unit_tests::signal_stop
                     "end\nsubsection Output\n set VTU interval = 1\nend\n",
                     RLIMIT_FSIZE,
                     60ul * 1024);
-      const std::string error = read("limited.stderr");
+      const std::string error = read_text("limited.stderr");
       const bool one_line = std::count(error.begin(), error.end(), '\n') == 1 &&
                             error.find("limited/") != std::string::npos;
       const int  code = ended && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
       const bool failed =
-        value_of(read("limited/summary.txt"), "status") == "failed";
+        value_of(read_text("limited/summary.txt"), "status") == "failed";
       std::printf("ulimit -f 60, VTU every step: exit code %d, one line naming "
                   "the file %s, summary.txt status = failed %s\n",
                   code,

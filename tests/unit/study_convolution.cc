@@ -184,28 +184,7 @@ namespace fgimpact_unit_tests::study_convolution
       return rows;
     }
 
-    /// Max over the columns of max |a - b| / max |b| (1 if the row counts
-    /// differ).
-    double
-    history_difference(const std::vector<std::vector<double>> &a,
-                       const std::vector<std::vector<double>> &b)
-    {
-      if (a.size() != b.size() || b.empty())
-        return 1.;
-      double worst = 0.;
-      for (unsigned int c = 0; c < b[0].size(); ++c)
-        {
-          double scale = 0, difference = 0;
-          for (unsigned int n = 0; n < b.size(); ++n)
-            {
-              scale      = std::max(scale, std::abs(b[n][c]));
-              difference = std::max(difference, std::abs(a[n][c] - b[n][c]));
-            }
-          if (scale > 0)
-            worst = std::max(worst, difference / scale);
-        }
-      return worst;
-    }
+    using fgimpact_tests::history_difference;
   } // namespace
 
 
