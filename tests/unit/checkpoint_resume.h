@@ -16,6 +16,7 @@
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
+#include <test_tools.h>
 #include <thread>
 #include <tuple>
 #include <unistd.h>
@@ -26,14 +27,7 @@ namespace checkpoint_test
 {
   namespace fs = std::filesystem;
 
-  inline std::string
-  read(const std::string &filename)
-  {
-    std::ifstream     in(filename, std::ios::binary);
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    return buffer.str();
-  }
+  using fgimpact_tests::read_text;
 
   inline std::vector<std::string>
   lines_of(const std::string &text)
@@ -117,7 +111,7 @@ namespace checkpoint_test
   inline unsigned int
   history_rows(const std::string &directory)
   {
-    const std::string text = read(directory + "/history.csv");
+    const std::string text = read_text(directory + "/history.csv");
     unsigned int      n    = 0;
     for (const char c : text)
       n += (c == '\n');
@@ -241,7 +235,7 @@ namespace checkpoint_test
   {
     if (fs::path(file).filename() == ".fgimpact.files")
       {
-        const auto                  lines = lines_of(read(file));
+        const auto                  lines = lines_of(read_text(file));
         const std::set<std::string> set(lines.begin(), lines.end());
         return std::vector<std::string>(set.begin(), set.end());
       }
@@ -251,7 +245,7 @@ namespace checkpoint_test
       file.size() >= 12 && file.substr(file.size() - 12) == "summary.json";
     bool                     provenance = false;
     std::vector<std::string> kept;
-    for (const auto &line : lines_of(read(file)))
+    for (const auto &line : lines_of(read_text(file)))
       {
         if (json && line.rfind("  \"provenance\"", 0) == 0)
           provenance = true;
@@ -274,20 +268,20 @@ namespace checkpoint_test
   compare(const std::string &reference, const std::string &resumed)
   {
     Comparison c;
-    const auto h1 = lines_of(read(reference + "/history.csv"));
-    const auto h2 = lines_of(read(resumed + "/history.csv"));
-    c.same_length = read(reference + "/history.csv").size() ==
-                      read(resumed + "/history.csv").size() &&
+    const auto h1 = lines_of(read_text(reference + "/history.csv"));
+    const auto h2 = lines_of(read_text(resumed + "/history.csv"));
+    c.same_length = read_text(reference + "/history.csv").size() ==
+                      read_text(resumed + "/history.csv").size() &&
                     h1.size() == h2.size();
     c.history_lines = h1.size();
     for (std::size_t i = 0; i < std::max(h1.size(), h2.size()); ++i)
       c.history_differing +=
         (i >= h1.size() || i >= h2.size() || h1[i] != h2[i]);
     std::vector<std::string> s1, s2;
-    for (const auto &line : lines_of(read(reference + "/summary.txt")))
+    for (const auto &line : lines_of(read_text(reference + "/summary.txt")))
       if (!clock_dependent(line))
         s1.push_back(line);
-    for (const auto &line : lines_of(read(resumed + "/summary.txt")))
+    for (const auto &line : lines_of(read_text(resumed + "/summary.txt")))
       if (!clock_dependent(line))
         s2.push_back(line);
     c.summary_lines = s1.size();
@@ -355,7 +349,7 @@ namespace checkpoint_test
     if (!ok)
       std::printf("  reference exit %d; resume log:\n%s\n",
                   reference_exit,
-                  read(killed + ".resume.log").c_str());
+                  read_text(killed + ".resume.log").c_str());
     return ok;
   }
 } // namespace checkpoint_test
