@@ -38,8 +38,29 @@ check "a directory without solution.pvd refused (exit 2, one line)" \
   -s "Time integration/End time=120e-6" -s "Output/Log interval=0" \
   -s "Output/VTU interval=10" >/dev/null
 scripts/render.sh "$work/run" --frames 2 --size 640 400 >"$work/list"
-check "render.py lists 9 files (6 pictures, the state, 2 frames)" \
-  test "$(wc -l <"$work/list")" = 9
+check "render.py lists 10 files (6 pictures, the state, 2 frames, the movie)" \
+  test "$(wc -l <"$work/list")" = 10
+# The movie, read back: its AVI header's frame count (avih, dwTotalFrames)
+# and size against the frames listed, which are distinct pictures.
+cat >"$work/movie.py" <<'PY'
+import hashlib, struct, sys
+listed = open(sys.argv[1]).read().split()
+frames = [p for p in listed if "/animation/frame_" in p]
+movie = [p for p in listed if p.endswith(".avi")]
+data = open(movie[0], "rb").read() if movie else b""
+at = data.find(b"avih")
+total, width, height = (struct.unpack("<I", data[at + 24:at + 28])[0],
+                        *struct.unpack("<II", data[at + 40:at + 48])) if at >= 0 else (0, 0, 0)
+distinct = len({hashlib.md5(open(p, "rb").read()).hexdigest() for p in frames})
+print("animation.avi: %d frames of %dx%d; %d frame files, %d distinct"
+      % (total, width, height, len(frames), distinct))
+sys.exit(0 if total == len(frames) == distinct and total > 0
+         and (width, height) == (640, 400) else 1)
+PY
+movie_ok=0
+python3 "$work/movie.py" "$work/list" >"$work/movie" && movie_ok=1
+sed 's/^/check_render:   /' "$work/movie"
+check "the movie holds every frame, once, at the frames' size" test "$movie_ok" = 1
 grep '\.png$' "$work/list" >"$work/pngs" || true
 cat >"$work/blank.py" <<'PY'
 import sys

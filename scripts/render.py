@@ -25,7 +25,12 @@ writes into OUTPUT_DIR/pictures (or --out):
                           run's largest, at the peak (resolved contact only)
   plastic_strain.png      the equivalent plastic strain (when the files
                           hold it)
-  animation/frame_NNNN.png  the deformed plate over the run (--frames, 0: none)
+  animation/frame_NNNN.png  the deformed plate over the run (--frames, 0: none),
+                          one frame per distinct snapshot time (at most
+                          --frames, evenly spread over the run)
+  animation.avi           the frames as a movie (Motion JPEG, 8 frames/s;
+                          VTK's FFMPEG writer; animation.ogv, Theora, where
+                          VTK has no FFMPEG)
   scene.pvsm              a ParaView state with the deformed plate, ball and
                           section at the peak: File > Load State, choose
                           "Search files under specified directory" and this
@@ -110,6 +115,47 @@ def pvd_times(path):
     import re
     return [float(t) for t in
             re.findall(r'timestep="([^"]+)"', open(path).read())]
+
+
+def frame_times(times, n):
+    """At most n distinct snapshot times, evenly spread over the run."""
+    chosen = []
+    for k in range(n):
+        t = times[0] + (times[-1] - times[0]) * k / max(n - 1, 1)
+        t = min(times, key=lambda s: abs(s - t))
+        if t not in chosen:
+            chosen.append(t)
+    return chosen
+
+
+def write_movie(frames, out, rate=8):
+    """The PNG frames as OUT/animation.avi (Motion JPEG, VTK's FFMPEG
+    writer) or, without it, OUT/animation.ogv (Theora); its path."""
+    from vtkmodules.vtkIOImage import vtkPNGReader
+    try:
+        from vtkmodules.vtkIOFFMPEG import vtkFFMPEGWriter as Writer
+        path = os.path.join(out, "animation.avi")
+    except ImportError:
+        from vtkmodules.vtkIOOggTheora import vtkOggTheoraWriter as Writer
+        path = os.path.join(out, "animation.ogv")
+    reader = vtkPNGReader()
+    reader.SetFileName(frames[0])
+    reader.Update()
+    writer = Writer()
+    writer.SetInputConnection(reader.GetOutputPort())
+    writer.SetFileName(path)
+    writer.SetRate(rate)
+    writer.SetQuality(2)
+    writer.Start()
+    for frame in frames:
+        reader.SetFileName(frame)
+        reader.Modified()
+        reader.Update()
+        writer.Write()
+    writer.End()
+    if writer.GetError():
+        fail("the movie %s could not be written" % path)
+    return path
 
 
 def main():
@@ -282,6 +328,7 @@ def main():
         path = os.path.join(out, name)
         pv.SaveScreenshot(path, view, ImageResolution=args.size)
         written.append(path)
+        return path
 
     def contact_scale_sections(origin, top_face):
         """The section through the impact point at the contact's scale:
@@ -477,17 +524,19 @@ def main():
     pv.SaveState(os.path.join(out, "scene.pvsm"))
     written.append(os.path.join(out, "scene.pvsm"))
 
-    # The animation: frames over the run, the colour range fixed.
+    # The animation: frames over the run, the colour range fixed, one per
+    # distinct snapshot time (more frames than snapshots would repeat them).
     if args.frames > 0:
         os.makedirs(os.path.join(out, "animation"), exist_ok=True)
-        for k in range(args.frames):
-            t = times[0] + (times[-1] - times[0]) * k / max(args.frames - 1, 1)
-            t = min(times, key=lambda s: abs(s - t))
+        frames = []
+        for t in frame_times(times, args.frames):
             view.ViewTime = t
             place_ball(t)
             set_title("Deformed plate (displacement x %.0f)%s" %
                       (factor, ball_note), t)
-            save(os.path.join("animation", "frame_%04d.png" % k))
+            frames.append(save(os.path.join("animation",
+                                            "frame_%04d.png" % len(frames))))
+        written.append(write_movie(frames, out))
     with open(os.path.join(out, "colours.csv"), "w") as f:
         f.write("picture,field,map,low,high,shown_min,shown_max\n")
         for row in rows:

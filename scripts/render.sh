@@ -21,7 +21,8 @@ for attempt in 1 2 3 4; do
   xvfb-run -a -s "-screen 0 1600x1200x24" pvpython "$here/render.py" "$@" 2>"$log"
   status=$?
   if [ $status -eq 0 ] || ! grep -q "bad X server connection" "$log"; then
-    grep -v "^\s*$" "$log" >&2
+    # libswscale's note on the movie's JPEG pixel format is not a problem.
+    grep -v -e "^\s*$" -e "deprecated pixel format used" "$log" >&2
     exit $status
   fi
   sleep 1
