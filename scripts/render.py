@@ -309,7 +309,7 @@ def main():
     colour.shown = []
 
     def set_title(text, t):
-        title.Text = "%s\nt = %.2f us  (%s)" % (text, t, scene)
+        title.Text = "%s\nt = %.2f µs  (%s)" % (text, t, scene)
 
     def camera_3d():
         view.CameraPosition = [bounds[0] - 0.3 * length,
