@@ -301,10 +301,12 @@ namespace fgimpact
         }
     }
 
-    /// study.csv: case, the varied entries, every summary key (of the
-    /// first case: the numbers, "none", and the words that say what was
-    /// modelled and how the case ended; no value holds a comma), from the
-    /// cases' summaries in memory.
+    /// study.csv: case, the varied entries, every summary key (the
+    /// numbers, and the words that say what was modelled and how the case
+    /// ended; no value holds a comma), from the cases' summaries in memory.
+    /// A column whose values are numbers where there are any leaves a
+    /// case without one (none, or no such key) empty, so that pandas reads
+    /// it as numbers (NaN there); a word column writes none.
     void
     write_study_csv(const std::vector<ParsedCase>               &cases,
                     const std::map<std::string, SummaryEntries> &summaries,
@@ -326,16 +328,30 @@ namespace fgimpact
       for (const auto &key : keys)
         csv << ',' << key;
       csv << '\n';
+      std::vector<std::map<std::string, std::string>> rows(cases.size());
+      std::set<std::string>                           words;
+      for (unsigned int i = 0; i < cases.size(); ++i)
+        for (const auto &[key, value] : entries_of(cases[i]))
+          {
+            rows[i][key] = value;
+            if (value != "none" && !is_summary_number(value))
+              words.insert(key);
+          }
       for (unsigned int i = 0; i < cases.size(); ++i)
         {
-          std::map<std::string, std::string> summary;
-          for (const auto &[key, value] : entries_of(cases[i]))
-            summary[key] = value;
           csv << i;
           for (const auto &value : cases[i].study_case.values)
             csv << ',' << value;
           for (const auto &key : keys)
-            csv << ',' << (summary.count(key) ? summary[key] : "none");
+            {
+              const auto value = rows[i].find(key);
+              const bool known =
+                value != rows[i].end() && value->second != "none";
+              csv << ','
+                  << (known                 ? value->second :
+                      words.count(key) != 0 ? "none" :
+                                              "");
+            }
           csv << '\n';
         }
       write_file_atomically(filename, csv.str());

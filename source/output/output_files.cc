@@ -239,6 +239,15 @@ namespace fgimpact
 
 
 
+  bool
+  is_summary_number(const std::string &value)
+  {
+    return value == "inf" || value == "-inf" || value == "nan" ||
+           value == "-nan" || !json_number(value).empty();
+  }
+
+
+
   std::string
   summary_json(const std::string &preamble, const SummaryEntries &entries)
   {

@@ -288,9 +288,11 @@ namespace fgimpact_unit_tests::study_convolution
           if (expected.count(header[c]))
             {
               ++csv_keys;
+              // study.csv leaves a number column's none empty.
+              const std::string cell = cells[c].empty() ? "none" : cells[c];
               csv_equal += field_check(header[c]) ?
-                             convolution_field_check(header[c], cells[c]) :
-                             same(header[c], expected.at(header[c]), cells[c]);
+                             convolution_field_check(header[c], cell) :
+                             same(header[c], expected.at(header[c]), cell);
             }
         std::printf(
           "  case %u: summary.txt keys equal %u of %zu; study.csv row "

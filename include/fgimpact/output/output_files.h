@@ -123,6 +123,11 @@ namespace fgimpact
 
 
 
+  /// Whether a summary value is a number: a finite number by JSON's
+  /// grammar (a leading '+' allowed), inf, -inf or nan.
+  bool
+  is_summary_number(const std::string &value);
+
   /// summary.json's text: the provenance comments of `preamble` ("# key
   /// value" lines) as the object "provenance", then every entry in order,
   /// a number as a JSON number, none/inf/nan as null, other text as a
