@@ -186,13 +186,15 @@ namespace fgimpact_tests
              const double                 thickness       = 0.02,
              const MPI_Comm               communicator    = MPI_COMM_WORLD,
              const double                 poissons_ratio  = 0.3,
-             const bool                   mean_dilatation = false)
+             const bool                   mean_dilatation = false,
+             const fgimpact::SideSupport  bottom = fgimpact::SideSupport::free)
   {
     fgimpact::PlateGeometry::Parameters gp;
     gp.thickness      = thickness;
     gp.subdivisions_x = nx;
     gp.subdivisions_y = ny;
     gp.subdivisions_z = nz;
+    gp.bottom_support = bottom;
     fgimpact::FunctionallyGradedMaterial::Parameters mp;
     mp.power_law_index = n;
     mp.property_mode   = mode;
