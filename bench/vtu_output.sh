@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# The cost of the VTU output of the default scene (issue 25): the whole
-# run (start-up included) of prm/default.prm as it is now (the whole plate
-# from the quarter, raw binary VTU, the peak snapshot) against the earlier
-# default output (the quarter's VTU only, zlib `speed`, no peak snapshot),
-# the whole plate with zlib `speed`, and no VTU at all; N runs of each,
-# interleaved, with GNU time: the median wall time, the median peak RSS and
-# the size of the output directory.
+# The cost of the VTU output of the default scene (issues 25 and 41): the
+# whole run (start-up included) of prm/default.prm as it is now (the whole
+# plate from the quarter, zlib `speed`, the peak snapshot, End time = auto)
+# against the same with raw binary VTU (the default until 2026-11), the
+# quarter's VTU only (zlib `speed`, no peak snapshot), and no VTU at all;
+# N runs of each, interleaved, with GNU time: the median wall time, the
+# median peak RSS and the size of the output directory.
 # Usage: bench/vtu_output.sh [N]   (default 7; about 30 s)
 #        FGIMPACT=path/to/fgimpact to use another executable.
 set -euo pipefail
@@ -16,11 +16,11 @@ need_gnu_time
 n=${1:-7}
 root=$(mktemp -d)
 trap 'rm -rf "$root"' EXIT
-labels=(whole-raw quarter-speed whole-speed no-vtu)
+labels=(whole-speed quarter-speed whole-raw no-vtu)
 options=(
   ""
-  "-s Output/Mirror?symmetric?part=false -s Output/VTU?compression=speed -s Output/Snapshot?at?peak?force=false"
-  "-s Output/VTU?compression=speed"
+  "-s Output/Mirror?symmetric?part=false -s Output/Snapshot?at?peak?force=false"
+  "-s Output/VTU?compression=none"
   "-s Output/VTU?interval=0 -s Output/Snapshot?at?peak?force=false"
 )
 for ((run = 0; run < n; ++run)); do

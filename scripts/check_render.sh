@@ -152,4 +152,48 @@ fi
 sed 's/^/check_render:   /' "$work/colour_report" | grep -v "^check_render:   $" || true
 check "each picture's colours: one rule per field, its range the run's data (colours.csv against the VTU)" \
   test "$colours_ok" = 1
+
+# The state, loaded as a user does (File > Load State): it opens at the
+# snapshot nearest summary.txt's time_of_peak_force_us, with the plate
+# warped and coloured as the stills, and holds no helpers (the sections'
+# slices and thresholds, MergeBlocks): at most 6 sources.
+cat >"$work/state.py" <<'PY'
+import re, sys
+from paraview import simple as pv
+state, run = sys.argv[1], sys.argv[2]
+pv.LoadState(state, data_directory=run, restrict_to_data_directory=True)
+sources = pv.GetSources()
+names = sorted(name for name, _ in sources)
+kinds = sorted(proxy.GetXMLName() for proxy in sources.values())
+peak = float(re.search(r"time_of_peak_force_us = (\S+)",
+                       open(run + "/summary.txt").read()).group(1))
+times = [float(t) for t in re.findall(r'timestep="([^"]+)"',
+                                      open(run + "/solution.pvd").read())]
+nearest = min(times, key=lambda t: abs(t - peak))
+at = pv.GetAnimationScene().AnimationTime
+ok = (len(sources) <= 6 and "MergeBlocks" not in kinds
+      and abs(at - nearest) <= 1e-9 * max(abs(nearest), 1.0))
+print("scene.pvsm: %d sources (%s); opens at t = %.4f us, the snapshot "
+      "nearest the peak force's %.4f us: %.4f us: %s"
+      % (len(sources), ", ".join(names), at, peak, nearest,
+         "yes" if ok else "NO"))
+sys.exit(0 if ok else 1)
+PY
+if xvfb-run -a pvpython "$work/state.py" "$pictures/scene.pvsm" "$work/run" \
+  >"$work/state_report" 2>&1; then
+  state_ok=1
+else
+  state_ok=0
+fi
+grep "scene.pvsm\|Error\|error" "$work/state_report" | sed 's/^/check_render:   /' || true
+check "scene.pvsm opens at the peak snapshot with a clean pipeline" \
+  test "$state_ok" = 1
+
+# The report after the pictures (what a user does next): report.html embeds
+# every still of pictures/ (the animation frames are in the movie).
+python3 scripts/report.py "$work/run" >/dev/null
+embedded=$(grep -o 'src="data:image/png;base64,' "$work/run/report.html" | wc -l)
+stills=$(ls "$pictures"/*.png | wc -l)
+echo "check_render:   report.html: $embedded pictures embedded, $stills stills in pictures/"
+check "report.py embeds every still picture" test "$embedded" = "$stills" -a "$stills" -gt 0
 exit $failed

@@ -31,8 +31,9 @@ writes into OUTPUT_DIR/pictures (or --out):
   animation.avi           the frames as a movie (Motion JPEG, 8 frames/s;
                           VTK's FFMPEG writer; animation.ogv, Theora, where
                           VTK has no FFMPEG)
-  scene.pvsm              a ParaView state with the deformed plate, ball and
-                          section at the peak: File > Load State, choose
+  scene.pvsm              a ParaView state with the deformed plate and the
+                          ball, opening at the peak snapshot, its time
+                          annotated (5 sources, no helpers): File > Load State, choose
                           "Search files under specified directory" and this
                           OUTPUT_DIR to open it on any machine
   colours.csv             per picture: the field, its colour map and range,
@@ -155,6 +156,79 @@ def write_movie(frames, out, rate=8):
     writer.End()
     if writer.GetError():
         fail("the movie %s could not be written" % path)
+    return path
+
+
+def save_state(path, directory, scene_view):
+    """A clean ParaView state (PATH): the plate's solution.pvd warped by the
+    pictures' factor and coloured as scene_view says, the ball (sphere.pvd)
+    placed as in the pictures, a title and the time (an annotation that
+    follows the time), the camera of the 3D pictures, and the animation at
+    the peak snapshot.  Built in a new session: the pictures' helpers
+    (sections, thresholds, the pressure map) are not in it."""
+    from paraview import simple as pv
+    v = scene_view
+    pv.ResetSession()
+    plate = pv.PVDReader(registrationName="solution.pvd",
+                         FileName=os.path.join(directory, "solution.pvd"))
+    warp = pv.WarpByVector(registrationName="plate (displacement x %.0f)"
+                           % v["factor"], Input=plate,
+                           Vectors=["POINTS", "displacement_m"],
+                           ScaleFactor=v["factor"])
+    view = pv.CreateView("RenderView")
+    view.ViewSize = v["size"]
+    view.Background = [1, 1, 1]
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    display = pv.Show(warp, view)
+    pv.ColorBy(display, ("POINTS", v["field"]))
+    lut = pv.GetColorTransferFunction(v["field"])
+    lut.ApplyPreset(v["preset"], True)
+    lut.RescaleTransferFunction(v["low"], v["high"])
+    lut.AutomaticRescaleRangeMode = "Never"
+    display.SetScalarBarVisibility(view, True)
+    bar = pv.GetScalarBar(lut, view)
+    bar.Title, bar.ComponentTitle = v["label"], ""
+    bar.TitleColor = bar.LabelColor = [0, 0, 0]
+    sphere_pvd = os.path.join(directory, "sphere.pvd")
+    if os.path.isfile(sphere_pvd):
+        sphere = pv.PVDReader(registrationName="sphere.pvd",
+                              FileName=sphere_pvd)
+        if v["ball_translate"] is None:
+            ball = pv.WarpByVector(registrationName="ball", Input=sphere,
+                                   Vectors=["POINTS", "displacement_m"],
+                                   ScaleFactor=v["factor"])
+        else:
+            ball = pv.Transform(registrationName="ball", Input=sphere)
+            ball.Transform = "Transform"
+            ball.Transform.Translate = v["ball_translate"]
+        ball_display = pv.Show(ball, view)
+        ball_display.ColorArrayName = [None, ""]
+        ball_display.DiffuseColor = ball_display.AmbientColor = [0.75, 0.75,
+                                                                 0.8]
+        ball_display.Opacity = 0.35
+    title = pv.Text(registrationName="title", Text=v["title"])
+    title_display = pv.Show(title, view)
+    title_display.Color = [0, 0, 0]
+    title_display.FontSize = 14
+    title_display.WindowLocation = "Upper Center"
+    clock = pv.AnnotateTimeFilter(registrationName="time", Input=plate)
+    clock.Format = "t = {time:.2f} µs"
+    clock_display = pv.Show(clock, view)
+    clock_display.Color = [0, 0, 0]
+    clock_display.FontSize = 14
+    clock_display.WindowLocation = "Lower Center"
+    view.CameraPosition = v["camera"][0]
+    view.CameraFocalPoint = v["camera"][1]
+    view.CameraViewUp = v["camera"][2]
+    view.CameraParallelScale = v["camera"][3]
+    animation = pv.GetAnimationScene()
+    animation.UpdateAnimationUsingDataTimeSteps()
+    animation.AnimationTime = v["time"]
+    view.ViewTime = v["time"]
+    pv.SaveState(path)
     return path
 
 
@@ -512,17 +586,27 @@ def main():
         if ball_display is not None:
             pv.Show(ball, view)
 
-    # The state file: the deformed plate and ball at the peak.
+    # The animation and the state file: the deformed plate and ball.
     pv.Show(warp, view)
-    colour(plate_display, "von_mises_MPa" if "von_mises_MPa" in fields
-           else "displacement_m", "von Mises stress (MPa)"
-           if "von_mises_MPa" in fields else "displacement (m)",
+    scene_field = ("von_mises_MPa" if "von_mises_MPa" in fields
+                   else "displacement_m")
+    scene_label = ("von Mises stress (MPa)" if "von_mises_MPa" in fields
+                   else "displacement (m)")
+    colour(plate_display, scene_field, scene_label,
            "scene.pvsm and animation", plate, times, t_show)
     camera_3d()
-    set_title("Deformed plate (displacement x %.0f)%s" % (factor, ball_note),
-              t_show)
-    pv.SaveState(os.path.join(out, "scene.pvsm"))
-    written.append(os.path.join(out, "scene.pvsm"))
+    place_ball(t_show)
+    scene_view = {
+        "factor": factor, "size": args.size, "field": scene_field,
+        "label": scene_label, "low": rows[-1][3], "high": rows[-1][4],
+        "preset": "Viridis (matplotlib)", "time": t_show,
+        "ball_translate": (list(ball.Transform.Translate)
+                           if ball is not None and not resolved and top
+                           else None),
+        "title": "Deformed plate (displacement x %.0f)%s\n(%s)"
+                 % (factor, ball_note, scene),
+        "camera": (list(view.CameraPosition), list(view.CameraFocalPoint),
+                   list(view.CameraViewUp), view.CameraParallelScale)}
 
     # The animation: frames over the run, the colour range fixed, one per
     # distinct snapshot time (more frames than snapshots would repeat them).
@@ -541,6 +625,9 @@ def main():
         f.write("picture,field,map,low,high,shown_min,shown_max\n")
         for row in rows:
             f.write("%s,%s,%s,%.9g,%.9g,%.9g,%.9g\n" % row)
+    # Last: it starts a new ParaView session.
+    written.append(save_state(os.path.join(out, "scene.pvsm"), directory,
+                              scene_view))
     for path in written:
         print(path)
 

@@ -3,7 +3,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/fgimpact_lib.sh
-# The library's floors: no include runs back up (issue 39; README, "Code
+# The library's floors: no include runs back up (issue 39; doc/code_map.md, "Code
 # map").
 scripts/check_floors.py
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release

@@ -16,6 +16,7 @@
 #include <fgimpact/base/stop_signals.h>
 #include <fgimpact/output/output_directory.h>
 #include <fgimpact/output/output_files.h>
+#include <fgimpact/output/run_report.h>
 #include <fgimpact/study/simulator.h>
 
 #include <functional>
@@ -322,8 +323,15 @@ namespace fgimpact
           stop_if_signalled_in_setup(simulator);
           simulator.run();
           if (root)
-            std::cout << "fgimpact: results in " << parameters.output.directory
-                      << '\n';
+            {
+              if (parameters.output.report)
+                if (const std::string note =
+                      write_run_report(parameters.output.directory);
+                    !note.empty())
+                  std::cout << "  note: " << note << '\n';
+              std::cout << "fgimpact: results in "
+                        << parameters.output.directory << '\n';
+            }
         }
       catch (...)
         {
@@ -361,6 +369,12 @@ namespace fgimpact
                         Logger                     &logger)
   {
     using namespace dealii;
+    // However the run ends here (a kill aside), its output directories are
+    // left without their lock files.
+    const struct ReleaseLocksAtEnd
+    {
+      ~ReleaseLocksAtEnd() { release_output_directory_locks(); }
+    } release_locks;
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     ParameterHandler           prm;
     Parameters                 parameters;

@@ -12,6 +12,7 @@
 #include <fgimpact/base/stop_signals.h>
 #include <fgimpact/output/output_directory.h>
 #include <fgimpact/output/output_files.h>
+#include <fgimpact/output/run_report.h>
 #include <fgimpact/problem/parameters.h>
 #include <fgimpact/study/impact_study_engine.h>
 #include <fgimpact/study/simulator.h>
@@ -463,6 +464,11 @@ namespace fgimpact
                           summaries,
                           base.output.directory + "/study.csv");
         });
+        // report.html: the study's cases, each linked to its own report.
+        if (root && base.output.report)
+          if (const std::string note = write_run_report(base.output.directory);
+              !note.empty())
+            std::cout << "  note: " << note << '\n';
         if (root)
           std::cout << "fgimpact: study of " << cases.size() << " cases in "
                     << study_timer.wall_time() << " s; results in "

@@ -2,6 +2,7 @@
 #include <fgimpact/base/files.h>
 #include <fgimpact/base/logger.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <iostream>
@@ -136,10 +137,23 @@ namespace fgimpact
 
 
 
-  ProgressMeter::ProgressMeter(const unsigned int n_steps, const bool enabled)
+  ProgressMeter::ProgressMeter(const unsigned int n_steps,
+                               const bool         enabled,
+                               const unsigned int expected_steps)
     : n_steps(n_steps)
     , enabled(enabled && n_steps >= 10)
+    , estimated(expected_steps > 0)
+    , target(estimated ? std::min(std::max(expected_steps, 10u), n_steps) :
+                         n_steps)
   {}
+
+
+
+  bool
+  ProgressMeter::crossed(const unsigned int step) const
+  {
+    return next_tenth <= 10 && 10ul * step >= next_tenth * 1ul * target;
+  }
 
 
 
@@ -148,9 +162,12 @@ namespace fgimpact
   {
     if (!enabled)
       return;
-    const auto crossed = [&]() {
-      return next_tenth <= 10 && 10ul * step >= next_tenth * 1ul * n_steps;
-    };
+    // End time = auto past its expected end: half as many steps more.
+    if (estimated && step >= target && target < n_steps)
+      {
+        target     = std::min(n_steps, target + target / 2);
+        next_tenth = static_cast<unsigned int>((10ul * step) / target) + 1;
+      }
     if (!started)
       {
         // A resumed run starts at its checkpoint: the tenths before it
@@ -158,26 +175,27 @@ namespace fgimpact
         started    = true;
         first_step = step;
         start      = std::chrono::steady_clock::now();
-        while (crossed())
+        while (crossed(step))
           ++next_tenth;
         return;
       }
-    if (!crossed())
+    if (!crossed(step))
       return;
-    while (crossed())
+    while (crossed(step))
       ++next_tenth;
     const double elapsed =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
-    const double eta = elapsed * (n_steps - step) / (step - first_step);
+    const double eta = elapsed * (target - step) / (step - first_step);
     char         line[160];
     std::snprintf(line,
                   sizeof(line),
-                  "  progress %3u %%  step %u of %u  elapsed %.1f s  ETA "
+                  "  progress %3u %%  step %u of %s%u  elapsed %.1f s  ETA "
                   "%.1f s\n",
-                  static_cast<unsigned int>((100ul * step) / n_steps),
+                  static_cast<unsigned int>((100ul * step) / target),
                   step,
-                  n_steps,
+                  estimated ? "about " : "",
+                  target,
                   elapsed,
                   eta);
     out << line;

@@ -162,6 +162,50 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The lock file `name` of `directory`, opened (created if missing) and
+    /// checked to be a regular file, not a link: its descriptor.
+    int
+    open_lock_file(const std::string &directory, const std::string &name)
+    {
+      // O_NOFOLLOW: a lock file that is a symbolic link (to a user's file,
+      // say) is refused, never written through; so is one that is not a
+      // regular file.
+      const int fd =
+        ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+      AssertThrow(fd >= 0 || errno != ELOOP,
+                  ExcMessage(symbolic_link_lock(directory)));
+      AssertThrow(fd >= 0,
+                  ExcMessage("Output/Directory '" + directory +
+                             "': cannot create the lock file " + name + ": " +
+                             std::strerror(errno)));
+      struct stat lock_status;
+      if (::fstat(fd, &lock_status) != 0 || !S_ISREG(lock_status.st_mode))
+        {
+          ::close(fd);
+          AssertThrow(false,
+                      ExcMessage("Output/Directory '" + directory +
+                                 "': the lock file " + name +
+                                 " is not a regular file; remove it."));
+        }
+      return fd;
+    }
+
+    /// Whether the locked descriptor fd is still the file `name`: a run
+    /// that ends removes its lock file, so a lock taken on a file opened
+    /// just before that removal locks nothing anyone else sees.
+    bool
+    is_linked_as(const int fd, const std::string &name)
+    {
+      struct stat held, linked;
+      return ::fstat(fd, &held) == 0 && ::stat(name.c_str(), &linked) == 0 &&
+             held.st_dev == linked.st_dev && held.st_ino == linked.st_ino;
+    }
+  } // namespace
+
+
+
   void
   lock_output_directory(const std::string &directory)
   {
@@ -172,28 +216,20 @@ namespace fgimpact
     if (held_locks().count(key) > 0)
       return; // this process holds it already (a study's directory)
     const std::string name = directory + "/" + lock_file_name;
-    // O_NOFOLLOW: a lock file that is a symbolic link (to a user's file,
-    // say) is refused, never written through; so is one that is not a
-    // regular file.
-    const int fd =
-      ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
-    AssertThrow(fd >= 0 || errno != ELOOP,
-                ExcMessage(symbolic_link_lock(directory)));
-    AssertThrow(fd >= 0,
-                ExcMessage("Output/Directory '" + directory +
-                           "': cannot create the lock file " + name + ": " +
-                           std::strerror(errno)));
-    struct stat lock_status;
-    if (::fstat(fd, &lock_status) != 0 || !S_ISREG(lock_status.st_mode))
+    int               fd   = -1;
+    // Retried while the file locked was removed in between by the run that
+    // held it (it ends): the lock must be on the file the next run opens.
+    for (unsigned int attempt = 0; fd < 0; ++attempt)
       {
-        ::close(fd);
-        AssertThrow(false,
-                    ExcMessage("Output/Directory '" + directory +
-                               "': the lock file " + name +
-                               " is not a regular file; remove it."));
+        fd = open_lock_file(directory, name);
+        if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
+          refuse_busy(directory, fd);
+        if (!is_linked_as(fd, name) && attempt < 100)
+          {
+            ::close(fd);
+            fd = -1;
+          }
       }
-    if (::flock(fd, LOCK_EX | LOCK_NB) != 0)
-      refuse_busy(directory, fd);
     // Locked first, then the directories above and inside looked at: of two
     // nested runs starting at once, at least one sees the other's lock.
     try
@@ -206,12 +242,30 @@ namespace fgimpact
         throw;
       }
     // The holder's process id, for the message above; the kernel releases
-    // the lock when this process ends, however it ends.
+    // the lock when this process ends, however it ends, and
+    // release_output_directory_locks() removes the file at the end.
     const std::string pid = std::to_string(::getpid()) + "\n";
     if (::ftruncate(fd, 0) != 0 || ::write(fd, pid.data(), pid.size()) < 0)
       {
         // The lock holds without the id.
       }
     held_locks()[key] = fd;
+  }
+
+
+
+  void
+  release_output_directory_locks()
+  {
+    for (const auto &[directory, fd] : held_locks())
+      {
+        // Removed while still locked, and only if it is still our file: a
+        // run waiting on it retries on a new one (lock_output_directory()).
+        const std::string name = directory + "/" + lock_file_name;
+        if (is_linked_as(fd, name))
+          ::unlink(name.c_str());
+        ::close(fd);
+      }
+    held_locks().clear();
   }
 } // namespace fgimpact

@@ -130,8 +130,12 @@ namespace fgimpact
   ImpactMonitor::start(const CheckpointReader *resume)
   {
     // The screen log last: its line follows the step's files.
-    add(std::make_unique<RunLog>(
-      parameters.log_interval, n_steps, E0, parameters.print_timing, pcout));
+    add(std::make_unique<RunLog>(parameters.log_interval,
+                                 n_steps,
+                                 E0,
+                                 parameters.print_timing,
+                                 pcout,
+                                 expected_steps));
     if (resume)
       {
         CheckpointReader in = resume->section("monitor", checkpoint_version);

@@ -81,7 +81,8 @@ namespace fgimpact
           name == "log.txt" || name == "input.prm" || name == "sphere.pvd" ||
           name == "contact.pvd" || name == "contact_pressure.csv" ||
           name == "peak_fields.pvtu" || name == "study.csv" ||
-          name == "convergence.csv" || name == "summary.json")
+          name == "convergence.csv" || name == "summary.json" ||
+          name == "report.html")
         return true;
       // peak_fields.R.vtu
       if (name.rfind("peak_fields.", 0) == 0 && ends_with(name, ".vtu") &&

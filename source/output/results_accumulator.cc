@@ -304,12 +304,13 @@ namespace fgimpact
                  const unsigned int        n_steps,
                  const double              E0,
                  const bool                progress,
-                 const ConditionalOStream &pcout)
+                 const ConditionalOStream &pcout,
+                 const unsigned int        expected_steps)
     : log_interval(log_interval)
     , n_steps(n_steps)
     , E0(E0)
     , pcout(pcout)
-    , progress(n_steps, pcout.is_active() && progress)
+    , progress(n_steps, pcout.is_active() && progress, expected_steps)
   {}
 
 

@@ -54,11 +54,20 @@ namespace fgimpact
             AssertThrow(false, ExcMessage(text.str()));
           }
       for (const double t : times)
-        AssertThrow(
-          t <= end_time * (1. + 1e-12),
-          ExcMessage("Output/Snapshot times: " + Utilities::to_string(t * 1e6) +
-                     " us is after Time integration/" + end_time_name + " (" +
-                     Utilities::to_string(end_time * 1e6) + " us)."));
+        {
+          // Until 2026-11 the snapshot times were in µs: such a value, far
+          // beyond the end, is named with its likely meaning.
+          const bool         in_us = t * 1e-6 <= end_time * (1. + 1e-12);
+          std::ostringstream text;
+          text << "Output/Snapshot times: " << t << " s is after "
+               << "Time integration/" << end_time_name << " (" << end_time
+               << " s)";
+          if (in_us)
+            text << "; the times are in s, as End time (for " << t
+                 << " us write " << t * 1e-6 << ")";
+          text << ".";
+          AssertThrow(t <= end_time * (1. + 1e-12), ExcMessage(text.str()));
+        }
     }
 
     /// The span against the step and the snapshots; with End time = auto,

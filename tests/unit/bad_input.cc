@@ -363,12 +363,12 @@ namespace fgimpact_unit_tests::bad_input
          1,
          "Log interval"},
         {"a snapshot after the End time",
-         "subsection Output\n set Snapshot times = 20, 500\nend\n"
+         "subsection Output\n set Snapshot times = 20e-6, 500e-6\nend\n"
          "subsection Time integration\n set End time = 400e-6\nend\n",
          1,
          "Output/Snapshot times"},
         {"a snapshot after the Maximum end time of End time = auto",
-         "subsection Output\n set Snapshot times = 20, 5000\nend\n"
+         "subsection Output\n set Snapshot times = 20e-6, 5e-3\nend\n"
          "subsection Time integration\n set End time = auto\nend\n",
          1,
          "Maximum end time"},
@@ -402,11 +402,11 @@ namespace fgimpact_unit_tests::bad_input
          1,
          "End time"},
         {"two snapshot times that name one file (the same ns)",
-         "subsection Output\n set Snapshot times = 10, 10.0001\nend\n",
+         "subsection Output\n set Snapshot times = 10e-6, 10.0001e-6\nend\n",
          1,
          "Output/Snapshot times"},
         {"a snapshot time that is not a number",
-         "subsection Output\n set Snapshot times = 20, soon\nend\n",
+         "subsection Output\n set Snapshot times = 20e-6, soon\nend\n",
          1,
          "Snapshot times"},
         {"bad bool",
@@ -680,7 +680,7 @@ namespace fgimpact_unit_tests::bad_input
          0,
          ""},
         {"a snapshot time after the automatic end",
-         small + "subsection Output\n set Snapshot times = 10, 700\nend\n"
+         small + "subsection Output\n set Snapshot times = 10e-6, 700e-6\nend\n"
                  "subsection Time integration\n set End time = auto\nend\n",
          0,
          ""},
@@ -720,7 +720,14 @@ namespace fgimpact_unit_tests::bad_input
          small + short_run,
          0,
          "",
-         Setup::manifest_files}};
+         Setup::manifest_files},
+        // Snapshot times were in µs until 2026-11: such an input is refused
+        // with its value in s.
+        {"a snapshot time in us, as before",
+         "subsection Output\n set Snapshot times = 50\nend\n"
+         "subsection Time integration\n set End time = 400e-6\nend\n",
+         1,
+         "for 50 us write 5e-05"}};
     }
 
 

@@ -193,12 +193,17 @@ namespace fgimpact_unit_tests::checkpoint_resume
         run({"locked.prm", "-s", "Time integration/End time=20e-6"},
             1,
             "third.log");
+      // The run that ended removed its lock file (the killed holder's,
+      // which it took over): the directory holds the run's files only.
+      const bool lock_removed = !fs::exists(directory + "/.fgimpact.lock");
       std::printf("holder killed %s, its history.csv untouched by them %s; a "
-                  "new run after the holder's death: exit code %d\n",
+                  "new run after the holder's death: exit code %d, its lock "
+                  "file removed at its end %s\n",
                   killed ? "yes" : "NO",
                   untouched ? "yes" : "NO",
-                  third);
-      return ok && killed && untouched && third == 0;
+                  third,
+                  lock_removed ? "yes" : "NO");
+      return ok && killed && untouched && third == 0 && lock_removed;
     }
 
     /// A lock file that is a symbolic link to a user's file: refused (exit

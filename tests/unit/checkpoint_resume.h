@@ -205,7 +205,8 @@ namespace checkpoint_test
 
   /// The output files compared besides history.csv and summary.txt:
   /// not the log (timings), the parameter files (the directory's name),
-  /// the checkpoints and the lock.
+  /// report.html (made from the files compared here, with the run's
+  /// provenance and wall-clock time), the checkpoints and the lock.
   inline std::set<std::string>
   other_outputs(const std::string &directory)
   {
@@ -216,6 +217,7 @@ namespace checkpoint_test
         if (entry.is_regular_file() && name != "history.csv" &&
             name != "summary.txt" && name != "log.txt" &&
             name != "parameters.prm" && name != "input.prm" &&
+            name != "report.html" &&
             (name[0] != '.' || name == ".fgimpact.files"))
           names.insert(name);
       }

@@ -2,7 +2,8 @@
 // (issue 5). Every rank first solves each problem alone (MPI_COMM_SELF, the
 // one-rank reference: CHOLMOD), then both ranks solve it together
 // (MPI_COMM_WORLD: the distributed MUMPS chosen by 'auto', or CG + AMG).
-//  - The default scene (prm/default.prm, 40 x 20 x 4, 400 steps): every
+//  - The default scene (prm/default.prm, 40 x 20 x 4, End time = auto:
+//    158 steps, the automatic end decided alike on both ranks): every
 //    column of the time history equal to 1e-8 relative to the column's
 //    largest magnitude, with the direct solver and with CG + AMG at a
 //    relative residual of 1e-12 (over the contact, 150 us).

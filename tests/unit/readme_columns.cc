@@ -1,8 +1,9 @@
-// README.md's table of the history.csv columns lists exactly the columns
+// doc/outputs.md's table (the README's until 2026-11) of the history.csv
+// columns lists exactly the columns
 // the program writes (history_columns(), then the resolved contact's
 // contact_area_columns()), in the order of the file; its table of the
 // impact summary.txt keys lists exactly impact_summary_keys() (as a set:
-// the table groups related keys).  The tables are read from the README a
+// the table groups related keys).  The tables are read from the page a
 // user reads, not kept in sync by hand.
 
 #include <fgimpact/output/impact_summary.h>
@@ -56,10 +57,11 @@ namespace fgimpact_unit_tests::readme_columns
   int
   test_main(int, char **)
   {
-    std::ifstream      file(std::string(FGIMPACT_SOURCE_DIR) + "/README.md");
+    std::ifstream      file(std::string(FGIMPACT_SOURCE_DIR) +
+                              "/doc/outputs.md");
     std::ostringstream text;
     text << file.rdbuf();
-    const auto documented = table_names(text.str(), "### history.csv columns");
+    const auto documented = table_names(text.str(), "## history.csv columns");
 
     std::vector<std::string> written;
     for (const auto &c : fgimpact::history_columns())
@@ -70,7 +72,7 @@ namespace fgimpact_unit_tests::readme_columns
       written.push_back(c.name);
 
     bool same = documented == written;
-    std::printf("history.csv: %zu columns written, %zu in README.md's table\n",
+    std::printf("history.csv: %zu columns written, %zu in doc/outputs.md's table\n",
                 written.size(),
                 documented.size());
     for (std::size_t i = 0; i < std::max(written.size(), documented.size());
@@ -84,16 +86,16 @@ namespace fgimpact_unit_tests::readme_columns
                       w.c_str(),
                       d.c_str());
       }
-    std::printf("README.md documents every history.csv column, in order: %s\n",
+    std::printf("doc/outputs.md documents every history.csv column, in order: %s\n",
                 same ? "yes" : "NO");
 
     const auto table =
-      table_names(text.str(), "### summary.txt keys (impact runs)");
+      table_names(text.str(), "## summary.txt keys (impact runs)");
     const std::set<std::string> keys_documented(table.begin(), table.end());
     std::set<std::string>       keys_written;
     for (const auto &key : fgimpact::impact_summary_keys())
       keys_written.insert(key.name);
-    std::printf("summary.txt (impact): %zu keys written, %zu in README.md's "
+    std::printf("summary.txt (impact): %zu keys written, %zu in doc/outputs.md's "
                 "table\n",
                 keys_written.size(),
                 keys_documented.size());
@@ -104,7 +106,7 @@ namespace fgimpact_unit_tests::readme_columns
       if (keys_written.count(key) == 0)
         std::printf("  documented, not written: %s\n", key.c_str());
     const bool same_keys = keys_documented == keys_written;
-    std::printf("README.md documents every summary.txt key: %s\n",
+    std::printf("doc/outputs.md documents every summary.txt key: %s\n",
                 same_keys ? "yes" : "NO");
     const bool ok = same && same_keys;
     std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");

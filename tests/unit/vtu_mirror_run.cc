@@ -113,6 +113,7 @@ namespace fgimpact_unit_tests::vtu_mirror_run
       "subsection Time integration\n set End time = 20e-6\nend\n"
       "subsection Output\n set Log interval = 0\n set Print timing = false\n"
       " set VTU interval = 10\n set Fields = displacement\n"
+      " set VTU compression = none\n" // raw data: tests/vtu_reader.h
       " set Snapshot at peak force = false\n";
     fgimpact_tests::run_quietly("",
                                 common + " set Directory = quarter\nend\n"

@@ -104,7 +104,8 @@ namespace fgimpact_unit_tests::vtu_snapshots
     fgimpact_tests::run_impact(
       "subsection Time integration\n set End time = 100e-6\nend\n"
       "subsection Output\n set VTU interval = 20\n"
-      " set Snapshot times = 60, 37.5, 0.25\n"
+      " set Snapshot times = 60e-6, 37.5e-6, 0.25e-6\n"
+      " set VTU compression = none\n" // raw data: tests/vtu_reader.h
       " set Fields = displacement, velocity\nend\n");
 
     // (1) The PVD: regular, requested and peak snapshots in time order.

@@ -83,11 +83,20 @@ namespace fgimpact
    * hold wall-clock times, so the monitor prints them only with
    * Output/Print timing = true (the reproducible logs of the tests switch
    * it off).
+   *
+   * With End time = auto the last step is not known: the tenths and the
+   * ETA count to an expected number of steps ("step 40 of about 160"), which
+   * grows by half, up to the Maximum end time's, each time the run reaches
+   * it and goes on.
    */
   class ProgressMeter
   {
   public:
-    ProgressMeter(const unsigned int n_steps, const bool enabled);
+    /// n_steps: the run's steps, or with expected_steps > 0 (End time =
+    /// auto) the most it may take.
+    ProgressMeter(const unsigned int n_steps,
+                  const bool         enabled,
+                  const unsigned int expected_steps = 0);
 
     /// Call after every step; the first call (step 0, or the checkpoint's
     /// step on --resume) starts the clock.  Prints when step crosses the
@@ -97,8 +106,14 @@ namespace fgimpact
     update(const unsigned int step, std::ostream &out);
 
   private:
+    /// Whether step has reached the next tenth of the target.
+    bool
+    crossed(const unsigned int step) const;
+
     const unsigned int                    n_steps;
     const bool                            enabled;
+    const bool                            estimated; // End time = auto
+    unsigned int                          target;    // steps counted to
     bool                                  started    = false;
     unsigned int                          first_step = 0;
     unsigned int                          next_tenth = 1;

@@ -73,14 +73,14 @@ namespace fgimpact
   };
 
   /// The keys of an impact run's summary.txt in the file's order,
-  /// declared once: impact_summary() writes them, and the README's
+  /// declared once: impact_summary() writes them, and doc/outputs.md's
   /// table is checked against them (test readme_columns).
   const std::vector<SummaryKey> &
   impact_summary_keys();
 
   /**
    * The contents of an impact run's summary.txt: every key of the
-   * README's table from r (scaled to the units in the names), with
+   * doc/outputs.md's table from r (scaled to the units in the names), with
    * `status` (completed, interrupted or failed) and time_reached_us =
    * t_end.  The monitor writes it at the end of the time loop; the driver
    * writes it with status = failed when set-up fails before the monitor

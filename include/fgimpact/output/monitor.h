@@ -40,10 +40,12 @@ namespace fgimpact
     bool         print_timing    = true;
     bool         instrumentation = false;
     bool         overwrite       = true;
+    /// Entry "Report": report.html at the end (write_run_report()).
+    bool report = true;
     /// Entry "Checkpoint interval" (steps; 0 = none).
     unsigned int checkpoint_interval = 200;
 
-    /// Entry "Snapshot times" (s, ascending; the input is in µs) and
+    /// Entry "Snapshot times" (s, ascending) and
     /// "Snapshot at peak force".
     std::vector<double> snapshot_times;
     bool                peak_snapshot = true;
@@ -57,7 +59,7 @@ namespace fgimpact
 
     /// Entry "VTU compression" (no_compression: raw binary VTU data).
     DataOutBase::VtkFlags::ZlibCompressionLevel vtu_compression =
-      DataOutBase::VtkFlags::no_compression;
+      DataOutBase::VtkFlags::best_speed;
     /// Entry "Fields" (what the VTU files hold).
     VtuFields vtu_fields;
     /// Entry "Probe points" (probes.csv).
@@ -154,6 +156,14 @@ namespace fgimpact
                      const double        sphere_radius,
                      const PlasticPlate *plasticity = nullptr);
 
+    /// End time = auto (before start()): the progress meter counts to this
+    /// many steps, expected, not the Maximum end time's n_steps.
+    void
+    expect_steps(const unsigned int steps)
+    {
+      expected_steps = steps;
+    }
+
     /**
      * A resumed run: every postprocessor loads its section of `resume`
      * first.  Then the files are opened, new or continued.  A failure to
@@ -243,6 +253,7 @@ namespace fgimpact
     const ContactModel    &contact_model;
     const double           m_i, V0, E0, dt;
     const unsigned int     n_steps;
+    unsigned int           expected_steps = 0; // 0: n_steps
     /// 1 / PlateGeometry::share(): the whole plate's sums per part sum.
     const double whole;
     /// The contact of the current step with the whole plate's force.

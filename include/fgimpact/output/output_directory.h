@@ -17,13 +17,21 @@ namespace fgimpact
   /**
    * One writer per output directory: create it if needed and take an
    * exclusive advisory lock (flock) on its lock file, held until this
-   * process ends (the kernel releases it on any death), with the process
+   * process ends (the kernel releases it on any death) or
+   * release_output_directory_locks() removes it, with the process
    * id in the file.  A directory another process holds: ExcMessage naming
    * Output/Directory and the holder's process id.  Call on one rank before
    * anything is written there (a fresh run or a resume).
    */
   void
   lock_output_directory(const std::string &directory);
+
+  /// At the end of a run, however it ended (not at a kill): remove the lock
+  /// files this process holds and release them, so that a finished output
+  /// directory holds only the run's files.  A run killed leaves its lock
+  /// file, which the next run takes over.
+  void
+  release_output_directory_locks();
 
   /// Whether name is a directory this program writes runs into, inside an
   /// output directory: a study's case_N, Accuracy = converged's

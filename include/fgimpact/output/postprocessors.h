@@ -374,7 +374,8 @@ namespace fgimpact
            const unsigned int        n_steps,
            const double              E0,
            const bool                progress,
-           const ConditionalOStream &pcout);
+           const ConditionalOStream &pcout,
+           const unsigned int        expected_steps = 0);
 
     void
     execute(const StepRecord &record) override;
