@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Install the dependencies (Debian 12, as root), build fgimpact in Release and
 # run the default scene prm/default.prm; results land in output/default/,
-# its pictures in output/default/pictures/ (scripts/render.sh).
+# its pictures in output/default/pictures/ (scripts/render.sh), all of it on
+# one page, output/default/report.html.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export DEBIAN_FRONTEND=noninteractive
@@ -15,3 +16,5 @@ cmake --build build -j2 --target fgimpact
 ./build/fgimpact prm/default.prm
 # The standard pictures (output/default/pictures/, ParaView headless).
 scripts/render.sh output/default
+# The run's report.html again, now with the pictures.
+python3 scripts/report.py output/default
