@@ -70,8 +70,8 @@ main(int argc, char *argv[])
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   // After MPI's start-up, which may install handlers of its own.
   ignore_broken_pipe();
-  // From here on SIGINT, SIGTERM, SIGHUP and SIGXFSZ only set a flag, which
-  // the set-up, the time loop and the static and modal solves look at: no
+  // From here on SIGINT, SIGTERM, SIGHUP, SIGXFSZ and SIGUSR1 only set a flag,
+  // which the set-up, the time loop and the static and modal solves look at: no
   // signal is lost, and every run that ends has a summary.txt.
   const SignalGuard signals;
   const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;

@@ -180,7 +180,8 @@ namespace fgimpact
 
 
 
-    /// A stop signal (SIGINT, SIGTERM, SIGHUP, SIGXFSZ) that came during the
+    /// A stop signal (SIGINT, SIGTERM, SIGHUP, SIGXFSZ, SIGUSR1) that came
+    /// during the
     /// set-up or the start files (it only set a flag): nothing computed,
     /// summary.txt says interrupted; RunInterrupted on every rank.
     void

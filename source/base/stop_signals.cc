@@ -5,6 +5,7 @@
 
 #include <csignal>
 #include <cstring>
+#include <iterator>
 #include <pthread.h>
 
 namespace fgimpact
@@ -14,10 +15,14 @@ namespace fgimpact
     volatile std::sig_atomic_t stop_signal = 0;
     /// The signals that stop a run cleanly (summary.txt status =
     /// interrupted, a checkpoint): the user's (SIGINT, SIGTERM), a closed
-    /// terminal (SIGHUP) and a file-size limit (SIGXFSZ, ulimit -f; the
-    /// failed write is then reported as such).
-    const int        stop_signals[4] = {SIGINT, SIGTERM, SIGHUP, SIGXFSZ};
-    struct sigaction previous[4];
+    /// terminal (SIGHUP), a file-size limit (SIGXFSZ, ulimit -f; the
+    /// failed write is then reported as such) and SIGUSR1: the signal a
+    /// batch system sends before the time limit (Slurm's --signal), and
+    /// the one Open MPI's mpirun forwards to every rank and waits for
+    /// (SIGTERM to mpirun kills the ranks 1 s later, odls_base_sigkill_-
+    /// timeout, before a long set-up or factorization has looked at it).
+    const int stop_signals[5] = {SIGINT, SIGTERM, SIGHUP, SIGXFSZ, SIGUSR1};
+    struct sigaction previous[5];
 
     extern "C" void
     on_stop_signal(const int signal)
@@ -113,7 +118,7 @@ namespace fgimpact
     action.sa_handler       = on_stop_signal;
     sigemptyset(&action.sa_mask);
     action.sa_flags = SA_RESTART;
-    for (unsigned int i = 0; i < 4; ++i)
+    for (unsigned int i = 0; i < std::size(stop_signals); ++i)
       sigaction(stop_signals[i], &action, &previous[i]);
     ++guard_depth;
     // The main thread receives them (block_stop_signals_in_new_threads()
@@ -126,7 +131,7 @@ namespace fgimpact
 
   SignalGuard::~SignalGuard()
   {
-    for (unsigned int i = 0; i < 4; ++i)
+    for (unsigned int i = 0; i < std::size(stop_signals); ++i)
       sigaction(stop_signals[i], &previous[i], nullptr);
     --guard_depth;
   }

@@ -382,6 +382,8 @@ namespace fgimpact
           return "SIGHUP";
         case SIGXFSZ:
           return "SIGXFSZ";
+        case SIGUSR1:
+          return "SIGUSR1";
         default:
           return "a signal";
       }

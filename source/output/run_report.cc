@@ -45,7 +45,7 @@ namespace fgimpact
     sigset_t none, defaults;
     sigemptyset(&none);
     sigemptyset(&defaults);
-    for (const int s : {SIGPIPE, SIGINT, SIGTERM, SIGHUP, SIGXFSZ})
+    for (const int s : {SIGPIPE, SIGINT, SIGTERM, SIGHUP, SIGXFSZ, SIGUSR1})
       sigaddset(&defaults, s);
     posix_spawnattr_setsigmask(&attributes, &none);
     posix_spawnattr_setsigdefault(&attributes, &defaults);

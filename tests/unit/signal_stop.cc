@@ -615,6 +615,61 @@ namespace fgimpact_unit_tests::signal_stop
                   failed ? "yes" : "NO");
       return code == 2 && one_line && failed;
     }
+
+    /**
+     * SIGUSR1 to mpiexec during the set-up of a 2-rank run (80 x 40 x 8
+     * whole plate: its set-up and MUMPS factorization take seconds).
+     * mpiexec forwards SIGUSR1 to every rank and waits for them (a SIGTERM
+     * to mpiexec kills the ranks 1 s later: the run ended with exit code 1,
+     * no line and no summary.txt, issue 40); both stop where they are:
+     * exit code 138, one line, summary.txt with status = interrupted on 2
+     * ranks.  The batch systems' warning before a time limit is SIGUSR1
+     * too.
+     */
+    bool
+    mpirun_usr1_in_setup()
+    {
+      const std::string dir = "usr1_mpi";
+      fs::remove_all(dir);
+      {
+        std::ofstream prm("usr1.prm");
+        prm << "subsection Geometry\n set Subdivisions x = 80\n set "
+               "Subdivisions y = 40\n set Subdivisions z = 8\n set Symmetry "
+               "= none\nend\nsubsection Output\n set Directory = "
+            << dir
+            << "\n set Log interval = 0\n set Print timing = false\n"
+               " set VTU interval = 0\nend\n";
+      }
+      fs::remove("usr1.stdout");
+      const pid_t pid = start("usr1.prm", "usr1", true);
+      for (unsigned int i = 0;
+           i < 60000 && read_text("usr1.stdout").find("fgimpact: FGM plate") ==
+                          std::string::npos;
+           ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      kill(pid, SIGUSR1);
+      int status = 0;
+      waitpid(pid, &status, 0);
+      const bool         code = WIFEXITED(status) && WEXITSTATUS(status) == 138;
+      const std::string  err  = read_text("usr1.stderr");
+      unsigned int       ours = 0;
+      std::istringstream lines(err);
+      for (std::string line; std::getline(lines, line);)
+        ours += line.rfind("fgimpact: ", 0) == 0 &&
+                line.find("interrupted by SIGUSR1") != std::string::npos;
+      const std::string summary = read_text(dir + "/summary.txt");
+      const bool interrupted = value_of(summary, "status") == "interrupted" &&
+                               value_of(summary, "n_mpi_ranks") == "2";
+      std::printf("SIGUSR1 to mpiexec in a 2-rank set-up: exit code 138 %s, "
+                  "one line %s, summary.txt status = interrupted on 2 ranks "
+                  "%s\n",
+                  code ? "yes" : "NO",
+                  ours == 1 ? "yes" : "NO",
+                  interrupted ? "yes" : "NO");
+      if (!(code && ours == 1 && interrupted))
+        std::printf("  status %d, stderr: %s\n", status, err.c_str());
+      return code && ours == 1 && interrupted;
+    }
   } // namespace
 
 
@@ -626,6 +681,8 @@ namespace fgimpact_unit_tests::signal_stop
     const bool intr        = run_and_stop(SIGINT, "SIGINT", false);
     const bool hup         = run_and_stop(SIGHUP, "SIGHUP", false);
     const bool mpi         = run_and_stop(SIGTERM, "SIGTERM", true);
+    const bool usr1        = run_and_stop(SIGUSR1, "SIGUSR1", false);
+    const bool mpi_usr1    = mpirun_usr1_in_setup();
     const bool pipe        = piped_into_head();
     const bool study       = study_resumed();
     const bool convolution = convolution_study_stopped();
@@ -657,8 +714,9 @@ namespace fgimpact_unit_tests::signal_stop
             early;
     const bool memory    = memory_limited();
     const bool file_size = file_size_limited();
-    const bool ok        = term && intr && hup && mpi && pipe && study &&
-                    convolution && converged && early && memory && file_size;
+    const bool ok = term && intr && hup && mpi && usr1 && mpi_usr1 && pipe &&
+                    study && convolution && converged && early && memory &&
+                    file_size;
     std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");
     return ok ? 0 : 1;
   }

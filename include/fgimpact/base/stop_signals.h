@@ -16,7 +16,9 @@ namespace fgimpact
    * @name Signals
    *
    * While a SignalGuard lives, SIGINT, SIGTERM, SIGHUP (the terminal
-   * closed) and SIGXFSZ (ulimit -f) only set a flag (the
+   * closed), SIGXFSZ (ulimit -f) and SIGUSR1 (a batch system's warning
+   * before the time limit; mpirun forwards it to every rank and waits, as
+   * it does not for SIGTERM) only set a flag (the
    * handler does nothing else, so it is async-signal-safe); the time loop
    * asks agreed_signal() once per step and stops cleanly.  The previous
    * handlers come back when the guard is destroyed.
