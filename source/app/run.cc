@@ -256,6 +256,30 @@ namespace fgimpact
 
 
 
+    /// A run's last words (rank 0): its report (Output/Report) and where
+    /// its results are.
+    void
+    finish_run(const fgimpact::OutputParameters &output)
+    {
+      if (output.report)
+        if (const std::string note =
+              fgimpact::write_run_report(output.directory);
+            !note.empty())
+          std::cout << "  note: " << note << '\n';
+      std::cout << "fgimpact: results in " << output.directory << '\n';
+    }
+
+
+
+    /// However the run ends here (a kill aside), its output directories
+    /// are left without their lock files.
+    struct ReleaseLocksAtEnd
+    {
+      ~ReleaseLocksAtEnd() { fgimpact::release_output_directory_locks(); }
+    };
+
+
+
     /// Set up, write the start files and run one simulation; the exit code.
     int
     simulate(const fgimpact::CommandLine::Options &options,
@@ -324,15 +348,7 @@ namespace fgimpact
           stop_if_signalled_in_setup(simulator);
           simulator.run();
           if (root)
-            {
-              if (parameters.output.report)
-                if (const std::string note =
-                      write_run_report(parameters.output.directory);
-                    !note.empty())
-                  std::cout << "  note: " << note << '\n';
-              std::cout << "fgimpact: results in "
-                        << parameters.output.directory << '\n';
-            }
+            finish_run(parameters.output);
         }
       catch (...)
         {
@@ -370,12 +386,7 @@ namespace fgimpact
                         Logger                     &logger)
   {
     using namespace dealii;
-    // However the run ends here (a kill aside), its output directories are
-    // left without their lock files.
-    const struct ReleaseLocksAtEnd
-    {
-      ~ReleaseLocksAtEnd() { release_output_directory_locks(); }
-    } release_locks;
+    const ReleaseLocksAtEnd release_locks;
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     ParameterHandler           prm;
     Parameters                 parameters;

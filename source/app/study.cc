@@ -400,6 +400,29 @@ namespace fgimpact
         ordered.push_back(groups[key]);
       return ordered;
     }
+
+    /// study.csv, report.html (the cases, each linked to its own report)
+    /// and the study's last line.
+    void
+    finish_study(const std::vector<ParsedCase>               &cases,
+                 const std::map<std::string, SummaryEntries> &summaries,
+                 const OutputParameters                      &output,
+                 const double                                 wall_time)
+    {
+      run_on_root(MPI_COMM_WORLD, [&]() {
+        write_study_csv(cases, summaries, output.directory + "/study.csv");
+      });
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      if (output.report)
+        if (const std::string note = write_run_report(output.directory);
+            !note.empty())
+          std::cout << "  note: " << note << '\n';
+      std::cout << "fgimpact: study of " << cases.size() << " cases in "
+                << wall_time << " s; results in " << output.directory
+                << " (study.csv; figures: scripts/plot_study.py "
+                << output.directory << "/study.csv)\n";
+    }
   } // namespace
 
 
@@ -459,22 +482,7 @@ namespace fgimpact
         std::map<std::string, SummaryEntries>            summaries;
         for (const auto &group : groups_of(cases))
           run_group(study, group, input, study_timer, failures, summaries);
-        run_on_root(MPI_COMM_WORLD, [&]() {
-          write_study_csv(cases,
-                          summaries,
-                          base.output.directory + "/study.csv");
-        });
-        // report.html: the study's cases, each linked to its own report.
-        if (root && base.output.report)
-          if (const std::string note = write_run_report(base.output.directory);
-              !note.empty())
-            std::cout << "  note: " << note << '\n';
-        if (root)
-          std::cout << "fgimpact: study of " << cases.size() << " cases in "
-                    << study_timer.wall_time() << " s; results in "
-                    << base.output.directory
-                    << " (study.csv; figures: scripts/plot_study.py "
-                    << base.output.directory << "/study.csv)\n";
+        finish_study(cases, summaries, base.output, study_timer.wall_time());
         // Every case ran; the failed ones make the study a failed run.
         AssertThrow(failures.empty(),
                     ExcNumericalFailure(

@@ -60,23 +60,13 @@ namespace fgimpact
 
 
 
-  void
-  OutputParameters::declare_parameters(ParameterHandler &prm)
+  namespace
   {
-    prm.enter_subsection("Output");
+    /// Output/Log interval, Print timing, Report and Instrumentation: what
+    /// the run says on the screen and at its end besides its files.
+    void
+    declare_log_parameters(ParameterHandler &prm)
     {
-      prm.declare_entry("Directory",
-                        "output",
-                        Patterns::DirectoryName(),
-                        "Directory for history.csv, summary.txt, "
-                        "parameters.prm and the VTU/PVD files; created if "
-                        "missing.");
-      prm.declare_entry("VTU interval",
-                        "0",
-                        Patterns::Integer(0, 100000000),
-                        "Write VTU every this many time steps (and the "
-                        "initial state); 0 = no VTU output.");
-      declare_snapshot_parameters(prm);
       prm.declare_entry("Log interval",
                         "50",
                         Patterns::Integer(0, 100000000),
@@ -110,6 +100,29 @@ namespace fgimpact
                         "(spmv_ms, solve_ms in summary.txt, for the "
                         "benchmarks in bench/); costs 20 products and 3 "
                         "solves at set-up.");
+    }
+  } // namespace
+
+
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::DirectoryName(),
+                        "Directory for history.csv, summary.txt, "
+                        "parameters.prm and the VTU/PVD files; created if "
+                        "missing.");
+      prm.declare_entry("VTU interval",
+                        "0",
+                        Patterns::Integer(0, 100000000),
+                        "Write VTU every this many time steps (and the "
+                        "initial state); 0 = no VTU output.");
+      declare_snapshot_parameters(prm);
+      declare_log_parameters(prm);
       prm.declare_entry(
         "VTU compression",
         "speed",
