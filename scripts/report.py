@@ -367,14 +367,28 @@ def headline_table(s):
             % "".join(rows))
 
 
+def split_outside(text, separator):
+    """text split at separator where it is outside parentheses."""
+    parts, depth, start, i = [], 0, 0, 0
+    while i < len(text):
+        depth += {"(": 1, ")": -1}.get(text[i], 0)
+        if depth == 0 and text.startswith(separator, i):
+            parts.append(text[start:i])
+            i += len(separator)
+            start = i
+            continue
+        i += 1
+    return parts + [text[start:]]
+
+
 def validity_list(s):
     """summary.txt's validity line as one verdict per item, with the
     indices behind them."""
     text = s.get("validity") or ""
     items = []
-    for part in text.split(" | "):
+    for part in split_outside(text, " | "):
         verdict, _, rest = part.partition(": ")
-        for item in rest.split("; "):
+        for item in split_outside(rest, "; "):
             if item:
                 items.append("<li><b>%s</b>: %s</li>"
                              % (html.escape(verdict), html.escape(item)))

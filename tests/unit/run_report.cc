@@ -1,11 +1,12 @@
 // report.html (Output/Report, scripts/report.py), read back as a user's
-// browser would (issue 41), on a small resolved-sphere run and a 2-case
-// study:
+// browser would (issue 41), on a small resolved-sphere run with J2 plasticity
+// and a 2-case study:
 //  (1) the file is self-contained: no reference to another file or
 //      server (no src= but data: URIs, no http);
 //  (2) every headline number in its table equals summary.txt's value of
 //      the key the row names (to its 6 printed digits), and at least the
 //      peak force, duration, departure velocity and deflection are there;
+//  (2b) its validity list holds summary.txt's verdicts, one item each;
 //  (3) the contact-force chart draws one point per history.csv row, and
 //      the peak of the drawn curve, mapped back through the chart's axis
 //      ticks, is history.csv's largest force (to 1 % of the axis span);
@@ -110,6 +111,41 @@ namespace fgimpact_unit_tests::run_report
       return bad == 0 && n >= 4 && required == 4;
     }
 
+    /// (2b) The validity list against summary.txt's validity line: every
+    /// item is a verdict of the line, and every verdict of the line (its
+    /// "; "-separated items outside parentheses) is an item.
+    bool
+    validity_items(const std::string &html, const std::string &summary)
+    {
+      std::string  line     = fgimpact_tests::read_summary(summary)["validity"];
+      unsigned int expected = line.empty() ? 0 : 1, depth = 0;
+      for (std::size_t i = 0; i < line.size(); ++i)
+        {
+          depth += line[i] == '(' ? 1 : 0;
+          depth -= line[i] == ')' ? 1 : 0;
+          if (depth == 0 &&
+              (line.compare(i, 2, "; ") == 0 || line.compare(i, 3, " | ") == 0))
+            ++expected;
+        }
+      const std::regex item("<li><b>(breaks|holds)</b>: (.*?)</li>");
+      unsigned int     n = 0, found = 0;
+      for (auto it = std::sregex_iterator(html.begin(), html.end(), item);
+           it != std::sregex_iterator();
+           ++it, ++n)
+        {
+          const std::string text =
+            std::regex_replace((*it)[2].str(), std::regex("&#x27;"), "'");
+          found += line.find(text) != std::string::npos;
+        }
+      const bool ok = n == expected && found == n && n > 0;
+      std::printf("(2b) %u validity items for the %u verdicts of summary.txt's "
+                  "validity line, each its text: %s\n",
+                  n,
+                  expected,
+                  ok ? "yes" : "NO");
+      return ok;
+    }
+
     /// (3) The contact-force chart against history.csv.
     bool
     force_chart(const std::string &html, const std::string &history)
@@ -198,6 +234,7 @@ namespace fgimpact_unit_tests::run_report
     bool              ok     = true;
     const std::string common = "-s 'Contact/Model=resolved sphere' "
                                "-s 'Geometry/Contact refinement levels=2' "
+                               "-s 'Material/Plasticity=J2' "
                                "-s 'Time integration/End time=auto' "
                                "-s 'Output/Print timing=false' ";
     fs::remove_all("report_out");
@@ -209,6 +246,7 @@ namespace fgimpact_unit_tests::run_report
     ok = ok && code == 0 && !html.empty();
     ok = self_contained(html) && ok;
     ok = headline_numbers(html, "report_out/summary.txt") && ok;
+    ok = validity_items(html, "report_out/summary.txt") && ok;
     ok = force_chart(html, "report_out/history.csv") && ok;
     const bool listed =
       fgimpact::read_manifest("report_out").count("report.html") == 1;
