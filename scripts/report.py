@@ -62,6 +62,9 @@ HEADLINE = [
      "MPa"),
 ]
 
+# The unit suffixes of summary keys, longest first.
+UNIT_SUFFIXES = ["_m_s", "_MPa", "_us", "_um", "_mm", "_N", "_J"]
+
 COLOURS = ["#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b"]
 
 
@@ -349,10 +352,14 @@ def headline_table(s):
         value = number(s.get(key))
         if value is None:
             continue
-        estimate = number(s.get(key + "_error_estimate"))
-        sources = [(k[len(key + "_error_estimate_"):].replace("_", " "),
+        # Accuracy = converged names its estimates by the quantity, without
+        # the unit: peak_contact_force_error_estimate for ..._N.
+        stem = next((key[:-len(u)] for u in UNIT_SUFFIXES if key.endswith(u)),
+                    key)
+        estimate = number(s.get(stem + "_error_estimate"))
+        sources = [(k[len(stem + "_error_estimate_"):].replace("_", " "),
                     number(v)) for k, v in s.items()
-                   if k.startswith(key + "_error_estimate_")]
+                   if k.startswith(stem + "_error_estimate_")]
         error = ("± %.2g %%" % (100 * estimate) if estimate is not None
                  else "")
         if sources:

@@ -16,6 +16,8 @@
 //      time step), against the estimates recomputed here from
 //      convergence.csv; the probe under the point force is reported but
 //      does not steer;
+//  (2b) the run's report.html (scripts/report.py) shows each estimate and
+//      its sources beside its number;
 //  (3) the estimates against the actual error, on meshes the run never
 //      used: the final numbers against a run with the final base mesh
 //      doubled in every direction, one contact level more and half the
@@ -31,6 +33,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -210,6 +213,60 @@ namespace fgimpact_unit_tests::converged_accuracy
                       within ? "yes" : "NO");
           ok = ok && within;
         }
+      return ok;
+    }
+
+    /**
+     * (2b) The run's report.html (scripts/report.py, which Output/Report
+     * runs at the end of the executable's run) read back: each headline
+     * number with an estimate shows its total (2 significant digits, %)
+     * and the four sources by name, in the number's row.
+     */
+    bool
+    report_estimates(const std::string                        &directory,
+                     const std::map<std::string, std::string> &summary)
+    {
+      const std::string command = std::string("python3 ") +
+                                  FGIMPACT_SOURCE_DIR "/scripts/report.py " +
+                                  directory + " > /dev/null 2>&1";
+      const bool        written = std::system(command.c_str()) == 0;
+      const std::string html =
+        fgimpact_tests::read_text(directory + "/report.html");
+      unsigned int n = 0, shown = 0;
+      for (const auto &[key, stem] :
+           std::vector<std::pair<std::string, std::string>>{
+             {"peak_contact_force_N", "peak_contact_force"},
+             {"contact_duration_us", "contact_duration"},
+             {"departure_velocity_m_s", "departure_velocity"},
+             {"max_midplane_deflection_um", "max_midplane_deflection"},
+             {"max_approach_um", "max_approach"}})
+        {
+          ++n;
+          const std::size_t at = html.find("<code>" + key + "</code>");
+          if (at == std::string::npos ||
+              summary.count(stem + "_error_estimate") == 0)
+            continue;
+          const std::string row =
+            html.substr(html.rfind("<tr>", at), at - html.rfind("<tr>", at));
+          char total[32];
+          std::snprintf(total,
+                        sizeof(total),
+                        "± %.2g %%",
+                        100. * std::stod(summary.at(stem + "_error_estimate")));
+          bool all = row.find(total) != std::string::npos;
+          for (const char *source : {"contact levels",
+                                     "base mesh in plane",
+                                     "base mesh thickness",
+                                     "time step"})
+            all = all && row.find(source) != std::string::npos;
+          shown += all;
+        }
+      const bool ok = written && shown == n;
+      std::printf("(2b) report.html: %u of %u numbers show their estimate "
+                  "and its four sources: %s\n",
+                  shown,
+                  n,
+                  ok ? "yes" : "NO");
       return ok;
     }
   } // namespace
@@ -407,6 +464,7 @@ namespace fgimpact_unit_tests::converged_accuracy
          numbers.size() == ConvergedRun::quantities().size() + 1 &&
          reported == " probe_top_peak_von_mises";
 
+    ok = report_estimates("out", summary) && ok;
     ok = part_three(numbers, header, rows, summary) && ok;
 
     // (4) A number that cannot converge within the 16-fold limit: a
