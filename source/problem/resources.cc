@@ -4,6 +4,7 @@
 #include <fgimpact/contact/resolved_contact.h>
 #include <fgimpact/problem/parameters.h>
 #include <fgimpact/problem/resources.h>
+#include <fgimpact/problem/scene.h>
 #include <fgimpact/problem/symmetry.h>
 
 #include <algorithm>
@@ -301,5 +302,19 @@ namespace fgimpact
          << (must_factor ? " or Linear solver/Type = auto or cg" : "")
          << ", or more memory or nodes.";
     AssertThrow(false, ExcMessage(text.str()));
+  }
+
+
+
+  void
+  check_memory_before_setup(const Parameters &parameters,
+                            const MPI_Comm    mpi_communicator)
+  {
+    check_memory(parameters,
+                 estimate_resources(parameters,
+                                    contact_refinement_of(parameters,
+                                                          scene_without_mesh(
+                                                            parameters))),
+                 mpi_communicator);
   }
 } // namespace fgimpact

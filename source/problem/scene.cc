@@ -2,7 +2,9 @@
 // material, read by everything that needs the impactor or where it strikes.
 
 #include <fgimpact/contact/contact_law.h>
+#include <fgimpact/plate/geometry.h>
 #include <fgimpact/problem/scene.h>
+#include <fgimpact/problem/symmetry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -106,5 +108,17 @@ namespace fgimpact
              contact_radius / contact_elements_per_radius * (1. + 1e-12))
       ++levels;
     return levels;
+  }
+
+
+
+  Scene
+  scene_without_mesh(const Parameters &parameters)
+  {
+    const SymmetricPart              part = resolve_symmetry(parameters);
+    const PlateGeometry              geometry(parameters.geometry, part.cut);
+    const FunctionallyGradedMaterial material(parameters.material,
+                                              geometry.thickness());
+    return Scene(parameters, material, geometry.share());
   }
 } // namespace fgimpact

@@ -28,18 +28,6 @@ namespace fgimpact
     /// Geometry/Contact refinement levels' upper bound (its pattern).
     constexpr unsigned int max_levels = 12;
 
-    /// The scene of parameters p without the mesh (cheap): its expected
-    /// contact radius and impact point.
-    Scene
-    scene_of(const Parameters &p)
-    {
-      const SymmetricPart              part = resolve_symmetry(p);
-      const PlateGeometry              geometry(p.geometry, part.cut);
-      const FunctionallyGradedMaterial material(p.material,
-                                                geometry.thickness());
-      return Scene(p, material, geometry.share());
-    }
-
     /// Give the freed heap of a finished level back to the system: glibc
     /// keeps it otherwise, and the next level's peak would stack on it
     /// (default scene: 0.47 GB resident after level 6 instead of 0.18 GB,
@@ -57,7 +45,7 @@ namespace fgimpact
   ConvergedRun::quantities_of(const ImpactResults &r) const
   {
     std::vector<Quantity> all   = quantities();
-    const Point<3>        point = scene_of(parameters).impact_point();
+    const Point<3>        point = scene_without_mesh(parameters).impact_point();
     const double reach = r.max_contact_radius + r.model.element_size_under_ball;
     for (std::size_t i = 0; i < r.probe_peaks.size(); ++i)
       {
@@ -107,7 +95,7 @@ namespace fgimpact
     // before it, and the coarser one costs about a quarter.  Its set-up
     // checks the input (the mesh included) before anything is written.
     const unsigned int automatic = automatic_contact_refinement_levels(
-      parameters, scene_of(parameters).expected_contact_radius());
+      parameters, scene_without_mesh(parameters).expected_contact_radius());
     first_levels       = automatic > 0 ? automatic - 1 : 0;
     const Parameters p = parameters_of(first_levels, false, BaseMesh());
     Timer            timer;
@@ -233,10 +221,7 @@ namespace fgimpact
     const Parameters p = parameters_of(levels, false, base);
     try
       {
-        check_memory(p,
-                     estimate_resources(p,
-                                        contact_refinement_of(p, scene_of(p))),
-                     communicator);
+        check_memory_before_setup(p, communicator);
       }
     catch (const ExceptionBase &e)
       {

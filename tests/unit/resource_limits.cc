@@ -3,6 +3,7 @@
 //  - 400 x 200 x 40 elements (9.9e6 DoFs, about 40 GB) is refused within
 //    seconds, before the mesh is built, with one line giving the need, the
 //    memory available and what to change, exit code 1, nothing written;
+//    so is a 3-case study of it, before its first case, naming the case;
 //  - under an address-space limit (ulimit -v 3 GB) 120 x 60 x 12 elements
 //    with Linear solver/Type = cholmod (a 2.3 GB factor) is refused the
 //    same way, naming RLIMIT_AS;
@@ -127,6 +128,22 @@ namespace fgimpact_unit_tests::resource_limits
                  "memory available and Geometry/Subdivisions, nothing written",
                  refused(huge, "Geometry/Subdivisions"));
     ok &= report("400 x 200 x 40: refused within 10 s", huge.seconds < 10);
+    // A study of it: refused before its directory is touched, naming the
+    // case (it ran its first case for minutes, issue 40; then its refusal
+    // left the study's directory and log.txt behind).
+    const Outcome study =
+      run("",
+          mesh(400, 200, 40) + "--study \"Impactor/Initial velocity=1,2,3\" ");
+    verbose("study of 400x200x40: %.2f s, %s",
+            study.seconds,
+            study.err.c_str());
+    ok &= report("a 3-case study of 400 x 200 x 40: exit code 1, one line "
+                 "naming case 0 and Geometry/Subdivisions, nothing written, "
+                 "within 10 s",
+                 refused(study, "Geometry/Subdivisions") &&
+                   study.err.find("study case 0 (Impactor/Initial "
+                                  "velocity=1)") != std::string::npos &&
+                   study.seconds < 10);
 
     // The sanitizers reserve terabytes of address space: no ulimit -v there.
     if (std::getenv("FGIMPACT_SANITIZED") == nullptr)

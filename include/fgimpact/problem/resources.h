@@ -75,6 +75,13 @@ namespace fgimpact
   check_memory(const Parameters       &parameters,
                const ResourceEstimate &estimate,
                MPI_Comm                mpi_communicator);
+
+  /// check_memory() of the estimate of `parameters` alone, before anything
+  /// is built (scene_without_mesh()): what a study checks for every case,
+  /// and Accuracy = converged for each level, before they start.
+  void
+  check_memory_before_setup(const Parameters &parameters,
+                            MPI_Comm          mpi_communicator);
 } // namespace fgimpact
 
 #endif

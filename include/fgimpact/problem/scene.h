@@ -116,6 +116,12 @@ namespace fgimpact
   /// the scene's expected contact radius) and levels (auto resolved).
   LocalRefinement
   contact_refinement_of(const Parameters &parameters, const Scene &scene);
+
+  /// The scene of `parameters` without the mesh (cheap: the geometry of
+  /// the modelled part and the material, for the expected contact radius
+  /// and the impact point).
+  Scene
+  scene_without_mesh(const Parameters &parameters);
 } // namespace fgimpact
 
 #endif
