@@ -214,9 +214,24 @@ namespace fgimpact
   void
   ConvergedRun::write_outputs(const Level &final_run)
   {
+    // The estimates first: a sum above the tolerance is a warning of the
+    // run, in summary.txt's warnings as in the log (it said none).
+    SummaryWriter     estimates;
+    const double      largest   = write_estimates(estimates, final_run);
+    const double      tolerance = parameters.accuracy.tolerance;
+    const std::string exceeded =
+      largest > tolerance ?
+        "the largest error estimate, " + percent(largest) +
+          ", exceeds Accuracy tolerance = " + percent(tolerance) +
+          " (each source changed by less than the tolerance at its last "
+          "refinement, and their estimates add up to more)" :
+        std::string();
     SummaryWriter out;
     for (const auto &[key, value] : summary_entries)
-      out.add_text(key, value);
+      out.add_text(key,
+                   key != "warnings" || exceeded.empty() ? value :
+                   value == "none"                       ? exceeded :
+                                     value + "; " + exceeded);
     out.add_scientific("accuracy_tolerance", parameters.accuracy.tolerance);
     out.add_text("converged_contact_refinement_levels",
                  std::to_string(final_run.levels));
@@ -236,14 +251,15 @@ namespace fgimpact
                  runs(in_plane_chain));
     out.add_text("error_estimate_runs_base_mesh_thickness",
                  runs(thickness_chain));
-    write_estimates(out, final_run);
+    for (const auto &[key, value] : estimates.entries())
+      out.add_text(key, value);
     summary.write(out);
     write_csv(final_run);
   }
 
 
 
-  void
+  double
   ConvergedRun::write_estimates(SummaryWriter &out,
                                 const Level   &final_run) const
   {
@@ -302,6 +318,7 @@ namespace fgimpact
             << percent(parameters.accuracy.tolerance)
             << ": each source changed by less than the tolerance at its "
                "last refinement, and their estimates add up to more.\n";
+    return largest;
   }
 
 

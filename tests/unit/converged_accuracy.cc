@@ -18,6 +18,8 @@
 //      does not steer;
 //  (2b) the run's report.html (scripts/report.py) shows each estimate and
 //      its sources beside its number;
+//  (2c) summary.txt's warnings name a sum of estimates above the tolerance
+//      exactly when the log warns of it;
 //  (3) the estimates against the actual error, on meshes the run never
 //      used: the final numbers against a run with the final base mesh
 //      doubled in every direction, one contact level more and half the
@@ -465,6 +467,20 @@ namespace fgimpact_unit_tests::converged_accuracy
          reported == " probe_top_peak_von_mises";
 
     ok = report_estimates("out", summary) && ok;
+    // (2c) The log warns when the sum of a number's estimates exceeds the
+    // tolerance; summary.txt's warnings must say the same (they said none).
+    {
+      const bool exceeds =
+        std::stod(summary.at("largest_error_estimate")) > tolerance;
+      const bool says =
+        summary.at("warnings").find("exceeds Accuracy tolerance") !=
+        std::string::npos;
+      std::printf("(2c) largest_error_estimate above the tolerance: %s; "
+                  "summary.txt's warnings say so exactly then: %s\n",
+                  exceeds ? "yes" : "no",
+                  says == exceeds ? "yes" : "NO");
+      ok = ok && says == exceeds;
+    }
     ok = part_three(numbers, header, rows, summary) && ok;
 
     // (4) A number that cannot converge within the 16-fold limit: a

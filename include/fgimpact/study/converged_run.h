@@ -247,8 +247,9 @@ namespace fgimpact
                const BaseMesh    &base,
                const std::string &reached) const;
 
-    /// The error estimates of each quantity in summary.txt and the log.
-    void
+    /// The error estimates of each quantity into `out` and the log; the
+    /// largest total of a number that steers.
+    double
     write_estimates(SummaryWriter &out, const Level &final_run) const;
 
     /// convergence.csv: every run, the final one last.
