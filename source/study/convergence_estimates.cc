@@ -222,9 +222,9 @@ namespace fgimpact
     const std::string exceeded =
       largest > tolerance ?
         "the largest error estimate, " + percent(largest) +
-          ", exceeds Accuracy tolerance = " + percent(tolerance) +
-          " (each source changed by less than the tolerance at its last "
-          "refinement, and their estimates add up to more)" :
+          ", exceeds Accuracy tolerance, " + percent(tolerance) +
+          ": each source changed by less than the tolerance at its last "
+          "refinement, and their estimates add up to more" :
         std::string();
     SummaryWriter out;
     for (const auto &[key, value] : summary_entries)
