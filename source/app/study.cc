@@ -302,60 +302,23 @@ namespace fgimpact
         }
     }
 
-    /// study.csv: case, the varied entries, every summary key (the
-    /// numbers, and the words that say what was modelled and how the case
-    /// ended; no value holds a comma), from the cases' summaries in memory.
-    /// A column whose values are numbers where there are any leaves a
-    /// case without one (none, or no such key) empty, so that pandas reads
-    /// it as numbers (NaN there); a word column writes none.
+    /// study.csv from the cases' summaries in memory (study_csv()).
     void
     write_study_csv(const std::vector<ParsedCase>               &cases,
                     const std::map<std::string, SummaryEntries> &summaries,
                     const std::string                           &filename)
     {
-      const auto entries_of = [&summaries](const ParsedCase &c) {
-        const auto found = summaries.find(c.parameters.output.directory);
-        return found == summaries.end() ? SummaryEntries() : found->second;
-      };
-      std::vector<std::string> keys;
+      std::vector<std::vector<std::string>> values;
+      std::vector<SummaryEntries>           entries;
       for (const auto &c : cases)
-        for (const auto &[key, value] : entries_of(c))
-          if (std::find(keys.begin(), keys.end(), key) == keys.end())
-            keys.push_back(key);
-      std::ostringstream csv;
-      csv << "case";
-      for (const auto &path : cases[0].study_case.paths)
-        csv << ',' << path;
-      for (const auto &key : keys)
-        csv << ',' << key;
-      csv << '\n';
-      std::vector<std::map<std::string, std::string>> rows(cases.size());
-      std::set<std::string>                           words;
-      for (unsigned int i = 0; i < cases.size(); ++i)
-        for (const auto &[key, value] : entries_of(cases[i]))
-          {
-            rows[i][key] = value;
-            if (value != "none" && !is_summary_number(value))
-              words.insert(key);
-          }
-      for (unsigned int i = 0; i < cases.size(); ++i)
         {
-          csv << i;
-          for (const auto &value : cases[i].study_case.values)
-            csv << ',' << value;
-          for (const auto &key : keys)
-            {
-              const auto value = rows[i].find(key);
-              const bool known =
-                value != rows[i].end() && value->second != "none";
-              csv << ','
-                  << (known                 ? value->second :
-                      words.count(key) != 0 ? "none" :
-                                              "");
-            }
-          csv << '\n';
+          values.push_back(c.study_case.values);
+          const auto found = summaries.find(c.parameters.output.directory);
+          entries.push_back(found == summaries.end() ? SummaryEntries() :
+                                                       found->second);
         }
-      write_file_atomically(filename, csv.str());
+      write_file_atomically(
+        filename, study_csv(cases[0].study_case.paths, values, entries));
     }
 
     /// The study's directory checked, locked and cleaned; an unusable one

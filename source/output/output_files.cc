@@ -16,6 +16,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 
 namespace fgimpact
@@ -376,5 +378,53 @@ namespace fgimpact
   SummaryFile::status() const
   {
     return status_of(last.entries());
+  }
+
+
+
+  std::string
+  study_csv(const std::vector<std::string>              &paths,
+            const std::vector<std::vector<std::string>> &values,
+            const std::vector<SummaryEntries>           &summaries)
+  {
+    std::vector<std::string> keys;
+    for (const auto &entries : summaries)
+      for (const auto &[key, value] : entries)
+        if (std::find(keys.begin(), keys.end(), key) == keys.end())
+          keys.push_back(key);
+    std::ostringstream csv;
+    csv << "case";
+    for (const auto &path : paths)
+      csv << ',' << path;
+    for (const auto &key : keys)
+      csv << ',' << key;
+    csv << '\n';
+    std::vector<std::map<std::string, std::string>> rows(summaries.size());
+    std::set<std::string>                           words;
+    for (unsigned int i = 0; i < summaries.size(); ++i)
+      for (const auto &[key, value] : summaries[i])
+        {
+          rows[i][key] = value;
+          if (value != "none" && !is_summary_number(value))
+            words.insert(key);
+        }
+    for (unsigned int i = 0; i < summaries.size(); ++i)
+      {
+        csv << i;
+        for (const auto &value : values[i])
+          csv << ',' << value;
+        for (const auto &key : keys)
+          {
+            const auto value = rows[i].find(key);
+            const bool known =
+              value != rows[i].end() && value->second != "none";
+            csv << ','
+                << (known                 ? value->second :
+                    words.count(key) != 0 ? "none" :
+                                            "");
+          }
+        csv << '\n';
+      }
+    return csv.str();
   }
 } // namespace fgimpact

@@ -5,6 +5,7 @@
 #include <fgimpact/output/run_report.h>
 #include <fgimpact/version.h>
 
+#include <cerrno>
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>

@@ -135,6 +135,19 @@ namespace fgimpact
   std::string
   summary_json(const std::string &preamble, const SummaryEntries &entries);
 
+  /**
+   * study.csv's text: case, the varied entries (`paths`, each case's
+   * `values`), every summary key of the cases' `summaries` (the numbers,
+   * and the words that say what was modelled and how the case ended; no
+   * value holds a comma).  A column whose values are numbers where there
+   * are any leaves a case without one (none, or no such key) empty, so
+   * that pandas reads it as numbers (NaN there); a word column writes none.
+   */
+  std::string
+  study_csv(const std::vector<std::string>              &paths,
+            const std::vector<std::vector<std::string>> &values,
+            const std::vector<SummaryEntries>           &summaries);
+
 
 
   /**
