@@ -31,6 +31,7 @@ namespace fgimpact
     , R(radius)
     , material(plate.get_material())
     , degree(plate.get_fe().degree)
+    , locking(degree == 1 && !plate.uses_mean_dilatation())
   {
     results.plastic.modelled                    = true;
     const double                      tolerance = 1e-9 * top;
@@ -153,6 +154,13 @@ namespace fgimpact
       double(plasticity.n_iterations()) / std::max(results.n_time_steps, 1u);
     r.max_iterations = plasticity.max_increment_iterations();
     judge_first_yield();
+    if (locking && r.max_plastic_strain > 0.)
+      {
+        const std::string text = locking_warning();
+        results.warnings.push_back(text);
+        if (Utilities::MPI::this_mpi_process(mpi_communicator) == 0)
+          std::cout << "  WARNING: " << text << ".\n";
+      }
   }
 
 

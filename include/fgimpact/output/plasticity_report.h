@@ -81,6 +81,9 @@ namespace fgimpact
     const double                      R; // m, the ball's radius
     const FunctionallyGradedMaterial &material;
     const unsigned int                degree; // of the plate's elements
+    /// The pointwise Q1 brick, which locks under plastic flow (a warning
+    /// at the end when anything yielded).
+    const bool locking;
     /// The last step's trial ratio, time (s) and whole contact force (N).
     double last_ratio = 0, last_time = 0, last_force = 0;
     double indentation = 0; // m, W_top - W_mid of the last step

@@ -59,6 +59,13 @@ namespace fgimpact
   /// for the contact force: 4 element sizes across the contact).
   constexpr double first_yield_min_resolution = 4.;
 
+  /// The warning for a plastic run on the fully integrated 8-node brick
+  /// (Finite element/Volumetric strain = pointwise): plastic flow keeps
+  /// the volume, the brick locks, and its pressure near the plastic zone
+  /// does not converge (doc/plasticity.md; test residual_traction).
+  std::string
+  locking_warning();
+
   /// The warning for a first yield that `resolution` node spacings across
   /// Hertz's contact radius do not resolve: the computed force (N; with
   /// its time if with_time) is given as none, Hertz's (N) stands.
