@@ -19,6 +19,8 @@
 #include <fgimpact/output/run_report.h>
 #include <fgimpact/study/simulator.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -180,6 +182,19 @@ namespace fgimpact
 
 
 
+    /// What a stop signal in the set-up ends the run with.
+    fgimpact::RunInterrupted
+    setup_interruption(const int signal)
+    {
+      return fgimpact::RunInterrupted(
+        signal,
+        std::string("interrupted by ") + fgimpact::signal_name(signal) +
+          " during the set-up (nothing computed); summary.txt says status = "
+          "interrupted; run it again.");
+    }
+
+
+
     /// A stop signal (SIGINT, SIGTERM, SIGHUP, SIGXFSZ, SIGUSR1) that came
     /// during the
     /// set-up or the start files (it only set a flag): nothing computed,
@@ -191,11 +206,38 @@ namespace fgimpact
       if (stop <= 0)
         return;
       simulator.write_failed_summary("interrupted");
-      throw fgimpact::RunInterrupted(
-        stop,
-        std::string("interrupted by ") + fgimpact::signal_name(stop) +
-          " during the set-up (nothing computed); summary.txt says status = "
-          "interrupted; run it again.");
+      throw setup_interruption(stop);
+    }
+
+
+
+    /// The action for a stop signal that a solver's set-up (ML's
+    /// aggregation, CHOLMOD's analysis: minutes for millions of DoFs) holds
+    /// back longer than 2 s (DeferredStopAction), on one rank: nothing is
+    /// computed, so the start files, summary.txt (status = interrupted) and
+    /// the usual line, then the exit (128 + the signal) without waiting for
+    /// the solver.  On several ranks the signal waits for the set-up's end
+    /// (the ranks must stop together): an empty action.
+    std::function<void(int)>
+    stop_during_solver_setup(const fgimpact::Simulator   &simulator,
+                             const std::function<void()> &start_files)
+    {
+      if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+        return nullptr;
+      return [&simulator, start_files](const int signal) {
+        try
+          {
+            start_files();
+          }
+        catch (...)
+          {}
+        simulator.write_failed_summary("interrupted");
+        const int code = fgimpact::report_failure(
+          std::make_exception_ptr(setup_interruption(signal)), true, 2);
+        fgimpact::release_output_directory_locks();
+        std::fflush(nullptr);
+        std::_Exit(code);
+      };
     }
 
 
@@ -321,6 +363,9 @@ namespace fgimpact
           // (--validate writes nothing).
           try
             {
+              const DeferredStopAction stop_in_solver_setup(
+                validate ? nullptr :
+                           stop_during_solver_setup(simulator, start_files));
               simulator.setup();
             }
           catch (...)

@@ -3,6 +3,7 @@
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/stop_signals.h>
 
+#include <chrono>
 #include <csignal>
 #include <cstring>
 #include <iterator>
@@ -70,6 +71,42 @@ namespace fgimpact
     /// Whether a SignalGuard is active (its handler is to be put back).
     int guard_depth = 0;
 
+    /// The watchdog of DeferredStopAction.  Its thread blocks the stop
+    /// signals: one sent to the process goes to the main thread's handler
+    /// (stop_signal), or, while the main thread defers them
+    /// (DeferStopSignals), waits for sigtimedwait() here and is recorded
+    /// as the handler would.  Once a signal is recorded, `grace` s later
+    /// `action` ends the process unless `done` (the set-up ended: the usual
+    /// stop follows).
+    void
+    watch_setup(const std::function<void(int)> &action,
+                const double                    grace,
+                const std::atomic<bool>        &done)
+    {
+      const sigset_t set = stop_signal_set();
+      // A short tick: the set-up's end waits for it (join).
+      const timespec tick   = {0, 20000000}; // 0.02 s
+      double         waited = -1;            // s since the signal
+      while (!done)
+        {
+          const int signal = sigtimedwait(&set, nullptr, &tick);
+          if (signal > 0 && stop_signal == 0)
+            stop_signal = signal;
+          // SIGXFSZ is a failed write, reported as such.
+          if (stop_signal == 0 || stop_signal == SIGXFSZ)
+            continue;
+          if (waited < 0)
+            waited = 0;
+          else if (signal <= 0)
+            waited += 0.02;
+          if (waited >= grace)
+            {
+              action(stop_signal);
+              return;
+            }
+        }
+    }
+
     void
     install_stop_handler()
     {
@@ -106,6 +143,33 @@ namespace fgimpact
     if (guard_depth > 0)
       install_stop_handler();
     pthread_sigmask(SIG_SETMASK, &previous_mask, nullptr);
+  }
+
+
+
+  DeferredStopAction::DeferredStopAction(std::function<void(int)> action,
+                                         const double             grace)
+    : action(std::move(action))
+  {
+    if (!this->action)
+      return;
+    // The thread starts with the stop signals blocked (it inherits the
+    // mask), so that only sigtimedwait() takes them there.
+    const sigset_t set = stop_signal_set();
+    sigset_t       old;
+    pthread_sigmask(SIG_BLOCK, &set, &old);
+    watchdog =
+      std::thread(watch_setup, std::cref(this->action), grace, std::cref(done));
+    pthread_sigmask(SIG_SETMASK, &old, nullptr);
+  }
+
+
+
+  DeferredStopAction::~DeferredStopAction()
+  {
+    done = true;
+    if (watchdog.joinable())
+      watchdog.join();
   }
 
 

@@ -13,7 +13,9 @@
 // an address-space limit it cannot meet refused in one line, not hung;
 // a file-size limit (ulimit -f) at the first VTU snapshot: a failed run
 // with its summary, not a death by SIGXFSZ.  A 500-mode modal run signalled
-// in its subspace iteration stops within 5 s (it went on for minutes).
+// in its subspace iteration stops within 5 s (it went on for minutes), and
+// so does a set-up of minutes signalled 1 s in (the assembly and the
+// factorization look at the signal only at their end).
 
 #include <algorithm>
 #include <chrono>
@@ -709,6 +711,17 @@ namespace fgimpact_unit_tests::signal_stop
                             "Number of modes = 500\nend\n" +
                               plate,
                             3000,
+                            5.) &&
+            early;
+    // A set-up that looks at the signal only at its end: 200 x 100 x 20
+    // (quarter), whose assembly and CHOLMOD factorization (METIS, with the
+    // signals deferred) take 2 minutes; the watchdog ends it 2 s after the
+    // signal (it held SIGTERM for 4 minutes on 400 x 200 x 40).
+    early = interrupt_early("long_setup",
+                            "subsection Geometry\n set Subdivisions x = 200\n"
+                            " set Subdivisions y = 100\n set Subdivisions z = "
+                            "20\nend\n",
+                            1000,
                             5.) &&
             early;
     const bool memory    = memory_limited();

@@ -3,8 +3,11 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <atomic>
 #include <csignal>
+#include <functional>
 #include <string>
+#include <thread>
 
 namespace fgimpact
 {
@@ -43,6 +46,35 @@ namespace fgimpact
 
   private:
     sigset_t previous_mask;
+  };
+
+  /**
+   * While this lives, a stop signal that the code does not act on within
+   * `grace` seconds is handed to `action` on a watchdog thread; action
+   * must end the process (std::_Exit).  For the set-up of a run on one
+   * rank, which looks at the signal only at its end and where nothing is
+   * computed yet that a later step could save: its assembly and its
+   * solver's set-up (ML's aggregation, CHOLMOD's analysis, with the
+   * signals deferred: DeferStopSignals) held a SIGTERM for 4 minutes on a
+   * 2.5 M DoF plate.  The signal stays recorded (agreed_stop()), so that a
+   * set-up ending in time is followed by the usual clean stop.  An empty
+   * action installs nothing.
+   */
+  class DeferredStopAction
+  {
+  public:
+    DeferredStopAction(std::function<void(int)> action,
+                       const double             grace_seconds = 2.);
+    ~DeferredStopAction();
+
+    DeferredStopAction(const DeferredStopAction &) = delete;
+    DeferredStopAction &
+    operator=(const DeferredStopAction &) = delete;
+
+  private:
+    std::function<void(int)> action;
+    std::atomic<bool>        done{false};
+    std::thread              watchdog;
   };
 
   /// At the start of main(), before MPI and the thread pools start: the
