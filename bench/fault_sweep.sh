@@ -170,12 +170,14 @@ ended "memory limit 650 MB, 40x20x4" 60 completed \
   "ulimit -v 650000; $exe $OLDPWD/prm/default.prm -s Output/Directory=out -s 'Output/VTU interval=0' -s Output/Report=false"
 ended "memory limit 700 MB, J2 at level 7" 120 completed \
   "ulimit -v 700000; $x -s 'Contact/Model=resolved sphere' -s Material/Plasticity=J2 -s 'Geometry/Contact refinement levels=7' -s 'Time integration/End time=20e-6'"
-refusal "study whose cases cannot fit (400x200x40)" 30 "study case 0" \
-  "$x -s 'Geometry/Subdivisions x=400' -s 'Geometry/Subdivisions y=200' -s 'Geometry/Subdivisions z=40' --study 'Impactor/Initial velocity=1,2,3'"
+refusal "study whose cases cannot fit (400x200x40, whole)" 30 "study case 0" \
+  "$x -s Geometry/Symmetry=none -s 'Geometry/Subdivisions x=400' -s 'Geometry/Subdivisions y=200' -s 'Geometry/Subdivisions z=40' --study 'Impactor/Initial velocity=1,2,3'"
 refusal "converged, ball in contact at End time" 60 "End time" \
   "$x -s Accuracy=converged -s 'Contact/Model=resolved sphere' -s 'Time integration/End time=40e-6'"
 refusal "converged, tolerance 1e-6" 60 "cannot be reached" \
   "$x -s Accuracy=converged -s 'Accuracy tolerance=1e-6' -s 'Contact/Model=resolved sphere'"
+signalled "SIGTERM 20 s into a 400x200x40 quarter's set-up" TERM 20 10 interrupted \
+  "$x -s 'Geometry/Subdivisions x=400' -s 'Geometry/Subdivisions y=200' -s 'Geometry/Subdivisions z=40'"
 signalled "modal, 500 modes, SIGTERM at 10 s" TERM 10 10 interrupted \
   "$exe $OLDPWD/prm/default.prm -s 'Problem type=modal' -s 'Modal/Number of modes=500' -s Geometry/Symmetry=none -s Output/Directory=out -s Output/Report=false"
 ended "modal, 500 modes, memory limit 3 GB, 80x40x8" 120 failed \
@@ -209,7 +211,7 @@ fi
 # --- Lost or changed data -----------------------------------------------------
 if wanted "refused --resume"; then
   rm -rf out
-  run 60 "$x -s 'Output/Checkpoint interval=20'"
+  run 60 "$x -s 'Output/Checkpoint interval=20' -s 'Time integration/End time=auto'"
   md5sum out/parameters.prm out/summary.txt >before.md5
   run 60 "$exe --resume out -s 'Time integration/Maximum end time=1e-12'"
   if md5sum --quiet -c before.md5 >/dev/null 2>&1 && [ "$rc" != 0 ]; then

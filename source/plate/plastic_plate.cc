@@ -9,6 +9,7 @@
 #include <fgimpact/plate/plastic_plate.h>
 
 #include <algorithm>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -22,6 +23,28 @@ namespace fgimpact
              std::clamp((1. - before) / (after - before), 0., 1.) :
              1.;
   }
+
+
+
+  namespace
+  {
+    /// to = from on the owned entries (both hold the plate's owned DoFs in
+    /// the same order).  Not operator=: it first compares the Epetra maps,
+    /// collectively only on ranks where the maps do not share their data,
+    /// and may replace the target's Epetra vector (dropping the map of its
+    /// off-rank entries, which the next compress() then rebuilds
+    /// collectively); after a resume the two ranks of a J2 run took
+    /// different branches and deadlocked (one in an Epetra_Import, one in
+    /// compress).
+    void
+    copy_owned(const TrilinosWrappers::MPI::Vector &from,
+               TrilinosWrappers::MPI::Vector       &to)
+    {
+      AssertThrow(from.locally_owned_size() == to.locally_owned_size(),
+                  ExcInternalError());
+      std::copy(from.begin(), from.end(), to.begin());
+    }
+  } // namespace
 
 
 
@@ -186,7 +209,7 @@ namespace fgimpact
   void
   PlasticPlate::begin_increment()
   {
-    force           = committed_force;
+    copy_owned(committed_force, force);
     omega           = 1.;
     first_iteration = true;
     iterations      = 0;
@@ -198,7 +221,7 @@ namespace fgimpact
   PlasticPlate::update(const TrilinosWrappers::MPI::Vector &u)
   {
     ++iterations;
-    u_distributed = u;
+    copy_owned(u, u_distributed);
     plate.get_constraints().distribute(u_distributed);
     if (!importer)
       importer =
@@ -252,7 +275,7 @@ namespace fgimpact
     trial_eigenstrain_energy = Utilities::MPI::sum(energy, comm);
     trial_ratio              = Utilities::MPI::max(ratio, comm);
 
-    residual = new_force;
+    copy_owned(new_force, residual);
     residual -= force;
     const double change = residual.linfty_norm();
     relax();
@@ -389,7 +412,7 @@ namespace fgimpact
           }
       }
     first_iteration = false;
-    last_residual   = residual;
+    copy_owned(residual, last_residual);
     force.add(omega, residual);
   }
 
@@ -420,8 +443,8 @@ namespace fgimpact
     max_plastic_strain = Utilities::MPI::max(local_max, comm);
     // The force of the accepted state, unrelaxed: the next increment
     // starts from the committed plastic strain's own load.
-    committed_force = new_force;
-    force           = new_force;
+    copy_owned(new_force, committed_force);
+    copy_owned(new_force, force);
   }
 
 
@@ -477,7 +500,7 @@ namespace fgimpact
     in.get(max_plastic_strain);
     in.get(total_iterations);
     in.get(max_iterations);
-    force     = committed_force;
-    new_force = committed_force;
+    copy_owned(committed_force, force);
+    copy_owned(committed_force, new_force);
   }
 } // namespace fgimpact
