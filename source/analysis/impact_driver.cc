@@ -122,6 +122,19 @@ namespace fgimpact
       }
     catch (...)
       {
+        // A numerical failure (a run that blew up, a Newton iteration that
+        // diverged) leaves the ball's velocity meaningless: its departure
+        // (3.0 m/s from 1 m/s on a 1 um ball) is no result.
+        try
+          {
+            throw;
+          }
+        catch (const ExcNumericalFailure &)
+          {
+            monitor->void_ball_results();
+          }
+        catch (...)
+          {}
         finish_failed_run(steps_done, loop_timer.wall_time());
         throw;
       }
@@ -190,6 +203,7 @@ namespace fgimpact
                                               plasticity != nullptr);
     if (plasticity)
       monitor->set_plasticity(*plasticity);
+    monitor->set_blow_up_advice(blow_up_advice());
     // End time = auto: the plate's compliance makes the contact longer
     // than Hertz's on a rigid base (the default scene: contact 126 us against
     // Hertz's 99 us, end 158 us)

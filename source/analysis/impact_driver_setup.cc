@@ -156,6 +156,35 @@ namespace fgimpact
 
 
 
+  std::string
+  ImpactDriver::blow_up_advice() const
+  {
+    // The remedy for this scheme: a run already on the average
+    // acceleration rule was told to use it (Impactor/Radius = 1e-6 with
+    // dt = 2 us: Hertz's contact lasts 0.008 us).
+    const auto  &ti = parameters.time_integration;
+    const double T  = hertz_contact_duration();
+    char         text[400];
+    if (ti.scheme == TimeStepper::Scheme::central_difference)
+      return "lower Time integration/Stable step safety factor, or use "
+             "Time integration/Scheme = implicit";
+    std::snprintf(text,
+                  sizeof(text),
+                  "reduce Time integration/Time step: Hertz's contact lasts "
+                  "about %.3g us, which %.3g us steps resolve with %.3g "
+                  "steps (use at most %.3g us)%s",
+                  T * 1e6,
+                  dt * 1e6,
+                  T / dt,
+                  T / 20. * 1e6,
+                  ti.newmark.beta == 0.25 && ti.newmark.gamma == 0.5 ?
+                    "" :
+                    ", or use Newmark beta = 0.25, gamma = 0.5");
+    return text;
+  }
+
+
+
   void
   ImpactDriver::check_time_step() const
   {

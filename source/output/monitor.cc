@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace fgimpact
 {
@@ -41,7 +42,7 @@ namespace fgimpact
       results, contact, m_i, V0, dt, whole != 1., pcout);
     results_accumulator = accumulator.get();
     add(std::move(accumulator));
-    add(std::make_unique<EnergyWatchdog>(pcout));
+    add(std::make_unique<EnergyWatchdog>(pcout, blow_up_advice));
     auto columns = history_columns();
     if (contact.reports_contact_area())
       columns.insert(columns.end(),
@@ -320,6 +321,11 @@ namespace fgimpact
     r.n_time_steps   = steps_done;
     for (const auto &p : postprocessors)
       p->finish(ball);
+    if (ball_results_void)
+      {
+        r.departure_velocity = std::numeric_limits<double>::quiet_NaN();
+        r.contact_duration   = std::numeric_limits<double>::quiet_NaN();
+      }
 
     // close_output()'s time, and the snapshots' (FieldWriter's).
     double output_time = output_timer.wall_time();

@@ -233,8 +233,10 @@ namespace fgimpact
 
 
 
-  EnergyWatchdog::EnergyWatchdog(const ConditionalOStream &pcout)
+  EnergyWatchdog::EnergyWatchdog(const ConditionalOStream &pcout,
+                                 const std::string        &advice)
     : pcout(pcout)
+    , advice(advice)
   {}
 
 
@@ -261,11 +263,7 @@ namespace fgimpact
                     ExcNumericalFailure(
                       std::string("the run is blowing up: the relative "
                                   "energy drift reached ") +
-                      text + " (limit 0.5) at " + where +
-                      "; reduce Time integration/Time step, use Time "
-                      "integration/Scheme = implicit with Newmark beta = "
-                      "0.25, gamma = 0.5, or lower Time integration/Stable "
-                      "step safety factor."));
+                      text + " (limit 0.5) at " + where + "; " + advice + "."));
       }
     if (drift > warning_level && !warned)
       {

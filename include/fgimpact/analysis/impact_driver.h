@@ -116,6 +116,11 @@ namespace fgimpact
     double
     hertz_contact_duration() const;
 
+    /// What the line of a run that blows up advises (the scheme's remedy,
+    /// with Hertz's duration against the time step).
+    std::string
+    blow_up_advice() const;
+
     /// The time step against the End time (refused if longer) and against
     /// Hertz's contact duration (a log warning below 20 steps in it).
     void

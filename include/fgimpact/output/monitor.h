@@ -144,6 +144,22 @@ namespace fgimpact
     void
     add_row_observer(const RowObserver &observer);
 
+    /// What the one line of a run that blows up advises (the energy
+    /// watchdog's): the driver knows the scheme and Hertz's duration.
+    void
+    set_blow_up_advice(const std::string &text)
+    {
+      blow_up_advice = text;
+    }
+
+    /// The ball's departure and the contact's duration of a run that
+    /// failed numerically are no results: summary.txt gives none.
+    void
+    void_ball_results()
+    {
+      ball_results_void = true;
+    }
+
     /// Append a postprocessor (before start()).
     void
     add(std::unique_ptr<Postprocessor> postprocessor);
@@ -233,6 +249,11 @@ namespace fgimpact
            const double         wall_time);
 
   private:
+    std::string blow_up_advice =
+      "reduce Time integration/Time step, or lower Time integration/Stable "
+      "step safety factor";
+    bool ball_results_void = false;
+
     /// The name of a postprocessor's checkpoint section.
     static std::string
     section_name(const Postprocessor &postprocessor);

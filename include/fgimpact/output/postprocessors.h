@@ -103,7 +103,9 @@ namespace fgimpact
   class EnergyWatchdog : public Postprocessor
   {
   public:
-    explicit EnergyWatchdog(const ConditionalOStream &pcout);
+    /// advice: what to change when the run blows up (the scheme's and
+    /// the time step's remedy), read when it does.
+    EnergyWatchdog(const ConditionalOStream &pcout, const std::string &advice);
 
     std::string
     name() const override
@@ -119,6 +121,7 @@ namespace fgimpact
 
   private:
     const ConditionalOStream &pcout;
+    const std::string        &advice;
     bool                      warned = false;
   };
 
