@@ -5,10 +5,10 @@
 // step and continued with `fgimpact --resume`: history.csv identical byte
 // for byte, summary.txt line for line except the provenance comments and
 // the wall-clock timings.  Hertz node and a resolved sphere whose
-// candidate set grows during the run.  With KLU: the distributed MUMPS is
-// not bit-reproducible from run to run (two uninterrupted 2-rank runs of
-// the resolved case differ in max_relative_energy_drift, 1.9e-13 against
-// 9.8e-14), so only a deterministic solver can show bit-identity.
+// candidate set grows during the run, elastic and with J2.  With KLU: the
+// distributed MUMPS is not bit-reproducible from run to run (two uninterrupted
+// 2-rank runs of the resolved case differ in max_relative_energy_drift, 1.9e-13
+// against 9.8e-14), so only a deterministic solver can show bit-identity.
 
 #include "checkpoint_resume.h"
 
@@ -45,6 +45,23 @@ namespace fgimpact_unit_tests::checkpoint_resume_mpi
              "subsection Geometry\n set Contact refinement levels = 1\nend\n"
              "subsection Contact\n set Model = resolved sphere\n set "
              "Candidate radius = 0.0006\nend\n"
+             "subsection Time integration\n set End time = 100e-6\nend\n"
+             "subsection Linear solver\n set Type = klu\nend\n"
+             "subsection Output\n set Checkpoint interval = 10\nend\n",
+           2,
+           random.kill_point(40)) &&
+         ok;
+
+    // J2 (issue 40): the resume hung until killed, the two ranks in
+    // different MPI calls of the plastic update (vector assignments whose
+    // Epetra map comparison is collective on one rank only).
+    ok = kill_and_resume(
+           "resolved_sphere_j2_mpi",
+           small_plate +
+             "subsection Geometry\n set Contact refinement levels = 1\nend\n"
+             "subsection Contact\n set Model = resolved sphere\n set "
+             "Candidate radius = 0.0006\nend\n"
+             "subsection Material\n set Plasticity = J2\nend\n"
              "subsection Time integration\n set End time = 100e-6\nend\n"
              "subsection Linear solver\n set Type = klu\nend\n"
              "subsection Output\n set Checkpoint interval = 10\nend\n",
