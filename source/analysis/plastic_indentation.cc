@@ -75,6 +75,15 @@ namespace fgimpact
     r.max_plastic_strain = plastic->max_equivalent_plastic_strain();
     r.iterations         = plastic->n_iterations();
     judge_first_yield(contact.contact_modulus());
+    // The locked brick's pressure, as in an impact (PlasticityReport).
+    if (plate.get_fe().degree == 1 && !plate.uses_mean_dilatation() &&
+        r.max_plastic_strain > 0.)
+      {
+        const std::string text = locking_warning();
+        r.warning += (r.warning.empty() ? "" : " | ") + text;
+        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+          std::cout << "  WARNING: " << text << ".\n";
+      }
     // The crater: the plate's thinning under the load point (u holds the
     // unloaded plate, constraints distributed by update()'s caller below).
     TrilinosWrappers::MPI::Vector u_distributed = u;

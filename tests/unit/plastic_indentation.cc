@@ -188,7 +188,8 @@ namespace fgimpact_unit_tests::plastic_indentation
                     r.plastic.first_yield_resolution,
                     r.plastic.first_yield_resolution >= 4 ? "yes" : "NO");
         ok = ok && hertz_error < 1e-12 &&
-             r.plastic.first_yield_resolution >= 4 && r.plastic.warning.empty();
+             r.plastic.first_yield_resolution >= 4 &&
+             r.plastic.warning.find("first yield") == std::string::npos;
       }
 
     // 2. The fully plastic mean pressure.
@@ -220,9 +221,11 @@ namespace fgimpact_unit_tests::plastic_indentation
       // Hertz's contact radius at first yield is 20 times smaller than at
       // 2 GPa: unresolved, so the computed first yield is none, with the
       // warning.
-      const bool unresolved = r.plastic.first_yield_resolution < 4 &&
-                              std::isnan(r.plastic.first_yield_force) &&
-                              !r.plastic.warning.empty();
+      const bool unresolved =
+        r.plastic.first_yield_resolution < 4 &&
+        std::isnan(r.plastic.first_yield_force) &&
+        r.plastic.warning.find("first yield not "
+                               "resolved") != std::string::npos;
       std::printf("  first yield: Hertz's contact radius spans %.2f node "
                   "spacings, the computed force none with a warning: %s\n",
                   r.plastic.first_yield_resolution,
