@@ -131,6 +131,48 @@ namespace fgimpact
 
   namespace
   {
+    /// The probes whose recovered stress reads scalar node `dof`, with
+    /// their factor c_j / n_j (ghosted[0]: n_j, ghosted[1 + p]: probe p's
+    /// c_j), in the order of the probes.
+    std::vector<std::pair<unsigned int, double>>
+    probe_factors(const std::vector<TrilinosWrappers::MPI::Vector> &ghosted,
+                  const types::global_dof_index                     dof)
+    {
+      std::vector<std::pair<unsigned int, double>> factors;
+      for (unsigned int p = 0; p + 1 < ghosted.size(); ++p)
+        if (ghosted[1 + p](dof) != 0.)
+          factors.emplace_back(p, ghosted[1 + p](dof) / ghosted[0](dof));
+      return factors;
+    }
+
+    /// The cut planes a scalar node lies on (dofs_on_cut_planes()).
+    unsigned int
+    planes_of(const std::map<types::global_dof_index, unsigned int> &cut_planes,
+              const types::global_dof_index                          dof)
+    {
+      const auto cut = cut_planes.find(dof);
+      return cut == cut_planes.end() ? 0u : cut->second;
+    }
+
+    /// A shape function's stress sigma at a scalar node into the probes'
+    /// weights of its DoF: w[p][s](dof) += factor sigma_s.  A node on a
+    /// cut plane: the odd shear components of its (whole-plate) average
+    /// are zero.
+    void
+    add_stress_weights(
+      const SymmetricTensor<2, 3>                               &sigma,
+      const std::vector<std::pair<unsigned int, double>>        &factors,
+      const unsigned int                                         planes,
+      const types::global_dof_index                              dof,
+      std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>> &w)
+    {
+      for (const auto &[p, factor] : factors)
+        for (unsigned int s = 0; s < 6; ++s)
+          if (!odd_under_reflection(s, planes))
+            w[p][s](dof) +=
+              factor * sigma[stress_component[s][0]][stress_component[s][1]];
+    }
+
     /// The six stress components' weight vectors of n_points probes,
     /// ghosted and writable (each cell adds to its own DoFs).
     std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>>
@@ -185,10 +227,14 @@ namespace fgimpact
       if (cell->is_locally_owned())
         {
           scalar_cell(scalar_dofs, cell)->get_dof_indices(sdofs);
+          std::vector<std::vector<std::pair<unsigned int, double>>> factors(
+            sdofs.size());
           bool needed = false;
-          for (unsigned int p = 0; p < n_points; ++p)
-            for (const auto dof : sdofs)
-              needed = needed || ghosted[1 + p](dof) != 0.;
+          for (unsigned int q = 0; q < sdofs.size(); ++q)
+            {
+              factors[q] = probe_factors(ghosted, sdofs[q]);
+              needed     = needed || !factors[q].empty();
+            }
           if (!needed)
             continue;
           fe_values.reinit(cell);
@@ -197,22 +243,11 @@ namespace fgimpact
           const auto mean_div = plate.mean_divergence(cell);
           // The same points for a plastic run's correction.
           for (unsigned int q = 0; q < sdofs.size(); ++q)
-            {
-              std::vector<std::pair<unsigned, double>> factors;
-              for (unsigned int p = 0; p < n_points; ++p)
-                if (ghosted[1 + p](sdofs[q]) != 0.)
-                  factors.emplace_back(p,
-                                       ghosted[1 + p](sdofs[q]) /
-                                         ghosted[0](sdofs[q]));
-              const auto cut = cut_planes.find(sdofs[q]);
-              if (!factors.empty())
-                plastic_correction.add_point(cell,
-                                             support.point(q),
-                                             factors,
-                                             cut == cut_planes.end() ?
-                                               0u :
-                                               cut->second);
-            }
+            if (!factors[q].empty())
+              plastic_correction.add_point(cell,
+                                           support.point(q),
+                                           factors[q],
+                                           planes_of(cut_planes, sdofs[q]));
           for (unsigned int q = 0; q < sdofs.size(); ++q)
             for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
               {
@@ -223,24 +258,11 @@ namespace fgimpact
                   eps[c][d] += (c == d ? 1. : 0.5) * g[d];
                 if (mean_div.size() > 0) // B-bar
                   eps = PlateModel::with_dilatation(eps, mean_div[i]);
-                const SymmetricTensor<2, 3> sigma =
-                  hooke.stress(E[q], nu[q], eps);
-                // A node on a cut plane: the odd shear components of
-                // its (whole-plate) average are zero.
-                const auto cut = cut_planes.find(sdofs[q]);
-                const auto planes =
-                  (cut == cut_planes.end() ? 0u : cut->second);
-                for (unsigned int p = 0; p < n_points; ++p)
-                  {
-                    const double factor =
-                      ghosted[1 + p](sdofs[q]) / ghosted[0](sdofs[q]);
-                    if (factor != 0.)
-                      for (unsigned int s = 0; s < 6; ++s)
-                        if (!odd_under_reflection(s, planes))
-                          w[p][s](dofs[i]) += factor *
-                                              sigma[stress_component[s][0]]
-                                                   [stress_component[s][1]];
-                  }
+                add_stress_weights(hooke.stress(E[q], nu[q], eps),
+                                   factors[q],
+                                   planes_of(cut_planes, sdofs[q]),
+                                   dofs[i],
+                                   w);
               }
         }
     for (unsigned int p = 0; p < n_points; ++p)
