@@ -164,6 +164,25 @@ namespace fgimpact
 
 
   bool
+  is_numerical_failure(const std::exception_ptr &failure)
+  {
+    try
+      {
+        std::rethrow_exception(failure);
+      }
+    catch (const ExcNumericalFailure &)
+      {
+        return true;
+      }
+    catch (...)
+      {
+        return false;
+      }
+  }
+
+
+
+  bool
   is_run_failure(const std::exception_ptr &failure)
   {
     try

@@ -82,6 +82,11 @@ namespace fgimpact
   bool
   is_run_failure(const std::exception_ptr &failure);
 
+  /// Whether the failure is numerical (ExcNumericalFailure: a run that blew
+  /// up, a Newton iteration that diverged, a factorization that failed).
+  bool
+  is_numerical_failure(const std::exception_ptr &failure);
+
   /// Collapse a multi-line text (deal.II's exception texts) into one line.
   std::string
   one_line(const std::string &text);
