@@ -9,7 +9,6 @@
 #include <fgimpact/plate/plastic_plate.h>
 
 #include <algorithm>
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -28,14 +27,9 @@ namespace fgimpact
 
   namespace
   {
-    /// to = from on the owned entries (both hold the plate's owned DoFs in
-    /// the same order).  Not operator=: it first compares the Epetra maps,
-    /// collectively only on ranks where the maps do not share their data,
-    /// and may replace the target's Epetra vector (dropping the map of its
-    /// off-rank entries, which the next compress() then rebuilds
-    /// collectively); after a resume the two ranks of a J2 run took
-    /// different branches and deadlocked (one in an Epetra_Import, one in
-    /// compress).
+    /// to = from on the owned entries (same owned DoFs, same order).  Not
+    /// operator=, whose Epetra map comparison is collective on some ranks
+    /// only: a resumed 2-rank J2 run deadlocked in it.
     void
     copy_owned(const TrilinosWrappers::MPI::Vector &from,
                TrilinosWrappers::MPI::Vector       &to)
