@@ -73,17 +73,23 @@ namespace fgimpact
       "integration/Scheme = implicit; the mesh applies to every Problem "
       "type. converged: an impact with Contact/Model = resolved sphere or "
       "hertz midplane run at increasing Geometry/Contact refinement levels "
-      "(from the scene's automatic level) until the peak contact force, "
-      "contact duration, departure velocity, largest mid-plane deflection "
-      "and indentation change by less than the Accuracy tolerance, then "
-      "once at half the Time step; the mesh and step as given otherwise; "
-      "convergence.csv and an error estimate per number in summary.txt.");
+      "(from one below the scene's automatic level), base meshes "
+      "(Subdivisions doubled in plane and through the thickness) and "
+      "contact levels on the final base, then once at half the Time step, "
+      "refining further the source with the largest share until, for the "
+      "peak contact force, contact duration, departure velocity, largest "
+      "mid-plane deflection, indentation and the probes' peak stresses, "
+      "the error estimates of the four sources add up to at most Accuracy "
+      "tolerance; convergence.csv, and each number's estimate and its "
+      "sources in summary.txt (doc/accuracy.md).");
     prm.declare_entry("Accuracy tolerance",
                       "0.01",
                       Patterns::Double(1e-6, 0.5),
-                      "Accuracy = converged: the relative change between "
-                      "two contact refinement levels below which the "
-                      "sequence stops. Dimensionless (0.01 = 1 %).");
+                      "Accuracy = converged: the bound on each headline "
+                      "number's relative error estimate, the sum of its "
+                      "contact levels', base mesh's (in plane, through the "
+                      "thickness) and time step's. Dimensionless (0.01 = "
+                      "1 %).");
   }
 
 

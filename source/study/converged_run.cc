@@ -120,7 +120,7 @@ namespace fgimpact
     p.geometry.subdivisions_z *= base.thickness;
     if (final)
       {
-        p.time_integration.time_step /= 2.;
+        p.time_integration.time_step /= std::pow(2., time_halvings);
         return p;
       }
     const bool input_mesh = base.in_plane == 1 && base.thickness == 1;
@@ -253,20 +253,10 @@ namespace fgimpact
             std::to_string(e.signal) +
             " in the run at contact refinement level " +
             std::to_string(running_levels) + " on " + running_mesh +
-            (final_started ? " (the final run at half the time step)" : "") +
+            (final_started ? " (the final run)" : "") +
             ": the sequence of levels cannot be resumed (--resume refuses "
             "Accuracy = converged); run the same command again.");
       }
-  }
-
-
-
-  void
-  ConvergedRun::run_sequence()
-  {
-    run_input_levels();
-    refine_base_mesh();
-    run_final();
   }
 
 
@@ -308,7 +298,7 @@ namespace fgimpact
         // A tolerance out of reach, refused before the levels it needs
         // (issue 40: 1e-6 ran 9 levels for 600 s): beyond the last level,
         // or the memory of the level it needs.
-        const Needed needed = refinements_needed(sequence);
+        const Needed needed = refinements_needed(sequence, tolerance);
         if (needed.more > 0.)
           {
             const unsigned int target = levels + needed.more;
@@ -347,33 +337,48 @@ namespace fgimpact
     Level current = sequence.back();
     do
       {
-        in_plane_chain =
-          refine(current, "in plane", [](Level &l) { l.base.in_plane *= 2; });
+        in_plane_chain = refine(
+          current,
+          "in plane",
+          [](Level &l) { l.base.in_plane *= 2; },
+          change_tolerance[in_plane]);
         current         = in_plane_chain[in_plane_chain.size() - 2];
-        thickness_chain = refine(current,
-                                 "through the thickness",
-                                 [](Level &l) { l.base.thickness *= 2; });
-        current         = thickness_chain[thickness_chain.size() - 2];
+        thickness_chain = refine(
+          current,
+          "through the thickness",
+          [](Level &l) { l.base.thickness *= 2; },
+          change_tolerance[thickness]);
+        current = thickness_chain[thickness_chain.size() - 2];
     } while (thickness_chain.size() > 2);
-    contact_chain =
-      refine(current, "contact levels", [](Level &l) { ++l.levels; });
+    contact_chain = refine(
+      current,
+      "contact levels",
+      [](Level &l) { ++l.levels; },
+      change_tolerance[contact_levels]);
   }
 
 
 
-  void
+  ConvergedRun::Level
   ConvergedRun::run_final()
   {
-    // The last run before each chain's last refinement at half the time
-    // step, with the user's outputs.
+    // The last run before each chain's last refinement at a fraction of
+    // the time step, with the user's outputs.  The finer time steps'
+    // references are the final runs before on the same mesh and level:
+    // on another, the time step starts again at half.
     const Level       &last   = contact_chain[contact_chain.size() - 2];
     const BaseMesh     base   = last.base;
     const unsigned int levels = last.levels;
-    const Parameters   p      = parameters_of(levels, true, base);
+    if (!time_chain.empty() &&
+        (time_chain.back().levels != levels ||
+         mesh_name(time_chain.back().base) != mesh_name(base)))
+      time_halvings = 1;
+    const Parameters p = parameters_of(levels, true, base);
     pcout << "Accuracy = converged: level " << levels << " on "
-          << mesh_name(base) << " at half the time step ("
-          << p.time_integration.time_step * 1e6 << " us), the final run, into "
-          << parameters.output.directory << '\n';
+          << mesh_name(base) << " at Time step / " << (1u << time_halvings)
+          << " (" << p.time_integration.time_step * 1e6
+          << " us), the final run, into " << parameters.output.directory
+          << '\n';
     running_levels = levels;
     running_mesh   = mesh_name(base);
     Timer     timer;
@@ -387,7 +392,7 @@ namespace fgimpact
     final_run.wall_time = timer.wall_time();
     final_results       = final_run.results;
     summary_entries     = simulator.summary().entries();
-    write_outputs(final_run);
+    return final_run;
   }
 
 
@@ -395,7 +400,8 @@ namespace fgimpact
   std::vector<ConvergedRun::Level>
   ConvergedRun::refine(const Level                        &start,
                        const std::string                  &name,
-                       const std::function<void(Level &)> &finer)
+                       const std::function<void(Level &)> &finer,
+                       const double                        tolerance)
   {
     // At most 16 times the input's subdivisions in a direction: beyond,
     // the contact levels' premise (a base mesh that resolves the plate)
@@ -404,7 +410,7 @@ namespace fgimpact
     std::vector<Level>             chain      = {start};
     std::pair<double, std::string> change     = {
           std::numeric_limits<double>::infinity(), ""};
-    while (change.first >= parameters.accuracy.tolerance)
+    while (change.first >= tolerance)
       {
         Level next = chain.back();
         finer(next);
@@ -423,37 +429,52 @@ namespace fgimpact
                                "most " +
                                std::to_string(max_factor) +
                                " times; raise Accuracy tolerance."));
-        // A run made before (the alternation of the directions repeats
-        // the last check of the thickness) is taken, not repeated.
-        const auto same = [&next](const Level &run) {
-          return run.levels == next.levels &&
-                 run.base.in_plane == next.base.in_plane &&
-                 run.base.thickness == next.base.thickness;
-        };
-        const auto made =
-          std::find_if(refinement_runs.begin(), refinement_runs.end(), same);
-        if (made != refinement_runs.end())
-          chain.push_back(*made);
-        else
-          {
-            check_fits(next.levels, next.base, reached);
-            chain.push_back(run_level(next.levels, next.base));
-            refinement_runs.push_back(chain.back());
-          }
+        const bool before = take_or_run(chain, next, reached);
         change =
           largest_change(chain[chain.size() - 2].results, chain.back().results);
-        pcout << "Accuracy = converged: level " << next.levels << " on "
-              << mesh_name(next.base) << " (" << name
-              << "), largest change from level "
-              << chain[chain.size() - 2].levels << " on "
-              << mesh_name(chain[chain.size() - 2].base) << ": "
-              << percent(change.first) << " (" << change.second << ")\n";
+        // The runs taken again as the control of the sum repeats the chains
+        // are not said again.
+        if (!before)
+          pcout << "Accuracy = converged: level " << next.levels << " on "
+                << mesh_name(next.base) << " (" << name
+                << "), largest change from level "
+                << chain[chain.size() - 2].levels << " on "
+                << mesh_name(chain[chain.size() - 2].base) << ": "
+                << percent(change.first) << " (" << change.second << ")\n";
         const unsigned int factor =
           std::max(next.base.in_plane, next.base.thickness);
-        if (change.first >= parameters.accuracy.tolerance && factor > 1)
-          refuse_unreachable(chain, name, max_factor / factor);
+        if (change.first >= tolerance && factor > 1)
+          refuse_unreachable(chain, name, max_factor / factor, tolerance);
       }
     return chain;
+  }
+
+
+
+  bool
+  ConvergedRun::take_or_run(std::vector<Level> &chain,
+                            const Level        &next,
+                            const std::string  &reached)
+  {
+    // A run made before (the alternation of the directions repeats the
+    // last check of the thickness, the control of the sum every chain) is
+    // taken, not repeated.
+    const auto same = [&next](const Level &run) {
+      return run.levels == next.levels &&
+             run.base.in_plane == next.base.in_plane &&
+             run.base.thickness == next.base.thickness;
+    };
+    const auto made =
+      std::find_if(refinement_runs.begin(), refinement_runs.end(), same);
+    if (made != refinement_runs.end())
+      {
+        chain.push_back(*made);
+        return true;
+      }
+    check_fits(next.levels, next.base, reached);
+    chain.push_back(run_level(next.levels, next.base));
+    refinement_runs.push_back(chain.back());
+    return false;
   }
 
 

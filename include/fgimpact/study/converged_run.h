@@ -9,7 +9,9 @@
 #include <fgimpact/output/results.h>
 #include <fgimpact/problem/parameters.h>
 
+#include <array>
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,8 +24,9 @@ namespace fgimpact
 
   /**
    * Accuracy = converged: the impact run repeated at increasing contact
-   * refinement levels until its headline numbers settle, then checked
-   * once in time, with an error estimate for each number.
+   * refinement levels, base meshes and time steps until the sum of every
+   * headline number's error estimates, one per discretization source, is
+   * below Accuracy tolerance.
    *
    *  1. Levels L0, L0 + 1, ... (L0 = one below the scene's automatic
    *     level: the automatic level is expected within about 1 %, and a
@@ -37,19 +40,26 @@ namespace fgimpact
    *     the tolerance and the memory.
    *  2. The base mesh, at the finest level: Geometry/Subdivisions x and
    *     y doubled (into convergence/base_NXxNYxNZ_level_L), and doubled
-   *     again while a number changes by the tolerance or more (the finer
-   *     mesh then becomes the base); then Subdivisions z the same way;
-   *     then the contact levels again on that base, one more while a
-   *     number changes by the tolerance or more.
+   *     again while a number changes by the source's change tolerance or
+   *     more (the finer mesh then becomes the base); then Subdivisions z
+   *     the same way; then the contact levels again on that base, one
+   *     more while a number changes by their change tolerance or more.
    *     The contact levels refine only near the ball: the plate's bending
    *     and its waves are resolved by the base mesh (default scene: the
    *     mid-plane deflection 2 % low on 40 x 20 x 4, which no contact
    *     level changes).
-   *  3. The last level and base mesh before the last refinement of each
-   *     chain (each changed by less than the tolerance) at half the time
-   *     step, with the user's outputs, into Output/Directory: the run
-   *     whose files the user reads.
-   *  4. convergence.csv (one row per run) and, appended to summary.txt,
+   *  3. The sum controlled (control_sum()): each source's change
+   *     tolerance starts at Accuracy tolerance; while a number's estimates
+   *     (below) add up to more than the tolerance, the source with the
+   *     largest share of the worst number is refined once more (its change
+   *     tolerance set to its chain's last change), and step 2 repeated
+   *     (runs made before are taken, not repeated).
+   *  4. The last level and base mesh before the last refinement of each
+   *     chain at half the time step (then a quarter, ... while the time
+   *     step's estimate is the largest share of a sum above the
+   *     tolerance), with the user's outputs, into Output/Directory: the
+   *     run whose files the user reads.
+   *  5. convergence.csv (one row per run) and, appended to summary.txt,
    *     for each quantity its relative error estimate, the sum of one per
    *     source, each from that source's own refinement:
    *     - contact levels (on the final base), in plane, through the
@@ -60,7 +70,7 @@ namespace fgimpact
    *       changes that shrink with p >= min_order (|d2| / (2^p - 1)),
    *       otherwise the last change |d2| (refinement_error()); with two
    *       values twice their difference (first order);
-   *     - time step: |q(dt/2) - q(dt)| / 3 (Richardson for the
+   *     - time step: |q(dt/2^k) - q(dt/2^(k-1))| / 3 (Richardson for the
    *       second-order Newmark rule).
    */
   class ConvergedRun
@@ -130,8 +140,9 @@ namespace fgimpact
     const ImpactResults &
     results() const;
 
-    /// Whether the final run (into Output/Directory) has begun: it then
-    /// writes summary.txt itself, also when it fails.
+    /// Whether a final run (into Output/Directory) is under way or the
+    /// last one made: it then writes summary.txt itself, also when it
+    /// fails.
     bool
     final_run_started() const
     {
@@ -156,6 +167,21 @@ namespace fgimpact
     /// The least observed order Richardson extrapolates with.
     static constexpr double min_order = 0.5;
 
+    /// The discretization sources of an error estimate.
+    enum Source : unsigned int
+    {
+      contact_levels,
+      in_plane,
+      thickness,
+      time_step,
+      n_sources
+    };
+
+    /// A source's name in summary.txt (KEY_error_estimate_NAME) and in
+    /// the log ("base_mesh_in_plane").
+    static std::string
+    source_name(const unsigned int source);
+
   private:
     /// The parameters of a level run (final: the user's outputs into
     /// Output/Directory at half the time step).
@@ -172,19 +198,53 @@ namespace fgimpact
     Level
     run_level(const unsigned int levels, const BaseMesh &base);
 
-    /// Steps 2 and 3, one direction: from `start`, the runs refined by
-    /// `finer` (a base direction doubled, or one contact level more) until
-    /// a refinement changes every steering number by less than the
-    /// tolerance; `start` first.  The final run is the second-to-last's.
+    /// Step 2, one direction: from `start`, the runs refined by `finer`
+    /// (a base direction doubled, or one contact level more) until a
+    /// refinement changes every steering number by less than
+    /// `tolerance`; `start` first.  The final run is the second-to-last's.
     std::vector<Level>
     refine(const Level                        &start,
            const std::string                  &name,
-           const std::function<void(Level &)> &finer);
+           const std::function<void(Level &)> &finer,
+           const double                        tolerance);
 
-    /// run() without the translation of a signal's message: the three
-    /// steps below.
+    /// Append `next` to `chain`: the run made before with its mesh and
+    /// level, else a new one (checked to fit; `reached` names what was not
+    /// reached, for the message); whether it was made before.
+    bool
+    take_or_run(std::vector<Level> &chain,
+                const Level        &next,
+                const std::string  &reached);
+
+    /// run() without the translation of a signal's message: steps 1-5.
     void
     run_sequence();
+
+    /// The estimates of a steering number that add up to the most, and
+    /// their largest share.
+    struct Worst
+    {
+      double       total = 0; // relative
+      std::string  key;
+      unsigned int source = contact_levels;
+      double       part   = 0; // relative
+    };
+
+    /// Each source's estimate of q (relative), from the chains and, with
+    /// `final_run`, its time step; without, the time step's estimate of
+    /// the last final run made (0 before any).
+    std::array<double, n_sources>
+    parts_of(const Quantity &q, const Level *final_run) const;
+
+    /// The steering number whose estimates add up to the most.
+    Worst
+    worst_sum(const Level *final_run) const;
+
+    /// Step 3's one more refinement of worst.source: its chain's change
+    /// tolerance set to the chain's last change, or, for the time step,
+    /// the final run again at half its step.
+    void
+    refine_source(const Worst &worst, const Level *final_run);
 
     /// Step 1: the contact levels on the input's mesh.
     void
@@ -194,8 +254,8 @@ namespace fgimpact
     void
     refine_base_mesh();
 
-    /// Step 3: the final run, and the outputs.
-    void
+    /// Step 4: the final run (at Time step / 2^time_halvings).
+    Level
     run_final();
 
     /// Run `simulator` (set up) with its directory prepared; its row.
@@ -213,8 +273,9 @@ namespace fgimpact
     std::pair<double, std::string>
     largest_change() const;
 
-    /// The refinements a chain's steering numbers still need, from their
-    /// last two changes and the observed order: the most of them.
+    /// The refinements a chain's steering numbers still need to change by
+    /// less than `tolerance`, from their last two changes and the observed
+    /// order: the most of them.
     struct Needed
     {
       double      more = 0; // refinements
@@ -226,7 +287,8 @@ namespace fgimpact
       describe(const std::string &where) const;
     };
     Needed
-    refinements_needed(const std::vector<Level> &chain) const;
+    refinements_needed(const std::vector<Level> &chain,
+                       const double              tolerance) const;
 
     /// After a base-mesh chain's run: stop with one line if a number's
     /// changes, extrapolated with their observed order, need more
@@ -234,7 +296,8 @@ namespace fgimpact
     void
     refuse_unreachable(const std::vector<Level> &chain,
                        const std::string        &name,
-                       const unsigned int        room) const;
+                       const unsigned int        room,
+                       const double              tolerance) const;
 
     /// The largest relative change of a steering quantity from a to b.
     std::pair<double, std::string>
@@ -247,9 +310,8 @@ namespace fgimpact
                const BaseMesh    &base,
                const std::string &reached) const;
 
-    /// The error estimates of each quantity into `out` and the log; the
-    /// largest total of a number that steers.
-    double
+    /// The error estimates of each quantity into `out` and the log.
+    void
     write_estimates(SummaryWriter &out, const Level &final_run) const;
 
     /// convergence.csv: every run, the final one last.
@@ -275,7 +337,18 @@ namespace fgimpact
     std::vector<Level> in_plane_chain, thickness_chain, contact_chain;
     /// Every run of steps 2 and 3, in order (for convergence.csv).
     std::vector<Level> refinement_runs;
-    ImpactResults      final_results;
+    /// Step 3: each spatial source's change tolerance (relative; a chain
+    /// stops at its first change below it), Accuracy tolerance at first.
+    std::array<double, time_step> change_tolerance = {};
+    /// Step 4: the final run's time step is Time step / 2^time_halvings;
+    /// the final runs before it, in order (on the same mesh and level at
+    /// twice the step: the time step's reference).
+    unsigned int       time_halvings = 1;
+    std::vector<Level> time_chain;
+    /// Each number's time-step estimate from the last final run: its
+    /// share of the sum before the next final run is made.
+    std::map<std::string, double> last_time_part;
+    ImpactResults                 final_results;
     /// The final run's summary.txt, to which the estimates are appended.
     SummaryEntries summary_entries;
     bool           final_started = false;
