@@ -2,6 +2,7 @@
 #include <deal.II/base/tensor.h>
 
 #include <fgimpact/base/selection.h>
+#include <fgimpact/problem/parameter_checks.h>
 #include <fgimpact/problem/parameters.h>
 #include <fgimpact/problem/study_parameters.h>
 #include <fgimpact/problem/symmetry.h>
@@ -85,66 +86,6 @@ namespace fgimpact
                   ExcMessage("Time integration/" + end_name +
                              " divided by Time step exceeds 1e8 steps."));
       check_snapshot_times(snapshot_times, ti.end_time, end_name);
-    }
-
-    /// Material/Plasticity = J2 where it is modelled: an impact with the
-    /// resolved contact (a point force has no converged stress under it)
-    /// and the implicit scheme, or a static sphere load; a yield strength.
-    void
-    check_plasticity(const Parameters &p)
-    {
-      if (p.strength.plasticity != GradedStrength::Plasticity::j2)
-        return;
-      const std::string name = "Material/Plasticity = J2";
-      AssertThrow(p.strength.metal_yield_strength > 0.,
-                  ExcMessage(name + " needs Material/Metal yield strength > "
-                                    "0 (0 switches the yield check off)."));
-      if (p.problem_type == ProblemType::impact)
-        {
-          AssertThrow(p.contact_model.model ==
-                        ContactModelParameters::Model::resolved_sphere,
-                      ExcMessage(name + " needs Contact/Model = resolved "
-                                        "sphere: under a point force (hertz "
-                                        "node, hertz midplane) the stress has "
-                                        "no converged value, and neither has "
-                                        "the plastic zone."));
-          AssertThrow(p.time_integration.scheme ==
-                        TimeStepper::Scheme::implicit_newmark,
-                      ExcMessage(name + " needs Time integration/Scheme = "
-                                        "implicit."));
-        }
-      else
-        AssertThrow(p.problem_type == ProblemType::static_load &&
-                      p.static_analysis.load ==
-                        StaticAnalysisParameters::Load::sphere,
-                    ExcMessage(name + " is modelled for impacts and for "
-                                      "Static/Load = sphere only; set "
-                                      "Material/Plasticity = none for this "
-                                      "problem."));
-    }
-
-    /// Accuracy = converged refines the contact: it needs an impact whose
-    /// contact converges under refinement, and the implicit scheme (its
-    /// time step is halved once).
-    void
-    check_converged_accuracy(const Parameters &p)
-    {
-      if (p.accuracy.preset != AccuracyPreset::Preset::converged)
-        return;
-      AssertThrow(p.problem_type == ProblemType::impact,
-                  ExcMessage("Accuracy = converged is for Problem type = "
-                             "impact; use Accuracy = custom."));
-      AssertThrow(p.contact_model.model !=
-                    ContactModelParameters::Model::hertz_node,
-                  ExcMessage("Accuracy = converged with Contact/Model = hertz "
-                             "node: its point force does not converge under "
-                             "refinement; use resolved sphere or hertz "
-                             "midplane."));
-      AssertThrow(p.time_integration.scheme ==
-                    TimeStepper::Scheme::implicit_newmark,
-                  ExcMessage("Accuracy = converged needs Time "
-                             "integration/Scheme = implicit (it halves the "
-                             "time step once)."));
     }
 
     const char *
@@ -431,6 +372,7 @@ namespace fgimpact
                            "integration/Scheme = implicit: its contact is "
                            "rigid, which no explicit step is stable for."));
     check_plasticity(*this);
+    check_resolved_contact_degree(*this);
     AssertThrow(output.directory.find_first_not_of(" \t") != std::string::npos,
                 ExcMessage("Output/Directory is empty."));
     // parameters.prm must read back as the run was: '#' starts a comment

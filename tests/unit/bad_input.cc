@@ -358,6 +358,12 @@ namespace fgimpact_unit_tests::bad_input
          "subsection Finite element\n set Degree = 3\nend\n",
          1,
          "Degree"},
+        // Issue 38: its peak force changes by -0.82 %, then +0.82 %.
+        {"the resolved contact on quadratic faces",
+         "subsection Finite element\n set Degree = 2\nend\n"
+         "subsection Contact\n set Model = resolved sphere\nend\n",
+         1,
+         "Finite element/Degree"},
         {"negative log interval",
          "subsection Output\n set Log interval = -1\nend\n",
          1,
