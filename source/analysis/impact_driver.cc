@@ -340,17 +340,13 @@ namespace fgimpact
         end_time_rule.record(t, contact_state.force);
         return false;
       }
-    return end_time_rule.left_for_good(
-      t,
-      ball.w,
-      ball.v,
-      contact_state.force,
-      stepper->kinetic_energy() + stepper->strain_energy(),
-      [this]() {
-        return largest_static_compliance(plate,
-                                         parameters.linear_solver,
-                                         contact->contact_dofs());
-      });
+    return end_time_rule.left_for_good(t,
+                                       ball.w,
+                                       ball.v,
+                                       contact_state.force,
+                                       stepper->kinetic_energy() +
+                                         stepper->strain_energy(),
+                                       [this]() { return static_compliance; });
   }
 
 

@@ -193,9 +193,8 @@ namespace fgimpact
     e.vectors  = bytes_per_dof * e.n_dofs;
     e.factor   = e.factorizes ? 8. * supernode_padding * e.factor_nnz : 0.;
     // End time = auto factorizes K once more for the plate's static
-    // compliance (largest_static_compliance()) while K_eff's factor lives.
-    if (impact && !explicit_scheme && parameters.time_integration.auto_end_time)
-      e.factor *= 2.;
+    // compliance (largest_static_compliance()), in the set-up before
+    // K_eff's factor is made: not at the same time, so counted once.
     // A mirrored part's VTU holds the whole plate's cells.
     const double output_cells =
       parameters.output.vtu_fields.mirror ? e.n_cells / share : e.n_cells;

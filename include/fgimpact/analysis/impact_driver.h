@@ -211,9 +211,14 @@ namespace fgimpact
     ImpactorState ball;
     ContactState  contact_state;
     AutoEndTime   end_time_rule;
-    double        dt       = 0;
-    unsigned int  n_steps  = 0;
-    unsigned int  timestep = 0;
+    /// End time = auto: the plate's largest static compliance at the
+    /// contact (m/N), the rule's C, computed in setup() before the
+    /// stepper's factorization so that its own factor of K is gone
+    /// before K_eff's is made (0 otherwise).
+    double       static_compliance = 0;
+    double       dt                = 0;
+    unsigned int n_steps           = 0;
+    unsigned int timestep          = 0;
   };
 } // namespace fgimpact
 
