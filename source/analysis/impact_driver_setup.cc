@@ -41,7 +41,7 @@ namespace fgimpact
 
 
   void
-  ImpactDriver::setup()
+  ImpactDriver::create_contact()
   {
     contact = create_contact_model(parameters.contact_model,
                                    contact_law,
@@ -60,7 +60,14 @@ namespace fgimpact
     if (!impactor.vibration_report(hertz_contact_duration()).empty())
       pcout << "  " << impactor.vibration_report(hertz_contact_duration())
             << '\n';
+  }
 
+
+
+  void
+  ImpactDriver::setup()
+  {
+    create_contact();
     results = setup_results(plate, scene, *contact, total_timer.wall_time());
 
     // End time = auto's compliance factorizes K: before K_eff's factor

@@ -69,31 +69,14 @@ namespace fgimpact
                                                  cell->extent_in_direction(1),
                                                  cell->extent_in_direction(2)}};
           const auto [it, added] = tables.emplace(extent, gradients.size());
-          cell->get_dof_indices(dofs);
           if (added)
-            {
-              gradients.emplace_back(n_points * n_scalar * 3);
-              gradient_bound.push_back(0.);
-              extents.push_back(extent);
-              mean_divergences.emplace_back();
-              const auto m = plate.mean_divergence(cell);
-              for (unsigned int i = 0; i < m.size(); ++i)
-                {
-                  const auto [c, s] = fe.system_to_component_index(i);
-                  mean_divergences.back().resize(n_dofs);
-                  mean_divergences.back()[s * 3 + c] = m[i];
-                }
-            }
+            add_table(cell, fe_values, extent);
+          cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
               const auto [c, s]     = fe.system_to_component_index(i);
               cell_index[s * 3 + c] = map.LID(
                 static_cast<TrilinosWrappers::types::int_type>(dofs[i]));
-              if (added)
-                for (unsigned int q = 0; q < n_points; ++q)
-                  for (unsigned int d = 0; d < 3; ++d)
-                    gradients.back()[(q * n_scalar + s) * 3 + d] =
-                      fe_values.shape_grad_component(i, q, c)[d];
             }
           table.push_back(it->second);
           active_index.push_back(cell->active_cell_index());
@@ -105,6 +88,47 @@ namespace fgimpact
           for (unsigned int q = 0; q < n_points; ++q)
             add_point(fe_values.quadrature_point(q), E[q], nu[q]);
         }
+    set_gradient_bounds();
+  }
+
+
+
+  void
+  StrengthCheck::add_table(const DoFHandler<3>::active_cell_iterator &cell,
+                           const FEValues<3>                         &fe_values,
+                           const std::array<double, 3>               &extent)
+  {
+    // The cells of one extent share their shape gradients (the mapping is
+    // affine: boxes) and their mean divergence (B-bar).
+    const auto        &fe     = plate.get_fe();
+    const unsigned int n_dofs = fe.n_dofs_per_cell();
+    gradients.emplace_back(n_points * n_scalar * 3);
+    gradient_bound.push_back(0.);
+    extents.push_back(extent);
+    mean_divergences.emplace_back();
+    const auto m = plate.mean_divergence(cell);
+    for (unsigned int i = 0; i < m.size(); ++i)
+      {
+        const auto [c, s] = fe.system_to_component_index(i);
+        mean_divergences.back().resize(n_dofs);
+        mean_divergences.back()[s * 3 + c] = m[i];
+      }
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        const auto [c, s] = fe.system_to_component_index(i);
+        for (unsigned int q = 0; q < n_points; ++q)
+          for (unsigned int d = 0; d < 3; ++d)
+            gradients.back()[(q * n_scalar + s) * 3 + d] =
+              fe_values.shape_grad_component(i, q, c)[d];
+      }
+  }
+
+
+
+  void
+  StrengthCheck::set_gradient_bounds()
+  {
+    // |grad u| <= |D| max_q |sum_s |grad N_s(x_q)|| (can_skip()).
     for (unsigned int t = 0; t < gradients.size(); ++t)
       for (unsigned int q = 0; q < n_points; ++q)
         {

@@ -105,14 +105,19 @@ namespace fgimpact
     void
     report_end_time(const int stop, const unsigned int steps_done);
 
-    /// hertz_impact_duration() with the contact law's stiffness: a lower
-    /// bound of the plate's contact duration (s).
+    /// The contact model of Contact/Model, said in the log with its
+    /// warning and the elastic ball's vibration.
+    void
+    create_contact();
+
     /// The time stepper: built, its matrices factorized (a solver failure
     /// named), and with Material/Plasticity = J2 the plate's plastic
     /// state handed to it.
     void
     initialize_stepper();
 
+    /// hertz_impact_duration() with the contact law's stiffness: a lower
+    /// bound of the plate's contact duration (s).
     double
     hertz_contact_duration() const;
 

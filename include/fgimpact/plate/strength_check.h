@@ -4,6 +4,10 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_values.h>
+
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <fgimpact/material/strength.h>
@@ -75,6 +79,17 @@ namespace fgimpact
     /// The cell data for the cells that are checked.
     void
     setup(const Point<3> &excluded_centre, const double excluded_radius);
+
+    /// A new extent's shape gradients at the support points (fe_values
+    /// reinitialized on `cell`) and mean divergence.
+    void
+    add_table(const DoFHandler<3>::active_cell_iterator &cell,
+              const FEValues<3>                         &fe_values,
+              const std::array<double, 3>               &extent);
+
+    /// Each extent's bound of |grad u| / |D| over its points.
+    void
+    set_gradient_bounds();
 
     /// Whether cell c (its displacements cell_u, [s * 3 + component])
     /// cannot beat the peaks: for Q1, its strain at the centre (exact, the
