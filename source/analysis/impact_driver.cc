@@ -240,12 +240,7 @@ namespace fgimpact
   {
     // A resume whose files cannot be continued is refused before anything
     // is written: summary.txt and every other file stay as they were.
-    std::string refusal;
-    for (const auto &m :
-         Utilities::MPI::all_gather(plate.get_mpi_communicator(),
-                                    monitor->output_failure()))
-      if (refusal.empty())
-        refusal = m;
+    const std::string refusal = monitor->agreed_output_failure();
     AssertThrow(refusal.empty(),
                 ExcResumeRefused("--resume " + parameters.output.directory +
                                  ": " + refusal +

@@ -310,6 +310,19 @@ namespace fgimpact
 
 
 
+  std::string
+  ImpactMonitor::agreed_output_failure() const
+  {
+    for (const auto &m :
+         Utilities::MPI::all_gather(plate.get_mpi_communicator(),
+                                    output_failure()))
+      if (!m.empty())
+        return m;
+    return "";
+  }
+
+
+
   void
   ImpactMonitor::finish(const ImpactorState &ball,
                         const unsigned int   steps_done,

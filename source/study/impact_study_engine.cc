@@ -189,6 +189,8 @@ namespace fgimpact
                                        const Timer      &total_timer)
     : plate(plate)
     , total_timer(total_timer)
+    , pcout(std::cout,
+            Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
   {}
 
 
@@ -352,6 +354,51 @@ namespace fgimpact
 
 
 
+  void
+  ImpactStudyEngine::check_case(const Parameters   &p,
+                                const ContactModel &contact) const
+  {
+    AssertThrow(contact.contact_dofs() == dofs,
+                ExcMessage("study: a case's contact node differs from the "
+                           "group's; vary Impactor/Impact point x/y only in "
+                           "separate runs."));
+    AssertThrow(p.time_integration.n_steps(dt) == n_steps,
+                ExcMessage("study: a case's number of time steps differs "
+                           "from the group's."));
+  }
+
+
+
+  std::unique_ptr<ImpactMonitor>
+  ImpactStudyEngine::start_monitor(const Parameters   &p,
+                                   const Scene        &scene,
+                                   const ContactModel &contact,
+                                   SummaryFile        &summary)
+  {
+    const Impactor &impactor = scene.impactor();
+    // No probes.csv: its probes need the fields (--study-case K writes it).
+    OutputParameters output = p.output;
+    output.probe_points.points.clear();
+    auto monitor = std::make_unique<ImpactMonitor>(output,
+                                                   plate,
+                                                   contact,
+                                                   impactor.mass(),
+                                                   impactor.initial_velocity(),
+                                                   dt,
+                                                   n_steps,
+                                                   results,
+                                                   summary);
+    for (const auto &observer : observers)
+      monitor->add_row_observer(observer);
+    // Without fields: Hertz's closed form and the rigid ball only.
+    monitor->add(std::make_unique<ValidityMonitor>(
+      plate, validity_setup(p, scene, contact, results), results, pcout));
+    monitor->start();
+    return monitor;
+  }
+
+
+
   const ImpactResults &
   ImpactStudyEngine::run_case(const Parameters &p, SummaryFile &summary)
   {
@@ -359,13 +406,7 @@ namespace fgimpact
     const Impactor       &impactor = scene.impactor();
     const HertzContactLaw law(p.contact, plate.get_material(), impactor);
     const auto            contact = contact_model_of(p, law, scene, plate);
-    AssertThrow(contact->contact_dofs() == dofs,
-                ExcMessage("study: a case's contact node differs from the "
-                           "group's; vary Impactor/Impact point x/y only in "
-                           "separate runs."));
-    AssertThrow(p.time_integration.n_steps(dt) == n_steps,
-                ExcMessage("study: a case's number of time steps differs "
-                           "from the group's."));
+    check_case(p, *contact);
     const double m = impactor.mass(), V0 = impactor.initial_velocity();
     // A symmetric part (Geometry/Symmetry): the part's share of the ball's
     // mass meets the part's share of the contact force, as in ImpactDriver;
@@ -374,24 +415,11 @@ namespace fgimpact
 
     start_results(p, scene, *contact);
 
-    // No probes.csv: its probes need the fields (--study-case K writes it).
-    OutputParameters output = p.output;
-    output.probe_points.points.clear();
-    const ConditionalOStream pcout(std::cout,
-                                   Utilities::MPI::this_mpi_process(
-                                     plate.get_mpi_communicator()) == 0);
-    ImpactMonitor            monitor(
-      output, plate, *contact, m, V0, dt, n_steps, results, summary);
-    for (const auto &observer : observers)
-      monitor.add_row_observer(observer);
-    // Without fields: Hertz's closed form and the rigid ball only.
-    monitor.add(std::make_unique<ValidityMonitor>(
-      plate, validity_setup(p, scene, *contact, results), results, pcout));
-    monitor.start();
+    const auto    monitor = start_monitor(p, scene, *contact, summary);
     ImpactorState ball;
     ball.v = V0;
     ContactState state;
-    monitor.record(0, 0., PlateSample(), ball, state);
+    monitor->record(0, 0., PlateSample(), ball, state);
 
     ConvolutionResponse response(
       dt, compliance, contact_response, probe_response, gram);
@@ -405,30 +433,22 @@ namespace fgimpact
     for (unsigned int n = 0; n < n_steps; ++n)
       {
         if (const int stop = stop_requested(plate); stop > 0)
-          stop_case(monitor, ball, n, stop, loop_timer.wall_time());
+          stop_case(*monitor, ball, n, stop, loop_timer.wall_time());
         const double t = (n + 1) * dt;
         coupler.advance(n + 1, t, ball, state);
-        monitor.record(n + 1, t, response.plate_sample(), ball, state);
+        monitor->record(n + 1, t, response.plate_sample(), ball, state);
       }
-    monitor.close_output();
+    monitor->close_output();
     // A failed write on any rank (rank 0 writes history.csv): every rank
     // agrees and throws the failing rank's message, so none is left
     // waiting in the next collective call.
-    const MPI_Comm comm = plate.get_mpi_communicator();
-    if (Utilities::MPI::max(monitor.output_failure().empty() ? 0 : 1, comm))
-      {
-        std::string message;
-        for (const auto &m :
-             Utilities::MPI::all_gather(comm, monitor.output_failure()))
-          if (message.empty())
-            message = m;
-        AssertThrow(false, ExcOutputFailure(message));
-      }
-    monitor.finish(ball,
-                   n_steps,
-                   "completed",
-                   loop_timer.wall_time(),
-                   total_timer.wall_time());
+    const std::string failure = monitor->agreed_output_failure();
+    AssertThrow(failure.empty(), ExcOutputFailure(failure));
+    monitor->finish(ball,
+                    n_steps,
+                    "completed",
+                    loop_timer.wall_time(),
+                    total_timer.wall_time());
     return results;
   }
 } // namespace fgimpact

@@ -236,6 +236,11 @@ namespace fgimpact
     const std::string &
     output_failure() const;
 
+    /// The message of a failed output write on the lowest rank that has
+    /// one ("" if none): every rank gets the same (collective).
+    std::string
+    agreed_output_failure() const;
+
     /**
      * Derive the final results after steps_done time steps, print them
      * and write summary.txt with `status` (completed, interrupted or

@@ -1,6 +1,7 @@
 #ifndef fgimpact_impact_study_engine_h
 #define fgimpact_impact_study_engine_h
 
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
 #include <deal.II/lac/full_matrix.h>
@@ -112,6 +113,20 @@ namespace fgimpact
               const int            stop,
               const double         loop_time) const;
 
+    /// A case's monitor, started: history.csv and summary.txt (no
+    /// probes.csv: its probes need the fields), the validity checks that
+    /// need no fields, the row observers.
+    std::unique_ptr<ImpactMonitor>
+    start_monitor(const Parameters   &p,
+                  const Scene        &scene,
+                  const ContactModel &contact,
+                  SummaryFile        &summary);
+
+    /// A case must share the group's contact node and number of steps
+    /// (the unit responses are theirs): else refused in one line.
+    void
+    check_case(const Parameters &p, const ContactModel &contact) const;
+
     /// results for a new case: the plate's and the set-up's entries, the
     /// contact model's, the model description; the history's are the
     /// monitor's.
@@ -122,7 +137,9 @@ namespace fgimpact
 
     const PlateModel &plate;
     const Timer      &total_timer;
-    std::string       reason;
+    /// Rank 0's standard output (the validity monitor's log lines).
+    const ConditionalOStream pcout;
+    std::string              reason;
 
     std::vector<types::global_dof_index> dofs;
     double                               dt = 0, compliance = 0;
