@@ -227,6 +227,65 @@ namespace fgimpact
 
 
   bool
+  ImpactStudyEngine::record_unit_response(TimeStepper              &stepper,
+                                          LAPACKFullMatrix<double> &V,
+                                          LAPACKFullMatrix<double> &MV)
+  {
+    const PlateGeometry &g = plate.get_geometry();
+    // The history's probes, as the monitor places them.
+    const auto       points = history_probe_points(g);
+    const PointProbe mid(plate, points[0]), top(plate, points[1]);
+    // The probes read the unit response with the constraints distributed
+    // (a probe on a hanging node reads its parents' interpolation).
+    PlateFields fields(plate);
+    contact_response.assign(n_steps, 0.);
+    probe_response.assign(n_steps, PlateSample());
+    const std::size_t n_local = plate.locally_owned_dofs().n_elements();
+    return stepper.unit_response(
+      n_steps,
+      [&](const unsigned int                   j,
+          const TrilinosWrappers::MPI::Vector &u,
+          const TrilinosWrappers::MPI::Vector &v,
+          const TrilinosWrappers::MPI::Vector &Mv) {
+        // The message is built only if a signal came.
+        if (const int stop = stop_requested(plate); stop > 0)
+          throw RunInterrupted(stop,
+                               std::string("interrupted by ") +
+                                 signal_name(stop) +
+                                 " while the convolution study was being "
+                                 "prepared (unit response step " +
+                                 std::to_string(j) + " of " +
+                                 std::to_string(n_steps) +
+                                 "): no case computed; run the study again.");
+        contact_response[j - 1] = plate.dof_values(u, dofs)[0];
+        fields.update_displacement(u);
+        probe_response[j - 1] = probe_plate(mid, top, fields.displacement());
+        for (std::size_t i = 0; i < n_local; ++i)
+          {
+            V(i, j - 1)  = v.begin()[i];
+            MV(i, j - 1) = Mv.begin()[i];
+          }
+      });
+  }
+
+
+
+  void
+  ImpactStudyEngine::compute_gram(const LAPACKFullMatrix<double> &V,
+                                  const LAPACKFullMatrix<double> &MV)
+  {
+    LAPACKFullMatrix<double> G(n_steps, n_steps);
+    V.Tmmult(G, MV);
+    gram.reinit(n_steps, n_steps);
+    for (unsigned int i = 0; i < n_steps; ++i)
+      for (unsigned int j = 0; j < n_steps; ++j)
+        gram(i, j) = G(i, j);
+    Utilities::MPI::sum(gram, plate.get_mpi_communicator(), gram);
+  }
+
+
+
+  bool
   ImpactStudyEngine::prepare(const Parameters &p)
   {
     setup_time = total_timer.wall_time();
@@ -234,7 +293,6 @@ namespace fgimpact
     const Scene scene(p, plate.get_material(), plate.get_geometry().share());
     const Impactor       &impactor = scene.impactor();
     const HertzContactLaw law(p.contact, plate.get_material(), impactor);
-    const PlateGeometry  &g       = plate.get_geometry();
     const auto            contact = contact_model_of(p, law, scene, plate);
     dofs                          = contact->contact_dofs();
     const auto stepper            = create_time_stepper(p.time_integration,
@@ -248,43 +306,10 @@ namespace fgimpact
     dt                 = stepper->time_step();
     n_steps            = p.time_integration.n_steps(dt);
 
-    // The history's probes, as the monitor places them.
-    const auto       points = history_probe_points(g);
-    const PointProbe mid(plate, points[0]), top(plate, points[1]);
-    // The probes read the unit response with the constraints distributed
-    // (a probe on a hanging node reads its parents' interpolation).
-    PlateFields fields(plate);
-    contact_response.assign(n_steps, 0.);
-    probe_response.assign(n_steps, PlateSample());
-    const std::size_t n_local = plate.locally_owned_dofs().n_elements();
     // Column j - 1: the step's local velocity values (contiguous).
+    const std::size_t        n_local = plate.locally_owned_dofs().n_elements();
     LAPACKFullMatrix<double> V(n_local, n_steps), MV(n_local, n_steps);
-    const bool               supported = stepper->unit_response(
-      n_steps,
-      [&](const unsigned int                   j,
-          const TrilinosWrappers::MPI::Vector &u,
-          const TrilinosWrappers::MPI::Vector &v,
-          const TrilinosWrappers::MPI::Vector &Mv) {
-        // The message is built only if a signal came.
-        if (const int stop = stop_requested(plate); stop > 0)
-          throw RunInterrupted(stop,
-                               std::string("interrupted by ") +
-                                 signal_name(stop) +
-                                 " while the convolution study was being "
-                                               "prepared (unit response step " +
-                                 std::to_string(j) + " of " +
-                                 std::to_string(n_steps) +
-                                 "): no case computed; run the study again.");
-        contact_response[j - 1] = plate.dof_values(u, dofs)[0];
-        fields.update_displacement(u);
-        probe_response[j - 1] = probe_plate(mid, top, fields.displacement());
-        for (std::size_t i = 0; i < n_local; ++i)
-          {
-            V(i, j - 1)  = v.begin()[i];
-            MV(i, j - 1) = Mv.begin()[i];
-          }
-      });
-    if (!supported)
+    if (!record_unit_response(*stepper, V, MV))
       {
         reason = "the time stepper has no unit response here (an iterative "
                  "linear solver: set Linear solver/Type = auto or cholmod)";
@@ -293,13 +318,7 @@ namespace fgimpact
     compliance    = -contact_response[0];
     response_time = timer.wall_time() - factorization_time;
 
-    LAPACKFullMatrix<double> G(n_steps, n_steps);
-    V.Tmmult(G, MV);
-    gram.reinit(n_steps, n_steps);
-    for (unsigned int i = 0; i < n_steps; ++i)
-      for (unsigned int j = 0; j < n_steps; ++j)
-        gram(i, j) = G(i, j);
-    Utilities::MPI::sum(gram, plate.get_mpi_communicator(), gram);
+    compute_gram(V, MV);
     prepare_time = timer.wall_time();
     gram_time    = prepare_time - response_time - factorization_time;
     return true;

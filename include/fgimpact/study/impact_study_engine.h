@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/lapack_full_matrix.h>
 
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/output/results.h>
@@ -17,6 +18,8 @@
 
 namespace fgimpact
 {
+  class TimeStepper;
+
   using namespace dealii;
 
   /**
@@ -121,6 +124,22 @@ namespace fgimpact
                   const Scene        &scene,
                   const ContactModel &contact,
                   SummaryFile        &summary);
+
+    /// prepare()'s pass of unit responses: the contact DoF's and the
+    /// history probes' values per step, and the steps' local velocities
+    /// (V) and M times them (MV), one column per step; false if the
+    /// stepper has none (an iterative solver).  A signal stops it
+    /// (RunInterrupted).
+    bool
+    record_unit_response(TimeStepper              &stepper,
+                         LAPACKFullMatrix<double> &V,
+                         LAPACKFullMatrix<double> &MV);
+
+    /// The Gram matrix of the unit velocities, G_ij = v_i^T M v_j, summed
+    /// over the ranks.
+    void
+    compute_gram(const LAPACKFullMatrix<double> &V,
+                 const LAPACKFullMatrix<double> &MV);
 
     /// A case must share the group's contact node and number of steps
     /// (the unit responses are theirs): else refused in one line.
