@@ -129,6 +129,34 @@ namespace fgimpact
       const double balls  = parameters.impactor.elastic ? 2. : 1.;
       return 8. * (balls * part * part + stored * n_dofs);
     }
+
+    /// Cells: the brick grid's `grid_cells` plus, per contact refinement
+    /// pass k, 7 new cells for every cell of size h_k = hx/2^k that
+    /// refine_locally() refines: those within the core radius + 2 h_k of
+    /// the impact point (box distance, so one more h_k), counted in a
+    /// half-ball clipped to the thickness (a cylinder once the ball is
+    /// deeper than the plate), its `share` on a symmetric part.
+    double
+    refined_cells(const PlateGeometry::Parameters &g,
+                  const LocalRefinement           &refinement,
+                  const double                     share,
+                  const double                     grid_cells)
+    {
+      const double hx = g.length / g.subdivisions_x,
+                   hy = g.width / g.subdivisions_y,
+                   hz = g.thickness / g.subdivisions_z;
+      double n_cells  = grid_cells;
+      for (unsigned int k = 0; k < refinement.levels; ++k)
+        {
+          const double h_k    = hx / std::pow(2., k);
+          const double cell   = hx * hy * hz / std::pow(8., k);
+          const double d      = refinement.radius + 3. * h_k;
+          const double volume = d <= g.thickness ? 2. / 3. * M_PI * d * d * d :
+                                                   M_PI * d * d * g.thickness;
+          n_cells += 7. * std::min(share * volume / cell, n_cells);
+        }
+      return n_cells;
+    }
   } // namespace
 
 
@@ -137,15 +165,9 @@ namespace fgimpact
   estimate_resources(const Parameters      &parameters,
                      const LocalRefinement &refinement)
   {
-    const double       core_radius = refinement.radius;
-    const auto        &g           = parameters.geometry;
-    const unsigned int p           = parameters.finite_element.degree;
+    const auto        &g = parameters.geometry;
+    const unsigned int p = parameters.finite_element.degree;
     ResourceEstimate   e;
-    // Cells: the brick grid plus, per contact refinement pass k, 7 new
-    // cells for every cell of size h_k = hx/2^k that refine_locally()
-    // refines: those within core_radius + 2 h_k of the impact point (box
-    // distance, so one more h_k), counted in a half-ball clipped to the
-    // thickness (a cylinder once the ball is deeper than the plate).
     // A symmetric part (Geometry/Symmetry, resolved with the parameters):
     // half the subdivisions across each cut, and the cut share of the
     // refined half-ball.
@@ -155,18 +177,8 @@ namespace fgimpact
                  sy           = g.subdivisions_y * (part.cut[1] ? 0.5 : 1.),
                  sz           = g.subdivisions_z;
     const double hx           = g.length / g.subdivisions_x,
-                 hy           = g.width / g.subdivisions_y,
-                 hz           = g.thickness / g.subdivisions_z;
-    e.n_cells                 = sx * sy * sz;
-    for (unsigned int k = 0; k < refinement.levels; ++k)
-      {
-        const double h_k    = hx / std::pow(2., k);
-        const double cell   = hx * hy * hz / std::pow(8., k);
-        const double d      = core_radius + 3. * h_k;
-        const double volume = d <= g.thickness ? 2. / 3. * M_PI * d * d * d :
-                                                 M_PI * d * d * g.thickness;
-        e.n_cells += 7. * std::min(share * volume / cell, e.n_cells);
-      }
+                 hy           = g.width / g.subdivisions_y;
+    e.n_cells          = refined_cells(g, refinement, share, sx * sy * sz);
     const double scale = std::cbrt(e.n_cells / (sx * sy * sz));
     // Nodes per direction and the 1D coupling count: a node couples with
     // 3 (Q1) or 8 (Q2, averaged) nodes per direction.
@@ -192,9 +204,7 @@ namespace fgimpact
     e.matrices = bytes_per_entry * e.matrix_nnz;
     e.vectors  = bytes_per_dof * e.n_dofs;
     e.factor   = e.factorizes ? 8. * supernode_padding * e.factor_nnz : 0.;
-    // End time = auto factorizes K once more for the plate's static
-    // compliance (largest_static_compliance()), in the set-up before
-    // K_eff's factor is made: not at the same time, so counted once.
+    // (End time = auto's factor of K is freed before K_eff's is made.)
     // A mirrored part's VTU holds the whole plate's cells.
     const double output_cells =
       parameters.output.vtu_fields.mirror ? e.n_cells / share : e.n_cells;
