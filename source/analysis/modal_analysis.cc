@@ -113,6 +113,21 @@ namespace fgimpact
       return std::min<unsigned int>(2 * n + 8, n_free);
     }
 
+    /// Whether each of the lowest n Ritz values changed by at most
+    /// `tolerance` (relative) from the iteration before.
+    bool
+    settled(const std::vector<double> &lambda,
+            const std::vector<double> &lambda_old,
+            const unsigned int         n,
+            const double               tolerance)
+    {
+      bool converged = true;
+      for (unsigned int j = 0; j < n; ++j)
+        converged = converged && std::abs(lambda[j] - lambda_old[j]) <=
+                                   tolerance * std::abs(lambda[j]);
+      return converged;
+    }
+
     /// LAPACK's sygv reports a failure on the screen only and leaves
     /// zeros (a free plate's rigid modes are near zero too, but never the
     /// whole block): never write 0 Hz for modes not found.
@@ -272,29 +287,15 @@ namespace fgimpact
     Timer               first_iteration;
     for (iterations = 1; iterations <= parameters.max_iterations; ++iterations)
       {
-        // Y = (K - sigma M)^{-1} M X.  A stop signal is acted on between
-        // two solves (a block of 1000 vectors takes minutes per iteration).
-        for (unsigned int j = 0; j < p; ++j)
-          {
-            throw_if_stop_signal(plate.get_mpi_communicator(),
-                                 "during the modal iteration");
-            M.vmult(Mx, X[j]);
-            Mx.scale(mask);
-            Y[j] = 0.;
-            solver.solve(Y[j], Mx);
-            Y[j].scale(mask);
-            if (iterations == 1 && j == 0)
-              report_estimated_cost(first_iteration.wall_time(), Y[0], Mx, p);
-          }
+        apply_inverse(solver, mask, X, Y, Mx, iterations == 1, first_iteration);
         rayleigh_ritz(K, M, Y, tmp, Mx, lambda, X);
         check_ritz_values(lambda, iterations);
         if (iterations == 1)
           report_iteration_cost(first_iteration.wall_time(), p);
 
-        bool converged = iterations > 1;
-        for (unsigned int j = 0; j < n; ++j)
-          converged = converged && std::abs(lambda[j] - lambda_old[j]) <=
-                                     parameters.tolerance * std::abs(lambda[j]);
+        const bool converged =
+          iterations > 1 &&
+          settled(lambda, lambda_old, n, parameters.tolerance);
         lambda_old = lambda;
         if (converged)
           break;
@@ -305,9 +306,58 @@ namespace fgimpact
                   std::to_string(parameters.max_iterations) +
                   "; raise it or loosen Modal/Tolerance."));
 
+    collect_modes(X, lambda, w_mask);
+  }
+
+
+
+  void
+  ModalAnalysis::apply_inverse(
+    EffectiveMatrixSolver                            &solver,
+    const TrilinosWrappers::MPI::Vector              &mask,
+    const std::vector<TrilinosWrappers::MPI::Vector> &X,
+    std::vector<TrilinosWrappers::MPI::Vector>       &Y,
+    TrilinosWrappers::MPI::Vector                    &Mx,
+    const bool                                        first,
+    const Timer                                      &first_iteration) const
+  {
+    // Y = (K - sigma M)^{-1} M X.  A stop signal is acted on between two
+    // solves (a block of 1000 vectors takes minutes per iteration).
+    const auto &M = plate.mass_matrix();
+    for (unsigned int j = 0; j < Y.size(); ++j)
+      {
+        throw_if_stop_signal(plate.get_mpi_communicator(),
+                             "during the modal iteration");
+        M.vmult(Mx, X[j]);
+        Mx.scale(mask);
+        Y[j] = 0.;
+        solver.solve(Y[j], Mx);
+        Y[j].scale(mask);
+        if (first && j == 0)
+          report_estimated_cost(first_iteration.wall_time(),
+                                Y[0],
+                                Mx,
+                                Y.size());
+      }
+  }
+
+
+
+  void
+  ModalAnalysis::collect_modes(
+    const std::vector<TrilinosWrappers::MPI::Vector> &X,
+    const std::vector<double>                        &lambda,
+    const TrilinosWrappers::MPI::Vector              &w_mask)
+  {
+    // Each mode's frequency and the share of its kinetic energy in the
+    // transverse (w) motion.
+    const auto                   &M = plate.mass_matrix();
+    TrilinosWrappers::MPI::Vector tmp, Mx;
+    plate.initialize_vector(tmp);
+    plate.initialize_vector(Mx);
     modes.clear();
     shapes.clear();
-    for (unsigned int j = 0; j < n; ++j)
+    for (unsigned int j = 0; j < parameters.n_modes; ++j)
       {
         M.vmult(Mx, X[j]);
         const double total = X[j] * Mx;

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/data_out_base.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/timer.h>
 
 #include <deal.II/lac/trilinos_vector.h>
 
@@ -75,6 +76,24 @@ namespace fgimpact
                  const VtuFields &fields = VtuFields()) const;
 
   private:
+    /// One block solve of the subspace iteration, Y = (K - sigma M)^{-1}
+    /// M X on the unconstrained DoFs (mask); in the first iteration
+    /// (first) the cost estimate from its first solve.
+    void
+    apply_inverse(EffectiveMatrixSolver                            &solver,
+                  const TrilinosWrappers::MPI::Vector              &mask,
+                  const std::vector<TrilinosWrappers::MPI::Vector> &X,
+                  std::vector<TrilinosWrappers::MPI::Vector>       &Y,
+                  TrilinosWrappers::MPI::Vector                    &Mx,
+                  const bool                                        first,
+                  const Timer &first_iteration) const;
+
+    /// modes and shapes from the converged block X and its Ritz values.
+    void
+    collect_modes(const std::vector<TrilinosWrappers::MPI::Vector> &X,
+                  const std::vector<double>                        &lambda,
+                  const TrilinosWrappers::MPI::Vector              &w_mask);
+
     /// A log line when the first iteration took long (seconds, block
     /// size), with the bound that Max iterations puts on the whole.
     void
