@@ -184,7 +184,7 @@ namespace fgimpact
 
   private:
     /// The parameters of a level run (final: the user's outputs into
-    /// Output/Directory at half the time step).
+    /// Output/Directory at Time step / 2^time_halvings).
     Parameters
     parameters_of(const unsigned int levels,
                   const bool         final,
