@@ -97,28 +97,12 @@ namespace fgimpact
     // counts as output time (time_loop_s = loop - output stays >= 0).
     Timer loop_timer;
 
-    const MPI_Comm comm       = plate.get_mpi_communicator();
-    unsigned int   steps_done = resume ? resume->step : 0;
-    int            stop       = 0;
-    std::string    checkpoint_failure;
+    unsigned int steps_done = resume ? resume->step : 0;
+    int          stop       = 0;
+    std::string  checkpoint_failure;
     try
       {
-        if (resume)
-          monitor->resume_output(resume->step, resume->step * dt, *stepper);
-        else
-          monitor->record(0, 0., *stepper, ball, contact_state);
-        stop = run_steps(steps_done);
-        // SIGINT/SIGTERM: a checkpoint at the stop, whatever the interval
-        // (a failure to write it does not hide the interruption).
-        if (stop > 0)
-          checkpoint_failure = failure_of([&]() {
-            AssertThrow(write_checkpoint(steps_done) == 0,
-                        ExcOutputFailure(monitor->output_failure()));
-          });
-        report_end_time(stop, steps_done);
-        monitor->close_output();
-        if (agreed_stop(comm, !monitor->output_failure().empty()) < 0)
-          stop = -1;
+        stop = run_and_close(resume.get(), steps_done, checkpoint_failure);
       }
     catch (...)
       {
@@ -140,15 +124,43 @@ namespace fgimpact
                     total_timer.wall_time());
     report_checkpoints(loop_timer.wall_time());
     if (stop > 0)
-      throw RunInterrupted(stop,
-                           interruption_message(stop,
-                                                steps_done,
-                                                n_steps,
-                                                dt,
-                                                parameters.output.directory,
-                                                checkpoint_failure,
-                                                Utilities::MPI::n_mpi_processes(
-                                                  comm)));
+      throw RunInterrupted(
+        stop,
+        interruption_message(stop,
+                             steps_done,
+                             n_steps,
+                             dt,
+                             parameters.output.directory,
+                             checkpoint_failure,
+                             Utilities::MPI::n_mpi_processes(
+                               plate.get_mpi_communicator())));
+  }
+
+
+
+  int
+  ImpactDriver::run_and_close(const CheckpointReader *resume,
+                              unsigned int           &steps_done,
+                              std::string            &checkpoint_failure)
+  {
+    if (resume)
+      monitor->resume_output(resume->step, resume->step * dt, *stepper);
+    else
+      monitor->record(0, 0., *stepper, ball, contact_state);
+    int stop = run_steps(steps_done);
+    // SIGINT/SIGTERM: a checkpoint at the stop, whatever the interval (a
+    // failure to write it does not hide the interruption).
+    if (stop > 0)
+      checkpoint_failure = failure_of([&]() {
+        AssertThrow(write_checkpoint(steps_done) == 0,
+                    ExcOutputFailure(monitor->output_failure()));
+      });
+    report_end_time(stop, steps_done);
+    monitor->close_output();
+    if (agreed_stop(plate.get_mpi_communicator(),
+                    !monitor->output_failure().empty()) < 0)
+      stop = -1;
+    return stop;
   }
 
 

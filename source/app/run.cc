@@ -323,6 +323,38 @@ namespace fgimpact
 
 
     /// Set up, write the start files and run one simulation; the exit code.
+    /**
+     * Everything that can fail on bad input is checked before any file is
+     * written: Simulator::setup() writes nothing.  A numerical failure of
+     * the valid input there (a factorization, a solver) is a failed run:
+     * the start files and summary.txt (status = failed), as in the time
+     * loop (--validate writes nothing).  The exit code of a failure, or -1
+     * once set up.
+     */
+    int
+    setup_or_fail(fgimpact::Simulator         &simulator,
+                  const bool                   validate,
+                  const std::function<void()> &start_files,
+                  const bool                   root)
+    {
+      using namespace fgimpact;
+      try
+        {
+          const DeferredStopAction stop_in_solver_setup(
+            validate ? nullptr :
+                       stop_during_solver_setup(simulator, start_files));
+          simulator.setup();
+        }
+      catch (...)
+        {
+          return fail_before_run(
+            std::current_exception(), simulator, !validate, start_files, root);
+        }
+      return -1;
+    }
+
+
+
     int
     simulate(const fgimpact::CommandLine::Options &options,
              const fgimpact::Parameters           &parameters,
@@ -356,26 +388,10 @@ namespace fgimpact
                               !options.resume_directory.empty());
             });
           };
-          // Everything that can fail on bad input is checked before any file
-          // is written: setup() writes nothing.  A numerical failure of the
-          // valid input there (a factorization, a solver) is a failed run: the
-          // start files and summary.txt (status = failed), as in the time loop
-          // (--validate writes nothing).
-          try
-            {
-              const DeferredStopAction stop_in_solver_setup(
-                validate ? nullptr :
-                           stop_during_solver_setup(simulator, start_files));
-              simulator.setup();
-            }
-          catch (...)
-            {
-              return fail_before_run(std::current_exception(),
-                                     simulator,
-                                     !validate,
-                                     start_files,
-                                     root);
-            }
+          if (const int code =
+                setup_or_fail(simulator, validate, start_files, root);
+              code >= 0)
+            return code;
           if (validate)
             return report_valid(input_file, simulator, root);
           // An unusable directory is bad input (exit code 1, nothing written);

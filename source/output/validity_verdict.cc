@@ -97,6 +97,73 @@ namespace fgimpact
                              "");
       return {text, broken};
     }
+
+
+
+    /// The ceramic check's item, and whether it breaks.
+    std::pair<std::string, bool>
+    ceramic_validity(const ImpactResults &r)
+    {
+      const bool broken = r.tension_peak.ratio > 1.;
+      char       text[300];
+      std::snprintf(text,
+                    sizeof(text),
+                    "intact ceramic (largest principal stress %.2f x the "
+                    "tensile strength%s)",
+                    r.tension_peak.ratio,
+                    broken ? ": cracking is not modelled" : "");
+      return {text, broken};
+    }
+
+
+
+    /// The rigid ball's item (its stiffening of Hertz's E* above the
+    /// elastic ball's), and whether it breaks.
+    std::pair<std::string, bool>
+    rigid_ball_validity(const ImpactResults &r)
+    {
+      // The stiffening that matters: 5 % in E* is 2 % in the peak force
+      // (F_max ~ E*^(2/5)).
+      constexpr double rigid_ball_limit = 0.05;
+      const bool       broken = r.rigid_ball_modulus_excess > rigid_ball_limit;
+      char             text[300];
+      std::snprintf(text,
+                    sizeof(text),
+                    "rigid ball (E* %.1f %% above the elastic ball's%s)",
+                    100. * r.rigid_ball_modulus_excess,
+                    broken ? ": set Impactor/Material to elastic" : "");
+      return {text, broken};
+    }
+
+
+
+    /// The small-strain item (with a plastic run's largest equivalent
+    /// plastic strain), and whether it breaks.
+    std::pair<std::string, bool>
+    strain_validity(const ImpactResults &r)
+    {
+      bool small_strains = true;
+      for (const auto &w : r.warnings)
+        small_strains =
+          small_strains && w.find("small-strain") == std::string::npos;
+      // Small-strain plasticity: J2 on infinitesimal strains holds to a
+      // few per cent of plastic strain.
+      constexpr double plastic_strain_limit = 0.05;
+      small_strains =
+        small_strains && !(r.plastic.modelled &&
+                           r.plastic.max_plastic_strain > plastic_strain_limit);
+      if (!r.plastic.modelled)
+        return {"small strains", !small_strains};
+      // The number behind the verdict.
+      char text[300];
+      std::snprintf(text,
+                    sizeof(text),
+                    "small strains (largest equivalent plastic strain %.2f "
+                    "%% against %.0f %%)",
+                    100. * r.plastic.max_plastic_strain,
+                    100. * plastic_strain_limit);
+      return {text, !small_strains};
+    }
   } // namespace
 
 
@@ -104,68 +171,23 @@ namespace fgimpact
   std::string
   validity_text(const ImpactResults &r)
   {
-    // The rigid ball's stiffening that matters: 5 % in E* is 2 % in the
-    // peak force (F_max ~ E*^(2/5)).
-    constexpr double rigid_ball_limit = 0.05;
     if (!std::isfinite(r.yield_peak.ratio) &&
         !std::isfinite(r.tension_peak.ratio) &&
         !std::isfinite(r.rigid_ball_modulus_excess))
       return "not checked";
     std::string breaks, holds;
-    const auto  add = [](std::string &list, const std::string &item) {
-      list += (list.empty() ? "" : "; ") + item;
+    const auto  add = [&](const std::pair<std::string, bool> &item) {
+      std::string &list = item.second ? breaks : holds;
+      list += (list.empty() ? "" : "; ") + item.first;
     };
-    char text[300];
     if (std::isfinite(r.yield_peak.ratio))
-      {
-        const auto [item, broken] = metal_validity(r);
-        add(broken ? breaks : holds, item);
-      }
+      add(metal_validity(r));
     if (std::isfinite(r.tension_peak.ratio))
-      {
-        std::snprintf(text,
-                      sizeof(text),
-                      "intact ceramic (largest principal stress %.2f x the "
-                      "tensile strength%s)",
-                      r.tension_peak.ratio,
-                      r.tension_peak.ratio > 1. ? ": cracking is not modelled" :
-                                                  "");
-        add(r.tension_peak.ratio > 1. ? breaks : holds, text);
-      }
+      add(ceramic_validity(r));
     if (std::isfinite(r.rigid_ball_modulus_excess) &&
         r.rigid_ball_modulus_excess > 0.)
-      {
-        const bool broken = r.rigid_ball_modulus_excess > rigid_ball_limit;
-        std::snprintf(text,
-                      sizeof(text),
-                      "rigid ball (E* %.1f %% above the elastic ball's%s)",
-                      100. * r.rigid_ball_modulus_excess,
-                      broken ? ": set Impactor/Material to elastic" : "");
-        add(broken ? breaks : holds, text);
-      }
-    bool small_strains = true;
-    for (const auto &w : r.warnings)
-      small_strains =
-        small_strains && w.find("small-strain") == std::string::npos;
-    // Small-strain plasticity: J2 on infinitesimal strains holds to a few
-    // per cent of plastic strain.
-    constexpr double plastic_strain_limit = 0.05;
-    small_strains =
-      small_strains && !(r.plastic.modelled &&
-                         r.plastic.max_plastic_strain > plastic_strain_limit);
-    if (r.plastic.modelled)
-      {
-        // The number behind the verdict.
-        std::snprintf(text,
-                      sizeof(text),
-                      "small strains (largest equivalent plastic strain "
-                      "%.2f %% against %.0f %%)",
-                      100. * r.plastic.max_plastic_strain,
-                      100. * plastic_strain_limit);
-        add(small_strains ? holds : breaks, text);
-      }
-    else
-      add(small_strains ? holds : breaks, "small strains");
+      add(rigid_ball_validity(r));
+    add(strain_validity(r));
     // No commas: study.csv holds this text as it is.
     return "breaks: " + (breaks.empty() ? std::string("none") : breaks) +
            " | holds: " + (holds.empty() ? std::string("none") : holds) +

@@ -86,7 +86,7 @@ namespace fgimpact
     std::array<double, n_sources> parts = {
       {coarser_error(levels), coarser_error(plane), coarser_error(thick), 0.}};
     for (double &part : parts)
-      part /= std::abs(value);
+      part *= safety_factor / std::abs(value);
     if (!final_run)
       {
         const auto last  = last_time_part.find(q.key);
@@ -102,7 +102,8 @@ namespace fgimpact
           mesh_name(run.base) == mesh_name(final_run->base) &&
           std::abs(run.time_step / final_run->time_step - 2.) < 1e-9)
         reference = q.value(run.results);
-    parts[time_step] = std::abs(value - reference) / 3. / std::abs(value);
+    parts[time_step] =
+      safety_factor * std::abs(value - reference) / 3. / std::abs(value);
     return parts;
   }
 

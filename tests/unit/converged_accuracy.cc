@@ -5,7 +5,7 @@
 //      before it (coarser_error: the final run's); a sequence whose
 //      changes grow, or shrink with an observed order below 1/2, falls
 //      back to the last change;
-//  (2) a whole run (hertz midplane, 10 x 6 x 2 plate, tolerance 3 %),
+//  (2) a whole run (hertz midplane, 10 x 6 x 2 plate, tolerance 4 %),
 //      read back from its files: convergence.csv's rows against each
 //      run's summary.txt (convergence/level_L, convergence/base_M_level_L)
 //      and the final summary.txt; the contact levels stop at the first
@@ -24,9 +24,12 @@
 //      from convergence.csv, add up to at most the tolerance;
 //  (3) the estimates against the actual error, on meshes the run never
 //      used: the final numbers against a run with the final base mesh
-//      doubled in every direction, one contact level more and half the
-//      final time step; every steering number's actual error below its
-//      estimate;
+//      refined twice in every direction (4 x), two contact levels more
+//      and half the final time step; every steering number's actual error
+//      below its estimate (the estimates include ConvergedRun's factor of
+//      safety 1.25: without it, the peak force's 0.37 % was below its
+//      actual 0.38 %; a reference refined once, 40 x 24 x 8, was itself
+//      0.94 % off the mid-plane deflection and hid that);
 //  (4) a tolerance a number cannot reach within the 16-fold refinement
 //      of the base mesh is refused as soon as its changes show it.
 
@@ -184,21 +187,25 @@ namespace fgimpact_unit_tests::converged_accuracy
       fgimpact_tests::remove_output("out");
       fgimpact_tests::run_quietly(
         "",
-        scene + "subsection Geometry\n set Contact refinement levels = " +
-          std::to_string(at("contact_refinement_levels") + 1) +
+        // The quarter plate the scene allows (run_quietly() models the
+        // whole one): the same numbers at a quarter of the cost.
+        scene +
+          "subsection Geometry\n set Symmetry = auto\n"
+          " set Contact refinement levels = " +
+          std::to_string(at("contact_refinement_levels") + 2) +
           "\n set Subdivisions x = " +
-          std::to_string(2 * at("subdivisions_x")) +
+          std::to_string(4 * at("subdivisions_x")) +
           "\n set Subdivisions y = " +
-          std::to_string(2 * at("subdivisions_y")) +
+          std::to_string(4 * at("subdivisions_y")) +
           "\n set Subdivisions z = " +
-          std::to_string(2 * at("subdivisions_z")) +
+          std::to_string(4 * at("subdivisions_z")) +
           "\nend\nsubsection Time integration\n set Time step = " +
           Utilities::to_string(dt / 2.) + "\nend\n");
       std::printf("(3) reference: %dx%dx%d, level %d, dt %.2f us\n",
-                  2 * at("subdivisions_x"),
-                  2 * at("subdivisions_y"),
-                  2 * at("subdivisions_z"),
-                  at("contact_refinement_levels") + 1,
+                  4 * at("subdivisions_x"),
+                  4 * at("subdivisions_y"),
+                  4 * at("subdivisions_z"),
+                  at("contact_refinement_levels") + 2,
                   dt / 2. * 1e6);
       const auto reference = fgimpact_tests::read_summary("out/summary.txt");
       for (const auto &q : numbers)
@@ -284,14 +291,15 @@ namespace fgimpact_unit_tests::converged_accuracy
     bool                             ok = part_one();
 
     // (2) The whole run, read back from its files.
-    // 3 %: the first chains' estimates add up to 6.0 %, and the control
-    // refines in plane and through the thickness once each (at 1 % its
-    // final mesh, 80 x 48 x 8, would make (3)'s reference 160 x 96 x 16).
-    const double tolerance = 3e-2;
+    // 4 %: the first chains' estimates add up to 7.5 %, and the control
+    // refines in plane and through the thickness once each; the final
+    // mesh is 20 x 12 x 4 (at 3 % the control goes on to 80 x 48 x 8,
+    // which would make (3)'s reference 320 x 192 x 32).
+    const double tolerance = 4e-2;
     fgimpact_tests::remove_output("out");
     fgimpact_tests::run_quietly("",
                                 scene + "set Accuracy = converged\n"
-                                        "set Accuracy tolerance = 0.03\n");
+                                        "set Accuracy tolerance = 0.04\n");
     const auto [header, rows] = read_csv("out/convergence.csv");
     const auto column         = [&](const std::string &name) {
       return std::find(header.begin(), header.end(), name) - header.begin();
@@ -368,11 +376,11 @@ namespace fgimpact_unit_tests::converged_accuracy
     // tolerance (the tolerance, or less where the control of the sum
     // refined it further); the three chains start from the final run's
     // mesh and level.
-    const std::pair<const std::vector<std::size_t> *, std::string> chains[] =
-      {{&search, ""},
-       {&levels, "contact_levels"},
-       {&plane, "base_mesh_in_plane"},
-       {&thick, "base_mesh_thickness"}};
+    const std::pair<const std::vector<std::size_t> *, std::string> chains[] = {
+      {&search, ""},
+      {&levels, "contact_levels"},
+      {&plane, "base_mesh_in_plane"},
+      {&thick, "base_mesh_thickness"}};
     bool        stops_first = true;
     std::string tightened;
     for (const auto &[chain, source] : chains)
@@ -409,7 +417,8 @@ namespace fgimpact_unit_tests::converged_accuracy
       std::abs(f[column("time_step_us")] / dt_final - 1.) < 1e-6;
     // The estimates, recomputed from the CSV: for each chain the difference
     // of its last pair plus the finer one's error (Richardson with p >= 1/2
-    // over the last three, or the last change); |q(dt/2) - q(dt)| / 3.
+    // over the last three, or the last change); |q(dt/2) - q(dt)| / 3;
+    // each times the factor of safety.
     const auto error_of_last = [](const std::vector<double> &v) {
       const std::size_t k  = v.size() - 1;
       const double      d2 = v[k] - v[k - 1];
@@ -439,12 +448,13 @@ namespace fgimpact_unit_tests::converged_accuracy
         };
         const auto   c = values(levels), p = values(plane), t = values(thick);
         const double half     = f[column(q.column)];
+        const double fs       = ConvergedRun::safety_factor;
         const double parts[4] = {
-          coarser(c),
-          coarser(p),
-          coarser(t),
-          std::abs(half - rows[time_reference][column(q.column)]) / 3.};
-        double       total    = 0;
+          fs * coarser(c),
+          fs * coarser(p),
+          fs * coarser(t),
+          fs * std::abs(half - rows[time_reference][column(q.column)]) / 3.};
+        double total = 0;
         for (unsigned int s = 0; s < 4; ++s)
           {
             const double e = parts[s] / std::abs(half);

@@ -175,6 +175,15 @@ namespace fgimpact
     void
     open_monitor(CheckpointReader *resume);
 
+    /// run()'s loop: the initial (or resumed) output, the steps, a
+    /// signal's checkpoint (its failure into checkpoint_failure), the
+    /// files closed; the stop agreed over the ranks (> 0: a signal, < 0: a
+    /// failed output, 0: the end).
+    int
+    run_and_close(const CheckpointReader *resume,
+                  unsigned int           &steps_done,
+                  std::string            &checkpoint_failure);
+
     /// After a failure in the time loop: summary.txt with status = failed
     /// (best effort: errors here are swallowed, the first one counts).
     void
