@@ -203,12 +203,12 @@ check "energy's data: the stacked areas are history.csv's energies, the top the 
 
 # scripts/plot_convergence.py on a small Accuracy = converged run (hertz
 # midplane, 10 x 6 x 2, no probes: the mid-plane probe under its point
-# force does not converge in plane).  At 3 %: since the sum of the
-# estimates is controlled, 1 % refines this whole plate to 80 x 48 x 8 and
-# beyond (minutes); 3 % still refines in plane and through the thickness.
+# force does not converge in plane).  At 4 %: with the estimates' factor of
+# safety, 3 % refines this whole plate to 80 x 48 x 8 (minutes); 4 % still
+# refines in plane and through the thickness.
 "$build/fgimpact" tests/run/default_small.prm -s "Output/Directory=$work/conv" \
   -s "Contact/Model=hertz midplane" -s "Accuracy=converged" \
-  -s "Accuracy tolerance=0.03" -s "Output/Probe points=" \
+  -s "Accuracy tolerance=0.04" -s "Output/Probe points=" \
   -s "Output/VTU interval=0" -s "Output/Log interval=0" \
   -s "Output/Print timing=false" >/dev/null
 figure=$("$python" scripts/plot_convergence.py --format svg "$work/conv")
