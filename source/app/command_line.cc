@@ -86,71 +86,81 @@ namespace fgimpact
 
 
 
+    namespace
+    {
+      /// An error in the command line: Action::error with its message;
+      /// false (parse() stops).
+      bool
+      refuse(Options &options, const std::string &error)
+      {
+        options.action = Action::error;
+        options.error  = error;
+        return false;
+      }
+
+      /// Argument i (and the next one, for an option that takes it) into
+      /// options; whether parse() goes on.  --help, --version and
+      /// --print-parameters win over the rest.
+      bool
+      parse_argument(int               &i,
+                     const int          argc,
+                     const char *const *argv,
+                     Options           &options)
+      {
+        const std::string arg = argv[i];
+        if (arg == "-h" || arg == "--help")
+          options.action = Action::help;
+        else if (arg == "--version")
+          options.action = Action::version;
+        else if (arg == "-p" || arg == "--print-parameters")
+          options.action = Action::print_parameters;
+        else if (takes_argument(arg))
+          {
+            if (i + 1 == argc)
+              return refuse(options,
+                            "option '" + arg + "' needs " +
+                              argument_description(arg));
+            if (!take_argument(arg, argv[++i], options))
+              return false;
+          }
+        else if (arg == "--validate")
+          {
+            if (options.action == Action::run)
+              options.action = Action::validate;
+          }
+        else if (arg.size() > 1 && arg[0] == '-')
+          return refuse(options, "unknown option '" + arg + "'");
+        else if (options.prm_file.empty())
+          options.prm_file = arg;
+        else
+          return refuse(options,
+                        "more than one parameter file given ('" +
+                          options.prm_file + "', '" + arg + "')");
+        return options.action != Action::help &&
+               options.action != Action::version &&
+               options.action != Action::print_parameters;
+      }
+    } // namespace
+
+
+
     Options
     parse(const int argc, const char *const *argv)
     {
       Options options;
       if (argc < 2)
         {
-          options.action     = Action::error;
-          options.error      = "no parameter file given";
+          refuse(options, "no parameter file given");
           options.show_usage = true;
           return options;
         }
       for (int i = 1; i < argc; ++i)
-        {
-          const std::string arg = argv[i];
-          if (arg == "-h" || arg == "--help")
-            options.action = Action::help;
-          else if (arg == "--version")
-            options.action = Action::version;
-          else if (arg == "-p" || arg == "--print-parameters")
-            options.action = Action::print_parameters;
-          else if (takes_argument(arg))
-            {
-              if (i + 1 == argc)
-                {
-                  options.action = Action::error;
-                  options.error =
-                    "option '" + arg + "' needs " + argument_description(arg);
-                  return options;
-                }
-              if (!take_argument(arg, argv[++i], options))
-                return options;
-            }
-          else if (arg == "--validate")
-            {
-              if (options.action == Action::run)
-                options.action = Action::validate;
-            }
-          else if (arg.size() > 1 && arg[0] == '-')
-            {
-              options.action = Action::error;
-              options.error  = "unknown option '" + arg + "'";
-              return options;
-            }
-          else if (options.prm_file.empty())
-            options.prm_file = arg;
-          else
-            {
-              options.action = Action::error;
-              options.error  = "more than one parameter file given ('" +
-                              options.prm_file + "', '" + arg + "')";
-              return options;
-            }
-          // --help, --version and --print-parameters win over the rest.
-          if (options.action == Action::help ||
-              options.action == Action::version ||
-              options.action == Action::print_parameters)
-            return options;
-        }
+        if (!parse_argument(i, argc, argv, options))
+          return options;
       if (!options.resume_directory.empty() && !resume_input(options))
         return options;
       if (options.prm_file.empty())
-        {
-          options.action = Action::error;
-          options.error  = "no parameter file given";
-        }
+        refuse(options, "no parameter file given");
       return options;
     }
 

@@ -355,6 +355,31 @@ namespace fgimpact
 
 
 
+    /// Checkpoints store the parameters; a resume refuses changed ones
+    /// (bad input throws).  On a resume accepted, parameters.prm is
+    /// written (prm and parameters must outlive the run).
+    fgimpact::CheckpointSettings
+    resume_settings(const fgimpact::CommandLine::Options &options,
+                    const dealii::ParameterHandler       &prm,
+                    const fgimpact::Parameters           &parameters)
+    {
+      using namespace fgimpact;
+      AssertThrow(options.resume_directory.empty() ||
+                    parameters.accuracy.preset !=
+                      AccuracyPreset::Preset::converged,
+                  ExcMessage("--resume: an Accuracy = converged run is a "
+                             "sequence of runs and cannot be resumed; "
+                             "run it again."));
+      CheckpointSettings checkpoint = checkpoint_settings(options, prm);
+      checkpoint.on_resume_accepted = [&prm, &parameters]() {
+        run_on_root(MPI_COMM_WORLD,
+                    [&]() { write_parameters_file(parameters.output, prm); });
+      };
+      return checkpoint;
+    }
+
+
+
     int
     simulate(const fgimpact::CommandLine::Options &options,
              const fgimpact::Parameters           &parameters,
@@ -483,21 +508,10 @@ namespace fgimpact
                        CommandLine::provenance(argc, argv, n_ranks),
                        logger);
 
-    // Checkpoints store the parameters; a resume refuses changed ones.
     CheckpointSettings checkpoint;
     try
       {
-        AssertThrow(options.resume_directory.empty() ||
-                      parameters.accuracy.preset !=
-                        AccuracyPreset::Preset::converged,
-                    ExcMessage("--resume: an Accuracy = converged run is a "
-                               "sequence of runs and cannot be resumed; "
-                               "run it again."));
-        checkpoint                    = checkpoint_settings(options, prm);
-        checkpoint.on_resume_accepted = [&]() {
-          run_on_root(MPI_COMM_WORLD,
-                      [&]() { write_parameters_file(parameters.output, prm); });
-        };
+        checkpoint = resume_settings(options, prm, parameters);
       }
     catch (...)
       {

@@ -410,6 +410,44 @@ namespace fgimpact
                 << " (study.csv; figures: scripts/plot_study.py "
                 << output.directory << "/study.csv)\n";
     }
+
+
+    /// The study's cases, each checked to fit the memory, and the base
+    /// case's parameters into `base` (bad input throws).  --study-case
+    /// (`only_case` >= 0) writes the case's VTU.
+    std::vector<ParsedCase>
+    read_cases(const StudyParameters          &study,
+               const InputFile                &input,
+               const std::vector<std::string> &overrides,
+               const int                       only_case,
+               Parameters                     &base)
+    {
+      ParameterHandler prm;
+      read_run_parameters(input, overrides, prm, base);
+      StudyParameters rerun = study;
+      rerun.write_vtu       = rerun.write_vtu || only_case >= 0;
+      std::vector<ParsedCase> cases =
+        parse_cases(rerun, input, overrides, base.output.directory);
+      AssertThrow(only_case < static_cast<int>(cases.size()),
+                  ExcMessage("--study-case " + std::to_string(only_case) +
+                             ": the study has " + std::to_string(cases.size()) +
+                             " cases"));
+      check_cases_fit(cases);
+      return cases;
+    }
+
+
+    /// --study-case: case `c` alone by the time loop, into its directory.
+    int
+    run_one_case(const ParsedCase &c, const InputFile &input, const bool root)
+    {
+      SummaryEntries summary;
+      run_time_loop(c, input, summary);
+      if (root)
+        std::cout << "fgimpact: results in " << c.parameters.output.directory
+                  << '\n';
+      return 0;
+    }
   } // namespace
 
 
@@ -428,16 +466,7 @@ namespace fgimpact
     Parameters              base;
     try
       {
-        ParameterHandler prm;
-        read_run_parameters(input, overrides, prm, base);
-        StudyParameters rerun = study;
-        rerun.write_vtu       = rerun.write_vtu || only_case >= 0;
-        cases = parse_cases(rerun, input, overrides, base.output.directory);
-        AssertThrow(only_case < static_cast<int>(cases.size()),
-                    ExcMessage("--study-case " + std::to_string(only_case) +
-                               ": the study has " +
-                               std::to_string(cases.size()) + " cases"));
-        check_cases_fit(cases);
+        cases = read_cases(study, input, overrides, only_case, base);
       }
     catch (...)
       {
@@ -450,14 +479,7 @@ namespace fgimpact
     try
       {
         if (only_case >= 0)
-          {
-            SummaryEntries summary;
-            run_time_loop(cases[only_case], input, summary);
-            if (root)
-              std::cout << "fgimpact: results in "
-                        << cases[only_case].parameters.output.directory << '\n';
-            return 0;
-          }
+          return run_one_case(cases[only_case], input, root);
         if (const int code = prepare_study_directory(base.output, root))
           return code;
         run_on_root(MPI_COMM_WORLD, [&]() {

@@ -116,6 +116,44 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// Study entry i split into its path and its values, checked against
+    /// the paths before it (bad input throws, naming the entry).
+    std::pair<std::string, std::vector<std::string>>
+    split_study_entry(const StudyParameters          &study,
+                      const std::size_t               i,
+                      const std::vector<std::string> &paths)
+    {
+      const std::string &entry = study.entries[i];
+      const std::string  where = study.origin(i) + ": '";
+      const auto         eq    = entry.find('=');
+      AssertThrow(eq != std::string::npos && eq > 0,
+                  ExcMessage(where + entry +
+                             "' is not 'Section/Entry = v1, v2, ...'"));
+      const std::string path = Utilities::trim(entry.substr(0, eq));
+      AssertThrow(std::find(paths.begin(), paths.end(), path) == paths.end(),
+                  ExcMessage(where + path +
+                             "' is listed twice (the second list would "
+                             "replace the first); give it once."));
+      // Each case writes into Output/Directory/case_NNN of the study's own
+      // directory: a varied directory would be overridden silently.
+      AssertThrow(path != "Output/Directory" && path != "Study/Entries",
+                  ExcMessage(where + path +
+                             "' cannot vary in a study: each case writes "
+                             "into case_NNN of the study's Output/Directory "
+                             "(run separate studies for separate "
+                             "directories)."));
+      const std::vector<std::string> list =
+        Utilities::split_string_list(entry.substr(eq + 1), ',');
+      AssertThrow(!list.empty() && !path.empty(),
+                  ExcMessage(where + entry + "' has no values"));
+      return {path, list};
+    }
+  } // namespace
+
+
+
   std::vector<StudyCase>
   expand_study(const StudyParameters &study)
   {
@@ -124,31 +162,10 @@ namespace fgimpact
     std::vector<std::vector<std::string>> lists;
     for (std::size_t i = 0; i < study.entries.size(); ++i)
       {
-        const std::string &entry = study.entries[i];
-        const std::string  where = study.origin(i) + ": '";
-        const auto         eq    = entry.find('=');
-        AssertThrow(eq != std::string::npos && eq > 0,
-                    ExcMessage(where + entry +
-                               "' is not 'Section/Entry = v1, v2, ...'"));
-        const std::string path = Utilities::trim(entry.substr(0, eq));
-        AssertThrow(std::find(paths.begin(), paths.end(), path) == paths.end(),
-                    ExcMessage(where + path +
-                               "' is listed twice (the second list would "
-                               "replace the first); give it once."));
-        // Each case writes into Output/Directory/case_NNN of the study's
-        // own directory: a varied directory would be overridden silently.
-        AssertThrow(path != "Output/Directory" && path != "Study/Entries",
-                    ExcMessage(where + path +
-                               "' cannot vary in a study: each case writes "
-                               "into case_NNN of the study's Output/Directory "
-                               "(run separate studies for separate "
-                               "directories)."));
+        auto [path, list] = split_study_entry(study, i, paths);
         paths.push_back(path);
         origins.push_back(study.origin(i));
-        lists.push_back(
-          Utilities::split_string_list(entry.substr(eq + 1), ','));
-        AssertThrow(!lists.back().empty() && !paths.back().empty(),
-                    ExcMessage(where + entry + "' has no values"));
+        lists.push_back(list);
       }
     std::vector<StudyCase> cases;
     if (paths.empty())
