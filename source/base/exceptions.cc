@@ -84,68 +84,81 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// A failure's one line and exit code (`default_code` where its type
+    /// does not decide); whether it is a signal's interruption (its message
+    /// is printed without the caller's context).
+    struct FailureText
+    {
+      std::string text;
+      int         code;
+      bool        interrupted = false;
+    };
+
+    FailureText
+    failure_text(const std::exception_ptr &failure, const int default_code)
+    {
+      try
+        {
+          std::rethrow_exception(failure);
+        }
+      catch (const RunInterrupted &e)
+        {
+          return {e.message, 128 + e.signal, true};
+        }
+      catch (const SolverControl::NoConvergence &e)
+        {
+          // deal.II's text is several sentences; the caller did not say
+          // where, so name the parameters.
+          return {message_of(linear_solver_failure("", e.last_step)), 2};
+        }
+      catch (const ExcNumericalFailure &e)
+        {
+          return {message_of(e), 2};
+        }
+      catch (const ExcOutputFailure &e)
+        {
+          return {message_of(e), 2};
+        }
+      catch (const ExcResumeRefused &e)
+        {
+          return {message_of(e), 1};
+        }
+      catch (const ExceptionBase &e)
+        {
+          return {message_of(e), default_code};
+        }
+      catch (const std::bad_alloc &)
+        {
+          return {"out of memory (std::bad_alloc); use coarser Geometry/"
+                  "Subdivisions or more MPI ranks.",
+                  2};
+        }
+      catch (const std::exception &e)
+        {
+          return {one_line(e.what()), default_code};
+        }
+      catch (...)
+        {
+          return {"unknown exception.", default_code};
+        }
+    }
+  } // namespace
+
+
+
   int
   report_failure(const std::exception_ptr &failure,
                  const bool                root,
                  const int                 default_code,
                  const std::string        &context)
   {
-    std::string text;
-    std::string prefix = context + ": ";
-    int         code   = default_code;
-    try
-      {
-        std::rethrow_exception(failure);
-      }
-    catch (const RunInterrupted &e)
-      {
-        text   = e.message;
-        prefix = "";
-        code   = 128 + e.signal;
-      }
-    catch (const SolverControl::NoConvergence &e)
-      {
-        // deal.II's text is several sentences; the caller did not say
-        // where, so name the parameters.
-        text = message_of(linear_solver_failure("", e.last_step));
-        code = 2;
-      }
-    catch (const ExcNumericalFailure &e)
-      {
-        text = message_of(e);
-        code = 2;
-      }
-    catch (const ExcOutputFailure &e)
-      {
-        text = message_of(e);
-        code = 2;
-      }
-    catch (const ExcResumeRefused &e)
-      {
-        text = message_of(e);
-        code = 1;
-      }
-    catch (const ExceptionBase &e)
-      {
-        text = message_of(e);
-      }
-    catch (const std::bad_alloc &)
-      {
-        text = "out of memory (std::bad_alloc); use coarser Geometry/"
-               "Subdivisions or more MPI ranks.";
-        code = 2;
-      }
-    catch (const std::exception &e)
-      {
-        text = one_line(e.what());
-      }
-    catch (...)
-      {
-        text = "unknown exception.";
-      }
+    const FailureText f = failure_text(failure, default_code);
     if (root)
-      std::cerr << "fgimpact: " << prefix << text << std::endl;
-    return code;
+      std::cerr << "fgimpact: " << (f.interrupted ? "" : context + ": ")
+                << f.text << std::endl;
+    return f.code;
   }
 
 
