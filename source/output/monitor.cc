@@ -358,18 +358,48 @@ namespace fgimpact
 
 
 
-  void
-  ImpactMonitor::print_results() const
+  namespace
   {
-    const ImpactResults &r = impact_results;
-    // A quantity that does not exist is printed as "none".
-    const auto optional = [](const double value, const char *format) {
+    /// A quantity that may not exist, printed with `format` or as "none".
+    std::string
+    value_or_none(const double value, const char *format)
+    {
       char text[40] = "none";
       if (std::isfinite(value))
         std::snprintf(text, sizeof(text), format, value);
       return std::string(text);
-    };
-    char line[400];
+    }
+
+    /// The log's line of a plastic run's results.
+    std::string
+    plastic_line(const ImpactResults::Plastic &p)
+    {
+      char line[400];
+      std::snprintf(line,
+                    sizeof(line),
+                    "  plastic work %.6f J, crater %.4f um, largest "
+                    "equivalent plastic strain %.5f, first yield at %s us "
+                    "(%s N), restitution %s; plate iterations %.3f per "
+                    "step, at most %u\n",
+                    p.dissipation,
+                    p.permanent_indentation * 1e6,
+                    p.max_plastic_strain,
+                    value_or_none(p.first_yield_time * 1e6, "%.3f").c_str(),
+                    value_or_none(p.first_yield_force, "%.3f").c_str(),
+                    value_or_none(p.restitution, "%.5f").c_str(),
+                    p.mean_iterations,
+                    p.max_iterations);
+      return line;
+    }
+  } // namespace
+
+
+
+  void
+  ImpactMonitor::print_results() const
+  {
+    const ImpactResults &r = impact_results;
+    char                 line[400];
     std::snprintf(line,
                   sizeof(line),
                   "  peak force %.3f N at %.3f us; contact %s us; departure "
@@ -379,8 +409,8 @@ namespace fgimpact
                   "  energy drift %.3e\n",
                   r.peak_contact_force,
                   r.time_of_peak_force * 1e6,
-                  optional(r.contact_duration * 1e6, "%.3f").c_str(),
-                  optional(r.departure_velocity, "%.6f").c_str(),
+                  value_or_none(r.contact_duration * 1e6, "%.3f").c_str(),
+                  value_or_none(r.departure_velocity, "%.6f").c_str(),
                   contact_model.reports_contact_area() ?
                     "Hertz indentation (from the force)" :
                     "indentation",
@@ -391,24 +421,7 @@ namespace fgimpact
                   r.max_energy_drift);
     pcout << line;
     if (r.plastic.modelled)
-      {
-        const auto &p = r.plastic;
-        std::snprintf(line,
-                      sizeof(line),
-                      "  plastic work %.6f J, crater %.4f um, largest "
-                      "equivalent plastic strain %.5f, first yield at %s us "
-                      "(%s N), restitution %s; plate iterations %.3f per "
-                      "step, at most %u\n",
-                      p.dissipation,
-                      p.permanent_indentation * 1e6,
-                      p.max_plastic_strain,
-                      optional(p.first_yield_time * 1e6, "%.3f").c_str(),
-                      optional(p.first_yield_force, "%.3f").c_str(),
-                      optional(p.restitution, "%.5f").c_str(),
-                      p.mean_iterations,
-                      p.max_iterations);
-        pcout << line;
-      }
+      pcout << plastic_line(r.plastic);
     if (r.linear_iterations > 0)
       pcout << "  linear solver: " << r.linear_iterations
             << " iterations in all, at most " << r.max_linear_iterations
