@@ -269,6 +269,69 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// Any Lagrange element: |grad u| <= |D| gradient_bound with D_a =
+    /// max_s |u_sa - mean_s u_sa| (the shape functions sum to 1); |D| (m).
+    double
+    displacement_spread(const std::vector<double> &cell_u,
+                        const unsigned int         n_scalar)
+    {
+      double D2 = 0;
+      for (unsigned int a = 0; a < 3; ++a)
+        {
+          double mean = 0, D = 0;
+          for (unsigned int s = 0; s < n_scalar; ++s)
+            mean += cell_u[3 * s + a] / n_scalar;
+          for (unsigned int s = 0; s < n_scalar; ++s)
+            D = std::max(D, std::abs(cell_u[3 * s + a] - mean));
+          D2 += D * D;
+        }
+      return std::sqrt(D2);
+    }
+
+    /// Q1 on a brick of extents h (m), unit coordinates x^ in [-1, 1]^3,
+    /// vertex v = i + 2j + 4k at (2i - 1, 2j - 1, 2k - 1): u = sum of c_m
+    /// monomials, so du/dx = 2/dx (c_x + c_xy y^ + c_xz z^ + c_xyz y^ z^),
+    /// whose centre value G is exact and whose variation is at most 2/dx
+    /// (|c_xy| + |c_xz| + |c_xyz|); likewise in y and z.  variation2: the
+    /// sum of the squared variations.
+    void
+    q1_centre_gradient(const std::vector<double>   &cell_u,
+                       const std::array<double, 3> &h,
+                       double                       G[3][3],
+                       double                      &variation2)
+    {
+      for (unsigned int a = 0; a < 3; ++a)
+        {
+          double m[7] = {}; // x, y, z, xy, xz, yz, xyz
+          for (unsigned int v = 0; v < 8; ++v)
+            {
+              const double sx = (v & 1) ? 1. : -1., sy = (v & 2) ? 1. : -1.,
+                           sz = (v & 4) ? 1. : -1., u = cell_u[3 * v + a] / 8.;
+              m[0] += sx * u;
+              m[1] += sy * u;
+              m[2] += sz * u;
+              m[3] += sx * sy * u;
+              m[4] += sx * sz * u;
+              m[5] += sy * sz * u;
+              m[6] += sx * sy * sz * u;
+            }
+          const double var[3] = {
+            std::abs(m[3]) + std::abs(m[4]) + std::abs(m[6]),
+            std::abs(m[3]) + std::abs(m[5]) + std::abs(m[6]),
+            std::abs(m[4]) + std::abs(m[5]) + std::abs(m[6])};
+          for (unsigned int d = 0; d < 3; ++d)
+            {
+              G[a][d] = 2. / h[d] * m[d];
+              variation2 += std::pow(2. / h[d] * var[d], 2);
+            }
+        }
+    }
+  } // namespace
+
+
+
   bool
   StrengthCheck::can_skip(const unsigned int         c,
                           const std::vector<double> &cell_u) const
@@ -276,54 +339,13 @@ namespace fgimpact
     const CellFactors &f = factors[c];
     if (n_scalar != 8)
       {
-        // Any Lagrange element: |grad u| <= |D| gradient_bound with
-        // D_a = max_s |u_sa - mean_s u_sa| (the shape functions sum to 1).
-        double D2 = 0;
-        for (unsigned int a = 0; a < 3; ++a)
-          {
-            double mean = 0, D = 0;
-            for (unsigned int s = 0; s < n_scalar; ++s)
-              mean += cell_u[3 * s + a] / n_scalar;
-            for (unsigned int s = 0; s < n_scalar; ++s)
-              D = std::max(D, std::abs(cell_u[3 * s + a] - mean));
-            D2 += D * D;
-          }
-        const double bound = std::sqrt(D2) * gradient_bound[table[c]];
+        const double bound =
+          displacement_spread(cell_u, n_scalar) * gradient_bound[table[c]];
         return bound * f.metal <= metal_local.ratio &&
                bound * f.ceramic_norm <= ceramic_local.ratio;
       }
-    // Q1 on a brick, unit coordinates x^ in [-1, 1]^3, vertex v = i + 2j +
-    // 4k at (2i - 1, 2j - 1, 2k - 1): u = sum of c_m monomials, so
-    // du/dx = 2/dx (c_x + c_xy y^ + c_xz z^ + c_xyz y^ z^), whose centre
-    // value is exact and whose variation is at most 2/dx (|c_xy| + |c_xz|
-    // + |c_xyz|); likewise in y and z.
-    const auto &h = extents[table[c]];
-    double      G[3][3], variation2 = 0;
-    for (unsigned int a = 0; a < 3; ++a)
-      {
-        double m[7] = {}; // x, y, z, xy, xz, yz, xyz
-        for (unsigned int v = 0; v < 8; ++v)
-          {
-            const double sx = (v & 1) ? 1. : -1., sy = (v & 2) ? 1. : -1.,
-                         sz = (v & 4) ? 1. : -1., u = cell_u[3 * v + a] / 8.;
-            m[0] += sx * u;
-            m[1] += sy * u;
-            m[2] += sz * u;
-            m[3] += sx * sy * u;
-            m[4] += sx * sz * u;
-            m[5] += sy * sz * u;
-            m[6] += sx * sy * sz * u;
-          }
-        const double var[3] = {std::abs(m[3]) + std::abs(m[4]) + std::abs(m[6]),
-                               std::abs(m[3]) + std::abs(m[5]) + std::abs(m[6]),
-                               std::abs(m[4]) + std::abs(m[5]) +
-                                 std::abs(m[6])};
-        for (unsigned int d = 0; d < 3; ++d)
-          {
-            G[a][d] = 2. / h[d] * m[d];
-            variation2 += std::pow(2. / h[d] * var[d], 2);
-          }
-      }
+    double G[3][3], variation2 = 0;
+    q1_centre_gradient(cell_u, extents[table[c]], G, variation2);
     const double tr   = G[0][0] + G[1][1] + G[2][2];
     double       dev2 = 0;
     for (unsigned int a = 0; a < 3; ++a)

@@ -88,8 +88,9 @@ namespace fgimpact
                       "Accuracy = converged: the bound on each headline "
                       "number's relative error estimate, the sum of its "
                       "contact levels', base mesh's (in plane, through the "
-                      "thickness) and time step's. Dimensionless (0.01 = "
-                      "1 %).");
+                      "thickness) and time step's, each times a factor of "
+                      "safety of 1.25 (Roache's grid convergence index). "
+                      "Dimensionless (0.01 = 1 %).");
   }
 
 
