@@ -70,6 +70,42 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The indices j with active[j], ascending.
+    std::vector<unsigned int>
+    indices_of(const std::vector<bool> &active)
+    {
+      std::vector<unsigned int> set;
+      for (unsigned int j = 0; j < active.size(); ++j)
+        if (active[j])
+          set.push_back(j);
+      return set;
+    }
+
+    /// The semismooth Newton update of the active set (c = 1 in consistent
+    /// units is irrelevant: on the set g = 0, off it lambda = 0); whether
+    /// it changed.
+    bool
+    update_active_set(const Vector<double> &lambda,
+                      const Vector<double> &g,
+                      std::vector<bool>    &active)
+    {
+      bool changed = false;
+      for (unsigned int j = 0; j < active.size(); ++j)
+        {
+          const bool now = active[j] ? (lambda[j] > 0.) : (g[j] < 0.);
+          // A node that left with lambda < 0 is at g > 0 next time; a node
+          // with g exactly 0 and lambda exactly 0 stays where it is.
+          changed   = changed || now != active[j];
+          active[j] = now;
+        }
+      return changed;
+    }
+  } // namespace
+
+
+
   LcpStatistics
   solve_lcp(const FullMatrix<double> &A,
             const Vector<double>     &q,
@@ -96,10 +132,7 @@ namespace fgimpact
     bool           converged = false;
     for (unsigned int it = 1; it <= max_iterations && !converged; ++it)
       {
-        std::vector<unsigned int> set;
-        for (unsigned int j = 0; j < m; ++j)
-          if (active[j])
-            set.push_back(j);
+        const std::vector<unsigned int> set = indices_of(active);
         if (!set.empty())
           require(set.back() + 1);
         solve_active_block(A, q, set, lambda);
@@ -107,18 +140,7 @@ namespace fgimpact
         g += q;
         statistics.iterations = it;
 
-        // The semismooth Newton update of the set (c = 1 in consistent
-        // units is irrelevant: on the set g = 0, off it lambda = 0).
-        converged = true;
-        for (unsigned int j = 0; j < m; ++j)
-          {
-            const bool now = active[j] ? (lambda[j] > 0.) : (g[j] < 0.);
-            // A node that left with lambda < 0 is at g > 0 next time; a
-            // node with g exactly 0 and lambda exactly 0 stays where it is.
-            if (now != active[j])
-              converged = false;
-            active[j] = now;
-          }
+        converged = !update_active_set(lambda, g, active);
       }
 
     if (!converged)
