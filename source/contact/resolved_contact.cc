@@ -321,9 +321,22 @@ namespace fgimpact
     state.residual_penetration = statistics.penetration;
     state.forces.assign(lambda.begin(), lambda.end());
     state.force = std::accumulate(lambda.begin(), lambda.end(), 0.);
+    describe_solution(A, q, lambda, u_free, C, state);
+  }
 
+
+
+  void
+  ResolvedSphereContact::describe_solution(const FullMatrix<double> &A,
+                                           const Vector<double>     &q,
+                                           const Vector<double>     &lambda,
+                                           const Vector<double>     &u_free,
+                                           const FullMatrix<double> &C,
+                                           ContactState &state) const
+  {
     // Gaps and the contact's extent.
-    Vector<double> g(m);
+    const unsigned int m = lambda.size();
+    Vector<double>     g(m);
     A.vmult(g, lambda);
     g += q;
     const double smallest_gap = describe_extent(lambda, g, state);

@@ -228,6 +228,16 @@ namespace fgimpact
     describe_extent(const Vector<double> &lambda,
                     const Vector<double> &g,
                     ContactState         &state) const;
+    /// After the LCP A lambda + q >= 0: the gaps, the contact's extent,
+    /// the displacement of the first candidate (u_free - C lambda, m) and
+    /// the indentation column into state.
+    void
+    describe_solution(const FullMatrix<double> &A,
+                      const Vector<double>     &q,
+                      const Vector<double>     &lambda,
+                      const Vector<double>     &u_free,
+                      const FullMatrix<double> &C,
+                      ContactState             &state) const;
 
     const PlateModel                            &plate;
     const Point<2>                               impact_point;
