@@ -281,6 +281,60 @@ namespace fgimpact
            << ".";
       AssertThrow(false, ExcMessage(text.str()));
     }
+
+
+    /// The time step, the time span, Newmark's stability and the scheme
+    /// the contact model needs (bad input throws, naming the entry).
+    void
+    check_time_integration(const Parameters &p)
+    {
+      const TimeStepper::Parameters &ti = p.time_integration;
+      const bool                     explicit_scheme =
+        (ti.scheme == TimeStepper::Scheme::central_difference);
+      AssertThrow(ti.time_step > 0 || explicit_scheme,
+                  ExcMessage("Time integration/Time step = 0 (automatic) is "
+                             "only available with Scheme = explicit."));
+      check_time_span(ti, p.output.snapshot_times);
+      // Unconditional stability of Newmark: 2 beta >= gamma >= 1/2.
+      AssertThrow(
+        explicit_scheme || (2. * ti.newmark.beta >= ti.newmark.gamma - 1e-14 &&
+                            ti.newmark.gamma >= 0.5 - 1e-14),
+        ExcMessage(
+          "Time integration/Newmark beta = " + std::to_string(ti.newmark.beta) +
+          " with Newmark gamma = " + std::to_string(ti.newmark.gamma) +
+          " is not unconditionally stable: that needs 2 "
+          "beta >= gamma >= 1/2 (beta = 1/4, gamma = 1/2 is "
+          "the default)."));
+      AssertThrow(!(explicit_scheme &&
+                    p.contact_model.model ==
+                      ContactModelParameters::Model::resolved_sphere),
+                  ExcMessage("Contact/Model = resolved sphere needs Time "
+                             "integration/Scheme = implicit: its contact is "
+                             "rigid, which no explicit step is stable for."));
+    }
+
+
+
+    /// Output/Directory not empty; it and Material/Profile file without
+    /// '#': parameters.prm must read back as the run was, and '#' starts
+    /// a comment there (the directory would change, and its cleaning with
+    /// it).
+    void
+    check_paths(const Parameters &p)
+    {
+      AssertThrow(p.output.directory.find_first_not_of(" \t") !=
+                    std::string::npos,
+                  ExcMessage("Output/Directory is empty."));
+      for (const auto &[entry, value] :
+           {std::pair<std::string, std::string>{"Output/Directory",
+                                                p.output.directory},
+            {"Material/Profile file", p.material.profile_file}})
+        AssertThrow(value.find('#') == std::string::npos,
+                    ExcMessage(entry + " '" + value +
+                               "' holds '#', which starts a comment in the "
+                               "parameters.prm the run writes (reading it "
+                               "back would give another path); rename it."));
+    }
   } // namespace
 
   void
@@ -348,44 +402,10 @@ namespace fgimpact
                 ExcMessage("Impactor/Impact point y = " + std::to_string(p[1]) +
                            " m lies outside the open interval (0, b = " +
                            std::to_string(b) + " m)."));
-    const TimeStepper::Parameters &ti = time_integration;
-    const bool                     explicit_scheme =
-      (ti.scheme == TimeStepper::Scheme::central_difference);
-    AssertThrow(ti.time_step > 0 || explicit_scheme,
-                ExcMessage("Time integration/Time step = 0 (automatic) is "
-                           "only available with Scheme = explicit."));
-    check_time_span(ti, output.snapshot_times);
-    // Unconditional stability of Newmark: 2 beta >= gamma >= 1/2.
-    AssertThrow(
-      explicit_scheme || (2. * ti.newmark.beta >= ti.newmark.gamma - 1e-14 &&
-                          ti.newmark.gamma >= 0.5 - 1e-14),
-      ExcMessage(
-        "Time integration/Newmark beta = " + std::to_string(ti.newmark.beta) +
-        " with Newmark gamma = " + std::to_string(ti.newmark.gamma) +
-        " is not unconditionally stable: that needs 2 "
-        "beta >= gamma >= 1/2 (beta = 1/4, gamma = 1/2 is "
-        "the default)."));
-    AssertThrow(!(explicit_scheme &&
-                  contact_model.model ==
-                    ContactModelParameters::Model::resolved_sphere),
-                ExcMessage("Contact/Model = resolved sphere needs Time "
-                           "integration/Scheme = implicit: its contact is "
-                           "rigid, which no explicit step is stable for."));
+    check_time_integration(*this);
     check_plasticity(*this);
     check_resolved_contact_degree(*this);
-    AssertThrow(output.directory.find_first_not_of(" \t") != std::string::npos,
-                ExcMessage("Output/Directory is empty."));
-    // parameters.prm must read back as the run was: '#' starts a comment
-    // there (the directory would change, and its cleaning with it).
-    for (const auto &[entry, value] :
-         {std::pair<std::string, std::string>{"Output/Directory",
-                                              output.directory},
-          {"Material/Profile file", material.profile_file}})
-      AssertThrow(value.find('#') == std::string::npos,
-                  ExcMessage(entry + " '" + value +
-                             "' holds '#', which starts a comment in the "
-                             "parameters.prm the run writes (reading it back "
-                             "would give another path); rename it."));
+    check_paths(*this);
     AssertThrow(2. * impactor.radius <= std::min(a, b),
                 ExcMessage(
                   "Impactor/Radius = " + std::to_string(impactor.radius) +
