@@ -76,38 +76,13 @@ namespace fgimpact
 
 
 
-  void
-  PlateGeometry::Parameters::declare_parameters(ParameterHandler &prm)
+  namespace
   {
-    prm.enter_subsection("Geometry");
+    /// Geometry/Contact refinement levels, radius and Symmetry (in the
+    /// subsection already entered).
+    void
+    declare_refinement_and_symmetry(ParameterHandler &prm)
     {
-      prm.declare_entry("Length a",
-                        "0.2",
-                        Patterns::Double(1e-6, 1e3),
-                        "Plate length a along x. Unit: m.");
-      prm.declare_entry("Width b",
-                        "0.1",
-                        Patterns::Double(1e-6, 1e3),
-                        "Plate width b along y. Unit: m.");
-      prm.declare_entry("Thickness h",
-                        "0.02",
-                        Patterns::Double(1e-6, 1e3),
-                        "Plate thickness h along z; z = 0 is the (ceramic) "
-                        "bottom face, z = h the (metal) top face that the "
-                        "impactor strikes. Unit: m.");
-      prm.declare_entry("Subdivisions x",
-                        "40",
-                        Patterns::Integer(1, 100000),
-                        "Number of elements along x. Even, so that a node "
-                        "lies under a central impact.");
-      prm.declare_entry("Subdivisions y",
-                        "20",
-                        Patterns::Integer(1, 100000),
-                        "Number of elements along y.");
-      prm.declare_entry("Subdivisions z",
-                        "4",
-                        Patterns::Integer(1, 100000),
-                        "Number of elements through the thickness.");
       prm.declare_entry(
         "Contact refinement levels",
         "auto",
@@ -143,6 +118,44 @@ namespace fgimpact
         "step (Time step = 0) are never cut. history.csv and summary.txt "
         "report the whole plate; the VTU files hold the whole plate too "
         "(Output/Mirror symmetric part = true) or the part.");
+    }
+  } // namespace
+
+
+
+  void
+  PlateGeometry::Parameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry("Length a",
+                        "0.2",
+                        Patterns::Double(1e-6, 1e3),
+                        "Plate length a along x. Unit: m.");
+      prm.declare_entry("Width b",
+                        "0.1",
+                        Patterns::Double(1e-6, 1e3),
+                        "Plate width b along y. Unit: m.");
+      prm.declare_entry("Thickness h",
+                        "0.02",
+                        Patterns::Double(1e-6, 1e3),
+                        "Plate thickness h along z; z = 0 is the (ceramic) "
+                        "bottom face, z = h the (metal) top face that the "
+                        "impactor strikes. Unit: m.");
+      prm.declare_entry("Subdivisions x",
+                        "40",
+                        Patterns::Integer(1, 100000),
+                        "Number of elements along x. Even, so that a node "
+                        "lies under a central impact.");
+      prm.declare_entry("Subdivisions y",
+                        "20",
+                        Patterns::Integer(1, 100000),
+                        "Number of elements along y.");
+      prm.declare_entry("Subdivisions z",
+                        "4",
+                        Patterns::Integer(1, 100000),
+                        "Number of elements through the thickness.");
+      declare_refinement_and_symmetry(prm);
     }
     prm.leave_subsection();
 

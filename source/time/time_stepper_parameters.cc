@@ -8,6 +8,34 @@
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// Subsection "Newton": the implicit scheme's iteration of the contact.
+    void
+    declare_newton(ParameterHandler &prm)
+    {
+      prm.enter_subsection("Newton");
+      {
+        prm.declare_entry("Tolerance",
+                          "1e-3",
+                          Patterns::Double(1e-15, 0.1),
+                          "implicit scheme: Newton stops when the relative "
+                          "change of the indentation between two iterations is "
+                          "below this (the paper: 0.1 %). Newton converges "
+                          "quadratically here, so the error left is about its "
+                          "square. Dimensionless.");
+        prm.declare_entry("Max iterations",
+                          "50",
+                          Patterns::Integer(1, 10000),
+                          "Iteration cap per time step; reaching it stops the "
+                          "run with an error naming the step.");
+      }
+      prm.leave_subsection();
+    }
+  } // namespace
+
+
+
   void
   TimeStepper::Parameters::declare_parameters(ParameterHandler &prm)
   {
@@ -61,23 +89,7 @@ namespace fgimpact
     }
     prm.leave_subsection();
 
-    prm.enter_subsection("Newton");
-    {
-      prm.declare_entry("Tolerance",
-                        "1e-3",
-                        Patterns::Double(1e-15, 0.1),
-                        "implicit scheme: Newton stops when the relative "
-                        "change of the indentation between two iterations is "
-                        "below this (the paper: 0.1 %). Newton converges "
-                        "quadratically here, so the error left is about its "
-                        "square. Dimensionless.");
-      prm.declare_entry("Max iterations",
-                        "50",
-                        Patterns::Integer(1, 10000),
-                        "Iteration cap per time step; reaching it stops the "
-                        "run with an error naming the step.");
-    }
-    prm.leave_subsection();
+    declare_newton(prm);
   }
 
 
