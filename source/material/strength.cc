@@ -29,6 +29,49 @@ namespace fgimpact
   } // namespace
 
 
+  namespace
+  {
+    /// Material/Plasticity and its hardening entries (in the subsection
+    /// already entered).
+    void
+    declare_plasticity(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Plasticity",
+        "none",
+        plasticity_names().pattern(),
+        "none: the plate is elastic (the paper). J2: the metal-rich part "
+        "(V_m >= 1/2) is elastic-plastic, small-strain von Mises plasticity "
+        "with linear isotropic hardening, its yield strength graded by the "
+        "TTO rule (Metal yield strength, TTO q), the ceramic phase elastic; "
+        "needs Contact/Model = resolved sphere for an impact (a point force "
+        "has no converged stress under it).");
+      prm.declare_entry(
+        "Metal hardening modulus",
+        "3e8",
+        Patterns::Double(0., 1e12),
+        "Plasticity = J2: the metal's hardening modulus H_m = d sigma_y / d "
+        "eps_p (linear isotropic hardening), graded by Graded hardening. 0 = "
+        "a perfectly plastic metal (the mixture still hardens with TTO "
+        "tangent: its ceramic stays elastic). Default: 6061-T6, whose "
+        "true stress rises from 275 to about 310 MPa over 12 % plastic "
+        "strain. Unit: Pa.");
+      prm.declare_entry(
+        "Graded hardening",
+        "TTO tangent",
+        hardening_names().pattern(),
+        "Plasticity = J2: the hardening modulus H(z) of the metal-rich "
+        "mixture. TTO tangent: the mixture's own, from the TTO rule with "
+        "the same q applied to the metal's tangent E_m H_m/(E_m + H_m) and "
+        "the elastic ceramic, H = E E_t/(E - E_t) (E, E_t: the mixture's "
+        "TTO modulus and tangent; at V_m = 0.9, q = 4.5 GPa: 0.83 GPa). "
+        "scaled as yield: H_m Y(z)/Y_m (0.30 GPa there), the earlier rule, "
+        "an assumption without a derivation, kept to compare.");
+    }
+  } // namespace
+
+
+
   void
   GradedStrength::Parameters::declare_parameters(ParameterHandler &prm)
   {
@@ -64,37 +107,7 @@ namespace fgimpact
       "Large q: the phases strain alike; 0: they carry the same stress. "
       "Default 4.5 GPa, the value used for Ti/TiB (Jin, Paulino & Dodds "
       "2003); Ni/Al2O3 measured about 90 GPa. Unit: Pa.");
-    prm.declare_entry(
-      "Plasticity",
-      "none",
-      plasticity_names().pattern(),
-      "none: the plate is elastic (the paper). J2: the metal-rich part "
-      "(V_m >= 1/2) is elastic-plastic, small-strain von Mises plasticity "
-      "with linear isotropic hardening, its yield strength graded by the "
-      "TTO rule (Metal yield strength, TTO q), the ceramic phase elastic; "
-      "needs Contact/Model = resolved sphere for an impact (a point force "
-      "has no converged stress under it).");
-    prm.declare_entry(
-      "Metal hardening modulus",
-      "3e8",
-      Patterns::Double(0., 1e12),
-      "Plasticity = J2: the metal's hardening modulus H_m = d sigma_y / d "
-      "eps_p (linear isotropic hardening), graded by Graded hardening. 0 = "
-      "a perfectly plastic metal (the mixture still hardens with TTO "
-      "tangent: its ceramic stays elastic). Default: 6061-T6, whose "
-      "true stress rises from 275 to about 310 MPa over 12 % plastic "
-      "strain. Unit: Pa.");
-    prm.declare_entry(
-      "Graded hardening",
-      "TTO tangent",
-      hardening_names().pattern(),
-      "Plasticity = J2: the hardening modulus H(z) of the metal-rich "
-      "mixture. TTO tangent: the mixture's own, from the TTO rule with "
-      "the same q applied to the metal's tangent E_m H_m/(E_m + H_m) and "
-      "the elastic ceramic, H = E E_t/(E - E_t) (E, E_t: the mixture's "
-      "TTO modulus and tangent; at V_m = 0.9, q = 4.5 GPa: 0.83 GPa). "
-      "scaled as yield: H_m Y(z)/Y_m (0.30 GPa there), the earlier rule, "
-      "an assumption without a derivation, kept to compare.");
+    declare_plasticity(prm);
     prm.leave_subsection();
   }
 
