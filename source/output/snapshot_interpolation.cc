@@ -47,7 +47,6 @@ namespace fgimpact
   {
     AssertThrow(n_frames >= 1 && t >= first_time() && t <= last_time(),
                 ExcInternalError());
-    const unsigned int first = 3 - n_frames;
     // One step recorded (the initial state): t is its time.
     if (n_frames == 1)
       {
@@ -80,9 +79,17 @@ namespace fgimpact
     state.ball.v = h00 * p0.ball.v + h10 * h * p0.ball.a + h01 * p1.ball.v +
                    h11 * h * p1.ball.a;
     state.ball.a = (1. - s) * p0.ball.a + s * p1.ball.a;
+    interpolate_contact(t, state);
+  }
 
+
+
+  void
+  SnapshotInterpolator::interpolate_contact(const double t, State &state) const
+  {
     // Lagrange's parabola through the three steps (a line through two).
-    double l[3] = {0., 0., 0.};
+    const unsigned int first = 3 - n_frames;
+    double             l[3]  = {0., 0., 0.};
     for (unsigned int k = first; k < 3; ++k)
       {
         l[k] = 1.;

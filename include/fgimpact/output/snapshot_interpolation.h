@@ -67,6 +67,11 @@ namespace fgimpact
     load(CheckpointReader &in);
 
   private:
+    /// interpolate()'s contact forces: Lagrange's parabola through the
+    /// three steps (a line through two), no tensile force at a node.
+    void
+    interpolate_contact(const double t, State &state) const;
+
     const PlateModel &plate;
     /// The last three steps, oldest first; n_frames of them valid.
     std::array<State, 3> frames;
