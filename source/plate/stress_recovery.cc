@@ -186,6 +186,25 @@ namespace fgimpact
 
 
   void
+  StressRecovery::add_to_sums(const types::global_dof_index dof,
+                              const SymmetricTensor<2, 3>  &sigma,
+                              const SymmetricTensor<2, 3>  &eps,
+                              const double                  eps_bar)
+  {
+    if (plasticity)
+      plastic_sum(dof) += eps_bar;
+    for (unsigned int s = 0; s < 6; ++s)
+      {
+        const unsigned int a = stress_component[s][0],
+                           b = stress_component[s][1];
+        sums[s](dof) += sigma[a][b] * 1e-6;
+        sums[6 + s](dof) += eps[a][b];
+      }
+  }
+
+
+
+  void
   StressRecovery::accumulate_cell_values(
     const TrilinosWrappers::MPI::Vector &u_ghosted)
   {
@@ -236,15 +255,7 @@ namespace fgimpact
                                             eps[q],
                                             eps_bar) :
                              HookeLaw::stress(E[q], nu[q], eps[q]);
-              if (plasticity)
-                plastic_sum(dofs[q]) += eps_bar;
-              for (unsigned int s = 0; s < 6; ++s)
-                {
-                  const unsigned int a = stress_component[s][0],
-                                     b = stress_component[s][1];
-                  sums[s](dofs[q]) += sigma[a][b] * 1e-6;
-                  sums[6 + s](dofs[q]) += eps[q][a][b];
-                }
+              add_to_sums(dofs[q], sigma, eps[q], eps_bar);
             }
         }
     for (unsigned int s = 0; s < 12; ++s)

@@ -173,6 +173,14 @@ namespace fgimpact
     void
     accumulate_cell_values(const TrilinosWrappers::MPI::Vector &u_ghosted);
 
+    /// One cell's values at scalar DoF `dof` into sums: sigma (Pa, summed
+    /// in MPa), eps, and with plasticity the equivalent plastic strain.
+    void
+    add_to_sums(const types::global_dof_index dof,
+                const SymmetricTensor<2, 3>  &sigma,
+                const SymmetricTensor<2, 3>  &eps,
+                const double                  eps_bar);
+
     /// A plastic run's stress at a cell's unit point (at height z, m)
     /// from the total strain eps: C (eps - eps_p) (E in Pa), returned onto
     /// the yield surface of the point's current yield stress where the
