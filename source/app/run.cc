@@ -9,6 +9,7 @@
 
 #include <fgimpact/app/input_file.h>
 #include <fgimpact/app/run.h>
+#include <fgimpact/app/run_files.h>
 #include <fgimpact/app/study.h>
 #include <fgimpact/base/checkpoint.h>
 #include <fgimpact/base/exceptions.h>
@@ -16,7 +17,6 @@
 #include <fgimpact/base/stop_signals.h>
 #include <fgimpact/output/output_directory.h>
 #include <fgimpact/output/output_files.h>
-#include <fgimpact/output/run_report.h>
 #include <fgimpact/study/simulator.h>
 
 #include <cstdio>
@@ -74,56 +74,6 @@ namespace fgimpact
         if (root)
           std::cerr << "fgimpact: warning: " << warning << std::endl;
     }
-
-    /// parameters.prm (expanded), written atomically by rank 0.
-    void
-    write_parameters_file(const fgimpact::OutputParameters &output,
-                          const dealii::ParameterHandler   &prm)
-    {
-      std::ostringstream parameters;
-      prm.print_parameters(parameters, dealii::ParameterHandler::PRM);
-      fgimpact::write_file_atomically(output.directory + "/parameters.prm",
-                                      parameters.str());
-    }
-
-
-
-    /**
-     * Rank 0, before the run: clean the output directory (Output/Overwrite;
-     * before log.txt is opened, so that the earlier run's log goes and this
-     * run's stays), then log.txt (provenance first), the provenance for
-     * summary.txt, parameters.prm (expanded) and input.prm (as given), both
-     * written atomically.
-     */
-    void
-    start_run_files(const fgimpact::OutputParameters &output,
-                    const int                         argc,
-                    const char *const                *argv,
-                    fgimpact::Logger                 &logger,
-                    const dealii::ParameterHandler   &prm,
-                    const fgimpact::InputFile        &input,
-                    const bool                        resume)
-    {
-      // One writer per directory, before anything is written there.
-      fgimpact::lock_output_directory(output.directory);
-      // Resuming: nothing removed, log.txt continued, input.prm kept.
-      if (!resume)
-        fgimpact::prepare_output_directory(output);
-      const std::string provenance = fgimpact::CommandLine::provenance(
-        argc, argv, dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
-      logger.open(output.directory + "/log.txt", provenance, resume);
-      fgimpact::SummaryWriter::set_preamble(provenance);
-      // Resuming: parameters.prm once the resume is accepted
-      // (CheckpointSettings::on_resume_accepted).
-      if (!resume)
-        {
-          write_parameters_file(output, prm);
-          fgimpact::write_file_atomically(output.directory + "/input.prm",
-                                          input.original());
-        }
-    }
-
-
 
     /// The expanded parameters for the checkpoints; with --resume, rank 0
     /// checks the checkpoint against them (a failure is thrown on every
@@ -298,21 +248,6 @@ namespace fgimpact
 
 
 
-    /// A run's last words (rank 0): its report (Output/Report) and where
-    /// its results are.
-    void
-    finish_run(const fgimpact::OutputParameters &output)
-    {
-      if (output.report)
-        if (const std::string note =
-              fgimpact::write_run_report(output.directory);
-            !note.empty())
-          std::cout << "  note: " << note << '\n';
-      std::cout << "fgimpact: results in " << output.directory << '\n';
-    }
-
-
-
     /// However the run ends here (a kill aside), its output directories
     /// are left without their lock files.
     struct ReleaseLocksAtEnd
@@ -322,7 +257,6 @@ namespace fgimpact
 
 
 
-    /// Set up, write the start files and run one simulation; the exit code.
     /**
      * Everything that can fail on bad input is checked before any file is
      * written: Simulator::setup() writes nothing.  A numerical failure of
@@ -380,6 +314,7 @@ namespace fgimpact
 
 
 
+    /// Set up, write the start files and run one simulation; the exit code.
     int
     simulate(const fgimpact::CommandLine::Options &options,
              const fgimpact::Parameters           &parameters,

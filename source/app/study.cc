@@ -174,28 +174,6 @@ namespace fgimpact
       return directory.substr(directory.find_last_of('/') + 1);
     }
 
-    /// The one-line text of a failure (as report_failure() prints it).
-    std::string
-    failure_text(const std::exception_ptr &failure)
-    {
-      try
-        {
-          std::rethrow_exception(failure);
-        }
-      catch (const ExceptionBase &e)
-        {
-          return message_of(e);
-        }
-      catch (const std::exception &e)
-        {
-          return one_line(e.what());
-        }
-      catch (...)
-        {
-          return "unknown exception";
-        }
-    }
-
     /// One case of a group: by the engine if given, else through the time
     /// loop; a failure is added to failures (name, one-line reason), and
     /// the case's summary to summaries (by its directory).
@@ -231,7 +209,7 @@ namespace fgimpact
         {
           // The case failed (its summary.txt says so); the others run.
           failures.push_back(
-            {case_name(directory), failure_text(std::current_exception())});
+            {case_name(directory), failure_message(std::current_exception())});
           pcout << "  study case failed: " << failures.back().second << '\n';
           if (engine)
             {

@@ -148,6 +148,14 @@ namespace fgimpact
 
 
 
+  std::string
+  failure_message(const std::exception_ptr &failure)
+  {
+    return failure_text(failure, 0).text;
+  }
+
+
+
   int
   report_failure(const std::exception_ptr &failure,
                  const bool                root,

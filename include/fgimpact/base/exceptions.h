@@ -68,6 +68,11 @@ namespace fgimpact
                  const int                 default_code,
                  const std::string        &context = "error");
 
+  /// The one line report_failure() prints for the exception (without its
+  /// context): a study case's failure reason is the same text.
+  std::string
+  failure_message(const std::exception_ptr &failure);
+
   /// The one-line failure of an iterative linear solver that stopped after
   /// `iterations` without converging `where` ("at time step 12 (t = 24
   /// us)", "during set-up (...)"; empty: nowhere said): the two entries

@@ -61,7 +61,8 @@ namespace fgimpact
    *     run whose files the user reads.
    *  5. convergence.csv (one row per run) and, appended to summary.txt,
    *     for each quantity its relative error estimate, the sum of one per
-   *     source, each from that source's own refinement:
+   *     source, each from that source's own refinement times
+   *     safety_factor:
    *     - contact levels (on the final base), in plane, through the
    *       thickness: the final run is the coarser of its chain's last
    *       pair, so its error is bounded by their difference plus the
