@@ -19,6 +19,23 @@
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// The area of the candidates that press (m^2, the modelled part's).
+    double
+    pressed_area(const ResolvedSphereContact &contact,
+                 const ContactState          &state)
+    {
+      double area = 0;
+      for (unsigned int j = 0; j < state.forces.size(); ++j)
+        if (state.forces[j] > 0.)
+          area += contact.candidate_areas()[j];
+      return area;
+    }
+  } // namespace
+
+
+
   void
   StaticAnalysis::solve_plastic_indentation(EffectiveMatrixSolver &solver,
                                             ResolvedSphereContact &contact)
@@ -44,56 +61,57 @@ namespace fgimpact
             const double theta  = yield_crossing(last_ratio, ratio);
             r.first_yield_force = last_force + theta * (force - last_force);
           }
-        last_ratio  = plastic->max_trial_ratio();
-        last_force  = force;
-        double area = 0; // m^2, the part's
-        for (unsigned int j = 0; j < state.forces.size(); ++j)
-          if (state.forces[j] > 0.)
-            area += contact.candidate_areas()[j];
-        area /= share;
-        r.curve.push_back({{delta,
-                            force,
-                            std::sqrt(area / numbers::PI),
-                            plastic->max_equivalent_plastic_strain()}});
+        last_ratio          = plastic->max_trial_ratio();
+        last_force          = force;
+        const double area   = pressed_area(contact, state) / share; // m^2
+        const double radius = std::sqrt(area / numbers::PI);
+        r.curve.push_back(
+          {{delta, force, radius, plastic->max_equivalent_plastic_strain()}});
         if (k == n)
           {
             // The full indentation: the summary's contact.
-            const auto &dofs        = contact.contact_dofs();
-            results.contact_force   = force;
-            results.contact_radius  = std::sqrt(area / numbers::PI);
-            r.contact_area          = area;
-            results.max_pressure    = state.max_pressure;
-            results.n_contact_nodes = state.n_active;
-            results.node_radius     = contact.candidate_radii();
-            results.node_pressure.resize(dofs.size());
-            for (unsigned int j = 0; j < dofs.size(); ++j)
-              results.node_pressure[j] =
-                state.forces[j] / contact.candidate_areas()[j];
+            record_contact(contact, state, force, radius);
+            r.contact_area = area;
           }
       }
     r.dissipation        = plastic->plastic_work() / share;
     r.max_plastic_strain = plastic->max_equivalent_plastic_strain();
     r.iterations         = plastic->n_iterations();
     judge_first_yield(contact.contact_modulus());
-    // The locked brick's pressure, as in an impact (PlasticityReport).
-    if (plate.get_fe().degree == 1 && !plate.uses_mean_dilatation() &&
-        r.max_plastic_strain > 0.)
-      {
-        const std::string text = locking_warning();
-        r.warning += (r.warning.empty() ? "" : " | ") + text;
-        if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
-          std::cout << "  WARNING: " << text << ".\n";
-      }
-    // The crater: the plate's thinning under the load point (u holds the
-    // unloaded plate, constraints distributed by update()'s caller below).
+    warn_locked_pressure();
+    r.permanent_indentation = permanent_indentation();
+  }
+
+
+
+  void
+  StaticAnalysis::warn_locked_pressure()
+  {
+    auto &r = results.plastic;
+    if (plate.get_fe().degree != 1 || plate.uses_mean_dilatation() ||
+        r.max_plastic_strain <= 0.)
+      return;
+    const std::string text = locking_warning();
+    r.warning += (r.warning.empty() ? "" : " | ") + text;
+    if (Utilities::MPI::this_mpi_process(plate.get_mpi_communicator()) == 0)
+      std::cout << "  WARNING: " << text << ".\n";
+  }
+
+
+
+  double
+  StaticAnalysis::permanent_indentation() const
+  {
+    // u holds the unloaded plate; solve() distributes its constraints
+    // only after this, so distribute a copy.
     TrilinosWrappers::MPI::Vector u_distributed = u;
     plate.get_constraints().distribute(u_distributed);
     const double     h = plate.get_geometry().thickness();
     const PointProbe top(plate, Point<3>(load_point[0], load_point[1], h));
     const PointProbe mid(plate,
                          Point<3>(load_point[0], load_point[1], 0.5 * h));
-    r.permanent_indentation =
-      mid.displacement(u_distributed)[2] - top.displacement(u_distributed)[2];
+    return mid.displacement(u_distributed)[2] -
+           top.displacement(u_distributed)[2];
   }
 
 
@@ -170,20 +188,13 @@ namespace fgimpact
                                   "at load step " + std::to_string(step));
         if (state.candidates_exhausted)
           {
-            AssertThrow(contact.grow_candidates(),
-                        ExcMessage("Static/Indentation: the contact reaches "
-                                   "the sphere's radius; reduce the "
-                                   "indentation, or raise Geometry/Contact "
-                                   "refinement levels."));
+            grow_contact(contact);
             compute_compliance(solver, plate, contact.contact_dofs(), C);
             continue;
           }
         // u = K^{-1} (f_p - sum_j lambda_j g_j).
         f = plastic->plastic_force();
-        for (unsigned int j = 0; j < dofs.size(); ++j)
-          if (f.locally_owned_elements().is_element(dofs[j]))
-            f(dofs[j]) -= state.forces[j];
-        f.compress(VectorOperation::add);
+        subtract_contact_forces(dofs, state.forces, f);
         u = 0.;
         solver.solve(u, f);
         double scale = plastic->plastic_force().linfty_norm();

@@ -142,31 +142,64 @@ namespace fgimpact
         check_indentation_contact(state, "at the full indentation");
         if (!state.candidates_exhausted)
           break;
-        AssertThrow(contact.grow_candidates(),
-                    ExcMessage("Static/Indentation: the contact reaches the "
-                               "sphere's radius; reduce the indentation, or "
-                               "raise Geometry/Contact refinement levels if "
-                               "the elements under the ball are coarser "
-                               "than the contact radius."));
+        grow_contact(contact);
       }
+    record_contact(contact,
+                   state,
+                   state.force / plate.get_geometry().share(),
+                   state.contact_radius);
+
+    // u = K^{-1} (-sum_j lambda_j g_j): one more solve.
+    TrilinosWrappers::MPI::Vector f;
+    plate.initialize_vector(f);
+    subtract_contact_forces(contact.contact_dofs(), state.forces, f);
+    solver.solve(u, f);
+  }
+
+
+
+  void
+  StaticAnalysis::record_contact(const ResolvedSphereContact &contact,
+                                 const ContactState          &state,
+                                 const double                 force,
+                                 const double                 contact_radius)
+  {
     const auto &dofs        = contact.contact_dofs();
-    results.contact_force   = state.force / plate.get_geometry().share();
-    results.contact_radius  = state.contact_radius;
+    results.contact_force   = force;
+    results.contact_radius  = contact_radius;
     results.max_pressure    = state.max_pressure;
     results.n_contact_nodes = state.n_active;
     results.node_radius     = contact.candidate_radii();
     results.node_pressure.resize(dofs.size());
     for (unsigned int j = 0; j < dofs.size(); ++j)
       results.node_pressure[j] = state.forces[j] / contact.candidate_areas()[j];
+  }
 
-    // u = K^{-1} (-sum_j lambda_j g_j): one more solve.
-    TrilinosWrappers::MPI::Vector f;
-    plate.initialize_vector(f);
+
+
+  void
+  StaticAnalysis::grow_contact(ResolvedSphereContact &contact)
+  {
+    AssertThrow(contact.grow_candidates(),
+                ExcMessage("Static/Indentation: the contact reaches the "
+                           "sphere's radius; reduce the indentation, or "
+                           "raise Geometry/Contact refinement levels if "
+                           "the elements under the ball are coarser "
+                           "than the contact radius."));
+  }
+
+
+
+  void
+  StaticAnalysis::subtract_contact_forces(
+    const std::vector<types::global_dof_index> &dofs,
+    const std::vector<double>                  &forces,
+    TrilinosWrappers::MPI::Vector              &f)
+  {
     for (unsigned int j = 0; j < dofs.size(); ++j)
       if (f.locally_owned_elements().is_element(dofs[j]))
-        f(dofs[j]) = -state.forces[j];
-    f.compress(VectorOperation::insert);
-    solver.solve(u, f);
+        f(dofs[j]) -= forces[j];
+    f.compress(VectorOperation::add);
   }
 
 

@@ -243,18 +243,11 @@ namespace fgimpact
 
 
 
-  void
-  VtuWriter::write_snapshot(
-    const std::string                    &base,
-    const unsigned int                    step,
-    const double                          t,
-    const TrilinosWrappers::MPI::Vector  &u,
-    const TrilinosWrappers::MPI::Vector  &v,
-    const std::pair<std::string, double> &constant_field,
-    const TrilinosWrappers::MPI::Vector  *a)
+  bool
+  VtuWriter::capture_fields(const TrilinosWrappers::MPI::Vector &u,
+                            const TrilinosWrappers::MPI::Vector &v,
+                            const TrilinosWrappers::MPI::Vector *a)
   {
-    finish(); // the previous snapshot still reads u_ghosted, v_ghosted
-    any_written                  = true;
     u_ghosted                    = u;
     v_ghosted                    = v;
     const bool with_acceleration = fields.acceleration && a != nullptr;
@@ -275,6 +268,24 @@ namespace fgimpact
         for (unsigned int c = 0; c < ratio.size(); ++c)
           yield_utilization[c] = ratio[c];
       }
+    return with_acceleration;
+  }
+
+
+
+  void
+  VtuWriter::write_snapshot(
+    const std::string                    &base,
+    const unsigned int                    step,
+    const double                          t,
+    const TrilinosWrappers::MPI::Vector  &u,
+    const TrilinosWrappers::MPI::Vector  &v,
+    const std::pair<std::string, double> &constant_field,
+    const TrilinosWrappers::MPI::Vector  *a)
+  {
+    finish(); // the previous snapshot still reads u_ghosted, v_ghosted
+    any_written                  = true;
+    const bool with_acceleration = capture_fields(u, v, a);
 
     const MPI_Comm     comm    = plate.get_mpi_communicator();
     const unsigned int rank    = Utilities::MPI::this_mpi_process(comm);

@@ -52,14 +52,8 @@ namespace fgimpact
     for (unsigned int i = 0; i < dofs.size(); ++i)
       {
         record.local_index.push_back(static_cast<int>(dofs[i]));
-        const unsigned int    c = fe.system_to_component_index(i).first;
-        const auto            g = fe_values.shape_grad(i, 0);
-        SymmetricTensor<2, 3> eps;
-        for (unsigned int d = 0; d < 3; ++d)
-          eps[c][d] += (c == d ? 1. : 0.5) * g[d];
-        if (mean_div.size() > 0) // B-bar
-          eps = PlateModel::with_dilatation(eps, mean_div[i]);
-        record.strain.push_back(eps);
+        record.strain.push_back(
+          PlateModel::shape_strain(fe_values, i, 0, mean_div));
       }
     records.push_back(std::move(record));
   }

@@ -16,6 +16,7 @@
 #include <fgimpact/plate/probes.h>
 #include <fgimpact/plate/stress_recovery.h>
 
+#include <algorithm>
 #include <cctype>
 #include <set>
 #include <sstream>
@@ -173,21 +174,24 @@ namespace fgimpact
               factor * sigma[stress_component[s][0]][stress_component[s][1]];
     }
 
-    /// The six stress components' weight vectors of n_points probes,
-    /// ghosted and writable (each cell adds to its own DoFs).
-    std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>>
-    writable_weight_vectors(const PlateModel  &plate,
-                            const unsigned int n_points,
-                            const MPI_Comm     communicator)
+    /// The probes' factors (probe_factors()) of each scalar node of a
+    /// cell; empty if no probe reads any of them.
+    std::vector<std::vector<std::pair<unsigned int, double>>>
+    cell_probe_factors(
+      const std::vector<TrilinosWrappers::MPI::Vector> &ghosted,
+      const std::vector<types::global_dof_index>       &sdofs)
     {
-      std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>> w(n_points);
-      for (auto &list : w)
-        for (auto &vector : list)
-          vector.reinit(plate.locally_owned_dofs(),
-                        plate.locally_relevant_dofs(),
-                        communicator,
-                        /*vector_writable=*/true);
-      return w;
+      std::vector<std::vector<std::pair<unsigned int, double>>> factors(
+        sdofs.size());
+      bool needed = false;
+      for (unsigned int q = 0; q < sdofs.size(); ++q)
+        {
+          factors[q] = probe_factors(ghosted, sdofs[q]);
+          needed     = needed || !factors[q].empty();
+        }
+      if (!needed)
+        factors.clear();
+      return factors;
     }
   } // namespace
 
@@ -196,15 +200,9 @@ namespace fgimpact
   void
   ProbeSet::setup_stress_weights(const PlateModel &plate)
   {
-    // StressRecovery as a linear functional: sigma(x) = sum_j c_j
-    // sigma_j with c_j = N_j(x) (averaged over the cells containing x) and
-    // sigma_j = (1/n_j) sum over the n_j cells K at scalar node j of
-    // sigma_K(x_j).  First c (ghosted, so that every cell at node j sees
-    // it), then each cell's share of the nodal averages.
     DoFHandler<3> scalar_dofs(plate.get_dof_handler().get_triangulation());
     scalar_dofs.distribute_dofs(plate.get_fe().base_element(0));
     const FiniteElement<3> &scalar_fe = scalar_dofs.get_fe();
-    const unsigned int      n_points  = points.size();
     const auto ghosted = recovery_coefficients(plate, scalar_dofs, points);
     const auto cut_planes =
       dofs_on_cut_planes(plate.get_geometry(), scalar_dofs);
@@ -221,56 +219,43 @@ namespace fgimpact
     const HookeLaw                       hooke(plate.get_material());
     std::vector<double>                  E, nu, rho;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    auto w = writable_weight_vectors(plate, n_points, mpi_communicator);
+    std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>> w(points.size());
+    for (auto &vectors : w)
+      vectors = weight_vectors<6>(plate);
 
     for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           scalar_cell(scalar_dofs, cell)->get_dof_indices(sdofs);
-          std::vector<std::vector<std::pair<unsigned int, double>>> factors(
-            sdofs.size());
-          bool needed = false;
-          for (unsigned int q = 0; q < sdofs.size(); ++q)
-            {
-              factors[q] = probe_factors(ghosted, sdofs[q]);
-              needed     = needed || !factors[q].empty();
-            }
-          if (!needed)
+          const auto factors = cell_probe_factors(ghosted, sdofs);
+          if (factors.empty())
             continue;
           fe_values.reinit(cell);
           properties.values(cell, E, nu, rho);
           cell->get_dof_indices(dofs);
           const auto mean_div = plate.mean_divergence(cell);
-          // The same points for a plastic run's correction.
           for (unsigned int q = 0; q < sdofs.size(); ++q)
             if (!factors[q].empty())
-              plastic_correction.add_point(cell,
-                                           support.point(q),
-                                           factors[q],
-                                           planes_of(cut_planes, sdofs[q]));
-          for (unsigned int q = 0; q < sdofs.size(); ++q)
-            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
               {
-                const unsigned int    c = fe.system_to_component_index(i).first;
-                const auto            g = fe_values.shape_grad(i, q);
-                SymmetricTensor<2, 3> eps;
-                for (unsigned int d = 0; d < 3; ++d)
-                  eps[c][d] += (c == d ? 1. : 0.5) * g[d];
-                if (mean_div.size() > 0) // B-bar
-                  eps = PlateModel::with_dilatation(eps, mean_div[i]);
-                add_stress_weights(hooke.stress(E[q], nu[q], eps),
-                                   factors[q],
-                                   planes_of(cut_planes, sdofs[q]),
-                                   dofs[i],
-                                   w);
+                const unsigned int planes = planes_of(cut_planes, sdofs[q]);
+                // The same points for a plastic run's correction.
+                plastic_correction.add_point(cell,
+                                             support.point(q),
+                                             factors[q],
+                                             planes);
+                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                  add_stress_weights(hooke.stress(E[q],
+                                                  nu[q],
+                                                  PlateModel::shape_strain(
+                                                    fe_values, i, q, mean_div)),
+                                     factors[q],
+                                     planes,
+                                     dofs[i],
+                                     w);
               }
         }
-    for (unsigned int p = 0; p < n_points; ++p)
-      for (unsigned int s = 0; s < 6; ++s)
-        {
-          w[p][s].compress(VectorOperation::add);
-          weights[p][3 + s] = owned_nonzeros(plate, w[p][s]);
-        }
+    for (unsigned int p = 0; p < points.size(); ++p) // weights 3-8
+      std::copy_n(owned_weights(plate, w[p]).begin(), 6, &weights[p][3]);
   }
 
 

@@ -74,14 +74,7 @@ namespace fgimpact
     const unsigned int n_cells =
       Utilities::MPI::sum(static_cast<unsigned int>(cells.size()), comm);
     AssertThrow(n_cells > 0, ExcMessage(outside));
-    // Summed into distributed vectors so that each weight ends up on the
-    // rank that owns its DoF: evaluation then needs no ghost values.
-    std::array<TrilinosWrappers::MPI::Vector, 3> w;
-    for (auto &vector : w)
-      vector.reinit(plate.locally_owned_dofs(),
-                    plate.locally_relevant_dofs(),
-                    comm,
-                    /*vector_writable=*/true);
+    auto                                 w = weight_vectors<3>(plate);
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     for (const auto &[cell, unit_point] : cells)
       {
@@ -90,13 +83,7 @@ namespace fgimpact
           w[fe.system_to_component_index(i).first](dofs[i]) +=
             fe.shape_value(i, unit_point) / n_cells;
       }
-    std::array<DofWeights, 3> weights;
-    for (unsigned int c = 0; c < 3; ++c)
-      {
-        w[c].compress(VectorOperation::add);
-        weights[c] = owned_nonzeros(plate, w[c]);
-      }
-    return weights;
+    return owned_weights(plate, w);
   }
 
 
@@ -120,14 +107,8 @@ namespace fgimpact
     // cells that contain the point.
     const double w = 1. / n_adjacent_cells;
 
-    // The weights of the 6 stress components, summed into distributed
-    // vectors so that each ends up on the rank that owns its DoF.
-    std::array<TrilinosWrappers::MPI::Vector, 6> weights;
-    for (auto &vector : weights)
-      vector.reinit(plate.locally_owned_dofs(),
-                    plate.locally_relevant_dofs(),
-                    mpi_communicator,
-                    /*vector_writable=*/true);
+    // The weights of the 6 stress components.
+    auto                                 weights = weight_vectors<6>(plate);
     std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
 
     for (const auto &[cell, unit_point] : cells)
@@ -150,17 +131,10 @@ namespace fgimpact
 
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
-            const unsigned int c = fe.system_to_component_index(i).first;
-            const auto         g = fe_values.shape_grad(i, 0);
-            // The stress of this shape function, e_c (x) grad N: the
-            // weights of the 6 independent components.
-            SymmetricTensor<2, 3> eps;
-            for (unsigned int d = 0; d < 3; ++d)
-              eps[c][d] += (c == d ? 1. : 0.5) * g[d];
-            if (mean_div.size() > 0) // B-bar
-              eps = PlateModel::with_dilatation(eps, mean_div[i]);
-            const SymmetricTensor<2, 3> sigma =
-              HookeLaw::stress(E[0], nu[0], eps);
+            // The stress of this shape function: the weights of the 6
+            // independent components.
+            const SymmetricTensor<2, 3> sigma = HookeLaw::stress(
+              E[0], nu[0], PlateModel::shape_strain(fe_values, i, 0, mean_div));
             for (unsigned int s = 0; s < 6; ++s)
               {
                 const double value = sigma[voigt[s][0]][voigt[s][1]];
@@ -170,11 +144,7 @@ namespace fgimpact
           }
       }
 
-    for (unsigned int k = 0; k < 6; ++k)
-      {
-        weights[k].compress(VectorOperation::add);
-        stress_weights[k] = owned_nonzeros(plate, weights[k]);
-      }
+    stress_weights = owned_weights(plate, weights);
   }
 
 

@@ -120,18 +120,6 @@ namespace fgimpact
   void
   ProbeSet::setup_reaction_weights(const PlateModel &plate)
   {
-    // z_S is the conforming field that is 1 at the supported z DoFs (the
-    // constrained ones without entries) and 0 at the free ones: a hanging
-    // node between a supported and a free vertex (local refinement that
-    // reaches a support) carries the weight its constraint put on the
-    // supported masters, 1 minus the sum of its entries, since closing the
-    // constraints drops the masters fixed at 0.  Then the supports' share of
-    // the internal force, hanging nodes' shares included, is
-    // a(z_S, u) + (rho z_S, a), with the unconstrained forms of the assembly.
-    // Such a node is also a vertex of cells off the boundary, so every cell
-    // is looked at.  (Weighting the supported DoFs alone missed 0.8 % of
-    // the peak force of an unloaded plastic indentation refined down to its
-    // clamped bottom.)
     const auto                          &fe          = plate.get_fe();
     const auto                          &constraints = plate.get_constraints();
     const QGauss<3>                      quadrature(fe.degree + 1);
@@ -145,12 +133,7 @@ namespace fgimpact
     const HookeLaw                       hooke(plate.get_material());
     std::vector<double>                  E, nu, rho;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::array<TrilinosWrappers::MPI::Vector, 2> w;
-    for (auto &vector : w)
-      vector.reinit(plate.locally_owned_dofs(),
-                    plate.locally_relevant_dofs(),
-                    mpi_communicator,
-                    /*vector_writable=*/true);
+    auto                                 w = weight_vectors<2>(plate);
 
     std::vector<double> supported(fe.n_dofs_per_cell());
     for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
@@ -178,10 +161,9 @@ namespace fgimpact
                 fe_values, q, dofs, sigma_s, z_value * rho[q], mean_div, w);
             }
         }
-    for (auto &vector : w)
-      vector.compress(VectorOperation::add);
-    reaction_stiffness = owned_nonzeros(plate, w[0]);
-    reaction_mass      = owned_nonzeros(plate, w[1]);
+    const auto weights = owned_weights(plate, w);
+    reaction_stiffness = weights[0];
+    reaction_mass      = weights[1];
   }
 
 

@@ -158,6 +158,26 @@ namespace fgimpact
     void
     solve_indentation(EffectiveMatrixSolver &solver);
 
+    /// The contact's force (N, whole plate), radius (m), pressures and
+    /// nodes into the results.
+    void
+    record_contact(const ResolvedSphereContact &contact,
+                   const ContactState          &state,
+                   const double                 force,
+                   const double                 contact_radius);
+
+    /// The contact has reached its candidates' edge: grow them, or throw
+    /// (the contact reaches the sphere's radius).
+    static void
+    grow_contact(ResolvedSphereContact &contact);
+
+    /// f(dofs[j]) -= forces[j] on this rank's DoFs: the contact forces
+    /// (N, pressing down) on the plate's load vector.
+    static void
+    subtract_contact_forces(const std::vector<types::global_dof_index> &dofs,
+                            const std::vector<double>                  &forces,
+                            TrilinosWrappers::MPI::Vector              &f);
+
     /// The same on a plastic plate: load steps up and down
     /// (source/analysis/plastic_indentation.cc).
     void
@@ -173,6 +193,16 @@ namespace fgimpact
                       FullMatrix<double>    &C,
                       const double           delta,
                       const unsigned int     step);
+
+    /// The warning of a Q1 brick without B-bar that has yielded: its
+    /// pressure locks (as PlasticityReport says for an impact).
+    void
+    warn_locked_pressure();
+
+    /// The crater: the plate's thinning under the load point (m) after
+    /// unloading.
+    double
+    permanent_indentation() const;
 
     /// Hertz's first yield beside the computed one, which becomes NaN
     /// (with a warning) where the mesh does not resolve it; E_star: Hertz's

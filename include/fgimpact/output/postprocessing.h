@@ -230,6 +230,14 @@ namespace fgimpact
     void
     add_recovered_fields(DataOut<3> &data_out);
 
+    /// Copy the fields of a snapshot into the ghosted vectors and cell
+    /// fields that the background writer reads; true if the acceleration
+    /// is among them.
+    bool
+    capture_fields(const TrilinosWrappers::MPI::Vector &u,
+                   const TrilinosWrappers::MPI::Vector &v,
+                   const TrilinosWrappers::MPI::Vector *a);
+
     /// Write the snapshot Directory/vtu/<base>.pvtu (see write()).
     void
     write_snapshot(const std::string                    &base,

@@ -190,6 +190,25 @@ namespace fgimpact
       return eps + ((theta - trace(eps)) / 3.) * unit_symmetric_tensor<3>();
     }
 
+    /// The strain of vector shape function i at point q of fe_values: its
+    /// component c's symmetric gradient, sym(e_c (x) grad N_i), with the
+    /// cell's mean dilatation if mean_div (mean_divergence()) is not empty
+    /// (B-bar). Unit: 1/m per unit DoF value.
+    static SymmetricTensor<2, 3>
+    shape_strain(const FEValues<3>             &fe_values,
+                 const unsigned int             i,
+                 const unsigned int             q,
+                 const ArrayView<const double> &mean_div)
+    {
+      const unsigned int c =
+        fe_values.get_fe().system_to_component_index(i).first;
+      const Tensor<1, 3>    g = fe_values.shape_grad(i, q);
+      SymmetricTensor<2, 3> eps;
+      for (unsigned int d = 0; d < 3; ++d)
+        eps[c][d] += (c == d ? 1. : 0.5) * g[d];
+      return mean_div.size() > 0 ? with_dilatation(eps, mean_div[i]) : eps;
+    }
+
     /// The MPI rank that owns a DoF. Collective.
     unsigned int
     dof_owner(const types::global_dof_index dof) const;

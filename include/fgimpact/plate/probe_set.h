@@ -147,8 +147,28 @@ namespace fgimpact
 
     void
     setup_point_weights(const PlateModel &plate);
+    /// StressRecovery as a linear functional: sigma(x) = sum_j c_j
+    /// sigma_j with c_j = N_j(x) (averaged over the cells containing x)
+    /// and sigma_j = (1/n_j) sum over the n_j cells K at scalar node j of
+    /// sigma_K(x_j).  First c (ghosted, so that every cell at node j sees
+    /// it), then each cell's share of the nodal averages.
     void
     setup_stress_weights(const PlateModel &plate);
+    /**
+     * The support reaction's weights (source/plate/support_reaction.cc).
+     * z_S is the conforming field that is 1 at the supported z DoFs (the
+     * constrained ones without entries) and 0 at the free ones: a hanging
+     * node between a supported and a free vertex (local refinement that
+     * reaches a support) carries the weight its constraint put on the
+     * supported masters, 1 minus the sum of its entries, since closing the
+     * constraints drops the masters fixed at 0.  Then the supports' share
+     * of the internal force, hanging nodes' shares included, is a(z_S, u)
+     * + (rho z_S, a), with the unconstrained forms of the assembly.  Such
+     * a node is also a vertex of cells off the boundary, so every cell is
+     * looked at.  (Weighting the supported DoFs alone missed 0.8 % of the
+     * peak force of an unloaded plastic indentation refined down to its
+     * clamped bottom.)
+     */
     void
     setup_reaction_weights(const PlateModel &plate);
 

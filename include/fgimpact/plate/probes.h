@@ -52,6 +52,38 @@ namespace fgimpact
   owned_nonzeros(const PlateModel                    &plate,
                  const TrilinosWrappers::MPI::Vector &vector);
 
+  /// N writable ghosted vectors on the plate's DoFs into which each rank
+  /// adds the weights of its cells' DoFs; owned_weights() then sends each
+  /// weight to the rank that owns its DoF, so that an evaluation needs no
+  /// ghost values.
+  template <std::size_t N>
+  std::array<TrilinosWrappers::MPI::Vector, N>
+  weight_vectors(const PlateModel &plate)
+  {
+    std::array<TrilinosWrappers::MPI::Vector, N> w;
+    for (auto &vector : w)
+      vector.reinit(plate.locally_owned_dofs(),
+                    plate.locally_relevant_dofs(),
+                    plate.get_mpi_communicator(),
+                    /*vector_writable=*/true);
+    return w;
+  }
+
+  /// The summed weight_vectors() as this rank's nonzeros. Collective.
+  template <std::size_t N>
+  std::array<DofWeights, N>
+  owned_weights(const PlateModel                             &plate,
+                std::array<TrilinosWrappers::MPI::Vector, N> &w)
+  {
+    std::array<DofWeights, N> weights;
+    for (unsigned int k = 0; k < N; ++k)
+      {
+        w[k].compress(VectorOperation::add);
+        weights[k] = owned_nonzeros(plate, w[k]);
+      }
+    return weights;
+  }
+
   /**
    * Displacement and stress at a fixed point of the plate as linear
    * functionals of the DoF vector, with the weights computed once (no mesh
