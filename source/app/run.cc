@@ -289,6 +289,29 @@ namespace fgimpact
 
 
 
+    /// Write the start files: -1, or the exit code of a start file that
+    /// cannot be written, an I/O failure (exit code 2, summary.txt failed
+    /// if it can still be written).  An unusable directory was refused
+    /// before, as bad input (exit code 1, nothing written).
+    int
+    start_or_fail(const fgimpact::Simulator   &simulator,
+                  const std::function<void()> &start_files,
+                  const bool                   root)
+    {
+      try
+        {
+          start_files();
+        }
+      catch (...)
+        {
+          return fail_before_run(
+            std::current_exception(), simulator, true, nullptr, root);
+        }
+      return -1;
+    }
+
+
+
     /// Checkpoints store the parameters; a resume refuses changed ones
     /// (bad input throws).  On a resume accepted, parameters.prm is
     /// written (prm and parameters must outlive the run).
@@ -354,18 +377,9 @@ namespace fgimpact
             return code;
           if (validate)
             return report_valid(input_file, simulator, root);
-          // An unusable directory is bad input (exit code 1, nothing written);
-          // a start file that cannot be written an I/O failure (exit code 2,
-          // summary.txt failed if it can still be written).
-          try
-            {
-              start_files();
-            }
-          catch (...)
-            {
-              return fail_before_run(
-                std::current_exception(), simulator, true, nullptr, root);
-            }
+          if (const int code = start_or_fail(simulator, start_files, root);
+              code >= 0)
+            return code;
           stop_if_signalled_in_setup(simulator);
           simulator.run();
           if (root)

@@ -110,73 +110,86 @@ namespace fgimpact
     result_keys()
     {
       using W = SummaryKey::When;
-      return {
-        number("peak_contact_force_N",
-               4,
-               [](const R &r) { return r.peak_contact_force; }),
-        number("max_sampled_contact_force_N",
-               4,
-               [](const R &r) { return r.max_sampled_force; }),
-        number("time_of_peak_force_us",
-               4,
-               [](const R &r) { return r.time_of_peak_force * 1e6; }),
-        number("contact_duration_us",
-               4,
-               [](const R &r) { return r.contact_duration * 1e6; }),
-        number("departure_velocity_m_s",
-               7,
-               [](const R &r) { return r.departure_velocity; }),
-        number("max_approach_um",
-               5,
-               [](const R &r) { return r.max_approach * 1e6; }),
-        number(
-          "max_indentation_um",
-          5,
-          [](const R &r) { return r.max_indentation * 1e6; },
-          W::contact_law),
-        number(
-          "max_hertz_indentation_um",
-          5,
-          [](const R &r) { return r.max_indentation * 1e6; },
-          W::contact_area),
-        number("max_midplane_deflection_um",
-               5,
-               [](const R &r) { return r.max_midplane_deflection * 1e6; }),
-        number("max_top_deflection_um",
-               5,
-               [](const R &r) { return r.max_top_deflection * 1e6; }),
-        scientific("contact_stiffness_Kh_N_m1.5",
-                   [](const R &r) { return r.contact_stiffness; }),
-        scientific("contact_modulus_Q_Pa",
-                   [](const R &r) { return r.contact_modulus; }),
-        number("impactor_mass_kg",
-               8,
-               [](const R &r) { return r.impactor_mass; }),
-        number("plate_mass_kg", 8, [](const R &r) { return r.plate_mass; }),
-        number("impulse_N_s", 9, [](const R &r) { return r.impulse; }),
-        number("contact_node_offset_mm",
-               6,
-               [](const R &r) { return r.contact_node_offset * 1e3; }),
-        number(
-          "max_contact_radius_mm",
-          5,
-          [](const R &r) { return r.max_contact_radius * 1e3; },
-          W::contact_area),
-        number(
-          "max_contact_pressure_MPa",
-          4,
-          [](const R &r) { return r.max_contact_pressure * 1e-6; },
-          W::contact_area),
-        number(
-          "max_contact_nodes",
-          0,
-          [](const R &r) { return double(r.max_contact_nodes); },
-          W::contact_area),
-        number(
-          "n_contact_candidates",
-          0,
-          [](const R &r) { return double(r.n_contact_candidates); },
-          W::contact_area)};
+      return {number("peak_contact_force_N",
+                     4,
+                     [](const R &r) { return r.peak_contact_force; }),
+              number("max_sampled_contact_force_N",
+                     4,
+                     [](const R &r) { return r.max_sampled_force; }),
+              number("time_of_peak_force_us",
+                     4,
+                     [](const R &r) { return r.time_of_peak_force * 1e6; }),
+              number("contact_duration_us",
+                     4,
+                     [](const R &r) { return r.contact_duration * 1e6; }),
+              number("departure_velocity_m_s",
+                     7,
+                     [](const R &r) { return r.departure_velocity; }),
+              number("max_approach_um",
+                     5,
+                     [](const R &r) { return r.max_approach * 1e6; }),
+              number(
+                "max_indentation_um",
+                5,
+                [](const R &r) { return r.max_indentation * 1e6; },
+                W::contact_law),
+              number(
+                "max_hertz_indentation_um",
+                5,
+                [](const R &r) { return r.max_indentation * 1e6; },
+                W::contact_area),
+              number("max_midplane_deflection_um",
+                     5,
+                     [](const R &r) {
+                       return r.max_midplane_deflection * 1e6;
+                     }),
+              number("max_top_deflection_um", 5, [](const R &r) {
+                return r.max_top_deflection * 1e6;
+              })};
+    }
+
+
+
+    /// The contact's constants and the ball, then the resolved contact's
+    /// extent (where it has an area).
+    std::vector<SummaryKey>
+    contact_keys()
+    {
+      using W = SummaryKey::When;
+      return {scientific("contact_stiffness_Kh_N_m1.5",
+                         [](const R &r) { return r.contact_stiffness; }),
+              scientific("contact_modulus_Q_Pa",
+                         [](const R &r) { return r.contact_modulus; }),
+              number("impactor_mass_kg",
+                     8,
+                     [](const R &r) { return r.impactor_mass; }),
+              number("plate_mass_kg",
+                     8,
+                     [](const R &r) { return r.plate_mass; }),
+              number("impulse_N_s", 9, [](const R &r) { return r.impulse; }),
+              number("contact_node_offset_mm",
+                     6,
+                     [](const R &r) { return r.contact_node_offset * 1e3; }),
+              number(
+                "max_contact_radius_mm",
+                5,
+                [](const R &r) { return r.max_contact_radius * 1e3; },
+                W::contact_area),
+              number(
+                "max_contact_pressure_MPa",
+                4,
+                [](const R &r) { return r.max_contact_pressure * 1e-6; },
+                W::contact_area),
+              number(
+                "max_contact_nodes",
+                0,
+                [](const R &r) { return double(r.max_contact_nodes); },
+                W::contact_area),
+              number(
+                "n_contact_candidates",
+                0,
+                [](const R &r) { return double(r.n_contact_candidates); },
+                W::contact_area)};
     }
 
 
@@ -245,7 +258,8 @@ namespace fgimpact
 
 
 
-    /// What a plastic plate leaves (PlasticityReport).
+    /// What a plastic plate leaves (PlasticityReport): dissipation,
+    /// crater and plastic zone.
     std::vector<SummaryKey>
     plasticity_keys()
     {
@@ -281,8 +295,18 @@ namespace fgimpact
                 "max_equivalent_plastic_strain",
                 6,
                 [](const R &r) { return r.plastic.max_plastic_strain; },
-                W),
-              number(
+                W)};
+    }
+
+
+
+    /// A plastic impact's first yield, restitution and the plate's
+    /// plastic iterations.
+    std::vector<SummaryKey>
+    first_yield_keys()
+    {
+      const auto W = SummaryKey::When::plasticity;
+      return {number(
                 "first_yield_time_us",
                 4,
                 [](const R &r) { return r.plastic.first_yield_time * 1e6; },
@@ -381,8 +405,12 @@ namespace fgimpact
     // In the file's order.
     static const std::vector<SummaryKey> keys = [] {
       std::vector<SummaryKey> all = model_keys();
-      for (const auto &group :
-           {result_keys(), plasticity_keys(), validity_keys(), run_keys()})
+      for (const auto &group : {result_keys(),
+                                contact_keys(),
+                                plasticity_keys(),
+                                first_yield_keys(),
+                                validity_keys(),
+                                run_keys()})
         all.insert(all.end(), group.begin(), group.end());
       return all;
     }();

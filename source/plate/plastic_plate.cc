@@ -25,20 +25,14 @@ namespace fgimpact
 
 
 
-  namespace
+  void
+  PlasticPlate::copy_owned(const TrilinosWrappers::MPI::Vector &from,
+                           TrilinosWrappers::MPI::Vector       &to)
   {
-    /// to = from on the owned entries (same owned DoFs, same order).  Not
-    /// operator=, whose Epetra map comparison is collective on some ranks
-    /// only: a resumed 2-rank J2 run deadlocked in it.
-    void
-    copy_owned(const TrilinosWrappers::MPI::Vector &from,
-               TrilinosWrappers::MPI::Vector       &to)
-    {
-      AssertThrow(from.locally_owned_size() == to.locally_owned_size(),
-                  ExcInternalError());
-      std::copy(from.begin(), from.end(), to.begin());
-    }
-  } // namespace
+    AssertThrow(from.locally_owned_size() == to.locally_owned_size(),
+                ExcInternalError());
+    std::copy(from.begin(), from.end(), to.begin());
+  }
 
 
 
@@ -81,19 +75,13 @@ namespace fgimpact
     cell_of_active.assign(
       plate.get_dof_handler().get_triangulation().n_active_cells(), -1);
 
-    const auto &map = u_ghosted.trilinos_vector().Map();
     std::map<std::array<double, 3>, unsigned int> tables;
-    std::vector<types::global_dof_index>          cell_dofs(n_dofs);
     std::vector<double>                           E, nu, rho;
     for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          bool any_metal = false;
-          for (unsigned int q = 0; q < n_points; ++q)
-            any_metal = any_metal ||
-                        strength.metal_rich(fe_values.quadrature_point(q)[2]);
-          if (!any_metal)
+          if (!any_metal_rich(fe_values))
             continue;
           const std::array<double, 3> extent = {{cell->extent_in_direction(0),
                                                  cell->extent_in_direction(1),
@@ -101,16 +89,7 @@ namespace fgimpact
           const auto [it, added] = tables.emplace(extent, gradients.size());
           if (added)
             add_table(fe_values, quadrature, extent);
-          cell->get_dof_indices(cell_dofs);
-          dofs.insert(dofs.end(), cell_dofs.begin(), cell_dofs.end());
-          const std::size_t first = local_index.size();
-          local_index.resize(first + n_dofs);
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            {
-              const auto [c, s]              = fe.system_to_component_index(i);
-              local_index[first + s * 3 + c] = map.LID(
-                static_cast<TrilinosWrappers::types::int_type>(cell_dofs[i]));
-            }
+          add_cell_dofs(cell);
           cell_of_active[cell->active_cell_index()] = table.size();
           table.push_back(it->second);
           active_index.push_back(cell->active_cell_index());
@@ -123,6 +102,37 @@ namespace fgimpact
     trial_utilization.assign(yield.size(), 0.);
     utilization.assign(yield.size(), 0.);
     plastic_cell.assign(table.size(), false);
+  }
+
+
+
+  bool
+  PlasticPlate::any_metal_rich(const FEValues<3> &fe_values) const
+  {
+    for (unsigned int q = 0; q < n_points; ++q)
+      if (strength.metal_rich(fe_values.quadrature_point(q)[2]))
+        return true;
+    return false;
+  }
+
+
+
+  void
+  PlasticPlate::add_cell_dofs(const DoFHandler<3>::active_cell_iterator &cell)
+  {
+    const auto &fe  = plate.get_fe();
+    const auto &map = u_ghosted.trilinos_vector().Map();
+    std::vector<types::global_dof_index> cell_dofs(n_dofs);
+    cell->get_dof_indices(cell_dofs);
+    dofs.insert(dofs.end(), cell_dofs.begin(), cell_dofs.end());
+    const std::size_t first = local_index.size();
+    local_index.resize(first + n_dofs);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        const auto [c, s] = fe.system_to_component_index(i);
+        local_index[first + s * 3 + c] =
+          map.LID(static_cast<TrilinosWrappers::types::int_type>(cell_dofs[i]));
+      }
   }
 
 
@@ -215,18 +225,7 @@ namespace fgimpact
   PlasticPlate::update(const TrilinosWrappers::MPI::Vector &u)
   {
     ++iterations;
-    copy_owned(u, u_distributed);
-    plate.get_constraints().distribute(u_distributed);
-    if (!importer)
-      importer =
-        std::make_unique<Epetra_Import>(u_ghosted.trilinos_vector().Map(),
-                                        u.trilinos_vector().Map());
-    const int error =
-      u_ghosted.trilinos_vector().Import(u_distributed.trilinos_vector(),
-                                         *importer,
-                                         Insert);
-    AssertThrow(error == 0, ExcTrilinosError(error));
-    const double *const values = u_ghosted.trilinos_vector()[0];
+    const double *const values = ghosted_values(u);
 
     new_force = 0.;
     CellResult                           cell;
@@ -240,12 +239,7 @@ namespace fgimpact
           cell_u[i] = values[local_index[c * n_dofs + i]];
         if (!plastic_cell[c] && can_skip(c, cell_u))
           {
-            for (unsigned int q = 0; q < n_points; ++q)
-              {
-                trial[c * n_points + q]             = PlasticState();
-                trial_work[c * n_points + q]        = 0;
-                trial_utilization[c * n_points + q] = 0;
-              }
+            clear_trial(c);
             continue;
           }
         evaluate_cell(c, cell_u, cell);
@@ -274,6 +268,38 @@ namespace fgimpact
     const double change = residual.linfty_norm();
     relax();
     return change;
+  }
+
+
+
+  const double *
+  PlasticPlate::ghosted_values(const TrilinosWrappers::MPI::Vector &u)
+  {
+    copy_owned(u, u_distributed);
+    plate.get_constraints().distribute(u_distributed);
+    if (!importer)
+      importer =
+        std::make_unique<Epetra_Import>(u_ghosted.trilinos_vector().Map(),
+                                        u.trilinos_vector().Map());
+    const int error =
+      u_ghosted.trilinos_vector().Import(u_distributed.trilinos_vector(),
+                                         *importer,
+                                         Insert);
+    AssertThrow(error == 0, ExcTrilinosError(error));
+    return u_ghosted.trilinos_vector()[0];
+  }
+
+
+
+  void
+  PlasticPlate::clear_trial(const unsigned int c)
+  {
+    for (unsigned int q = 0; q < n_points; ++q)
+      {
+        trial[c * n_points + q]             = PlasticState();
+        trial_work[c * n_points + q]        = 0;
+        trial_utilization[c * n_points + q] = 0;
+      }
   }
 
 
@@ -439,62 +465,5 @@ namespace fgimpact
     // starts from the committed plastic strain's own load.
     copy_owned(new_force, committed_force);
     copy_owned(new_force, force);
-  }
-
-
-
-  void
-  PlasticPlate::save(CheckpointWriter &out) const
-  {
-    std::vector<double> state;
-    state.reserve(7 * committed.size());
-    for (const auto &point : committed)
-      {
-        for (unsigned int i = 0;
-             i < SymmetricTensor<2, 3>::n_independent_components;
-             ++i)
-          state.push_back(point.plastic_strain.access_raw_entry(i));
-        state.push_back(point.equivalent_plastic_strain);
-      }
-    out.put(state);
-    out.put(committed_force);
-    out.put(work);
-    out.put(max_plastic_strain);
-    out.put(total_iterations);
-    out.put(max_iterations);
-  }
-
-
-
-  void
-  PlasticPlate::load(CheckpointReader &in)
-  {
-    std::vector<double> state;
-    in.get(state);
-    AssertThrow(state.size() == 7 * committed.size(),
-                ExcMessage("the checkpoint's plastic state does not match "
-                           "this mesh."));
-    for (unsigned int k = 0; k < committed.size(); ++k)
-      {
-        for (unsigned int i = 0; i < 6; ++i)
-          committed[k].plastic_strain.access_raw_entry(i) = state[7 * k + i];
-        committed[k].equivalent_plastic_strain = state[7 * k + 6];
-      }
-    trial = committed;
-    for (unsigned int c = 0; c < table.size(); ++c)
-      {
-        bool plastic = false;
-        for (unsigned int q = 0; q < n_points; ++q)
-          plastic = plastic ||
-                    committed[c * n_points + q].equivalent_plastic_strain > 0.;
-        plastic_cell[c] = plastic;
-      }
-    in.get(committed_force);
-    in.get(work);
-    in.get(max_plastic_strain);
-    in.get(total_iterations);
-    in.get(max_iterations);
-    copy_owned(committed_force, force);
-    copy_owned(committed_force, new_force);
   }
 } // namespace fgimpact

@@ -1,5 +1,6 @@
 // The plastic state at points and per cell, for the outputs
-// (plastic_plate.h): what the VTU, the probes and the validity report read.
+// (plastic_plate.h): what the VTU, the probes and the validity report read;
+// and the state's checkpoint section (save(), load()).
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -144,5 +145,62 @@ namespace fgimpact
       return std::numeric_limits<double>::infinity();
     return strength.yield_strength(z) +
            strength.hardening_modulus(z) * equivalent_plastic_strain;
+  }
+
+
+
+  void
+  PlasticPlate::save(CheckpointWriter &out) const
+  {
+    std::vector<double> state;
+    state.reserve(7 * committed.size());
+    for (const auto &point : committed)
+      {
+        for (unsigned int i = 0;
+             i < SymmetricTensor<2, 3>::n_independent_components;
+             ++i)
+          state.push_back(point.plastic_strain.access_raw_entry(i));
+        state.push_back(point.equivalent_plastic_strain);
+      }
+    out.put(state);
+    out.put(committed_force);
+    out.put(work);
+    out.put(max_plastic_strain);
+    out.put(total_iterations);
+    out.put(max_iterations);
+  }
+
+
+
+  void
+  PlasticPlate::load(CheckpointReader &in)
+  {
+    std::vector<double> state;
+    in.get(state);
+    AssertThrow(state.size() == 7 * committed.size(),
+                ExcMessage("the checkpoint's plastic state does not match "
+                           "this mesh."));
+    for (unsigned int k = 0; k < committed.size(); ++k)
+      {
+        for (unsigned int i = 0; i < 6; ++i)
+          committed[k].plastic_strain.access_raw_entry(i) = state[7 * k + i];
+        committed[k].equivalent_plastic_strain = state[7 * k + 6];
+      }
+    trial = committed;
+    for (unsigned int c = 0; c < table.size(); ++c)
+      {
+        bool plastic = false;
+        for (unsigned int q = 0; q < n_points; ++q)
+          plastic = plastic ||
+                    committed[c * n_points + q].equivalent_plastic_strain > 0.;
+        plastic_cell[c] = plastic;
+      }
+    in.get(committed_force);
+    in.get(work);
+    in.get(max_plastic_strain);
+    in.get(total_iterations);
+    in.get(max_iterations);
+    copy_owned(committed_force, force);
+    copy_owned(committed_force, new_force);
   }
 } // namespace fgimpact

@@ -10,6 +10,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <fgimpact/base/selection.h>
+#include <fgimpact/plate/cell_matrices.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <algorithm>
@@ -211,14 +212,7 @@ namespace fgimpact
           fe_values.reinit(cell);
           properties.values(cell, E, nu, rho);
           cell_r = 0;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                if (cell_d[j] != 0. && fe.system_to_component_index(i).first ==
-                                         fe.system_to_component_index(j).first)
-                  cell_r[i] += rho[q] * fe_values.shape_value(i, q) *
-                               fe_values.shape_value(j, q) * cell_d[j] *
-                               fe_values.JxW(q);
+          add_cell_mass_product(fe_values, rho, cell_d, cell_r);
           cell->get_dof_indices(local_dofs);
           constraints.distribute_local_to_global(cell_r,
                                                  local_dofs,
@@ -308,7 +302,6 @@ namespace fgimpact
                                     material);
 
     const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
-    const unsigned int                   n_q           = quadrature.size();
     FullMatrix<double>                   cell_K(dofs_per_cell, dofs_per_cell);
     FullMatrix<double>                   cell_M(dofs_per_cell, dofs_per_cell);
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
@@ -322,37 +315,7 @@ namespace fgimpact
           cell_K = 0;
           cell_M = 0;
 
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              const double lambda = HookeLaw::lambda(E[q], nu[q]);
-              const double mu     = HookeLaw::mu(E[q], nu[q]);
-              const double JxW    = fe_values.JxW(q);
-              for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                {
-                  const unsigned int ci = fe.system_to_component_index(i).first;
-                  const Tensor<1, 3> grad_i = fe_values.shape_grad(i, q);
-                  const double       phi_i  = fe_values.shape_value(i, q);
-                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
-                    {
-                      const unsigned int cj =
-                        fe.system_to_component_index(j).first;
-                      const Tensor<1, 3> grad_j = fe_values.shape_grad(j, q);
-                      // step-8's component form of
-                      // lambda div(phi_i) div(phi_j) + 2 mu
-                      // eps(phi_i):eps(phi_j)
-                      double k_ij = lambda * grad_i[ci] * grad_j[cj] +
-                                    mu * grad_i[cj] * grad_j[ci];
-                      if (ci == cj)
-                        {
-                          k_ij += mu * (grad_i * grad_j);
-                          cell_M(i, j) +=
-                            rho[q] * phi_i * fe_values.shape_value(j, q) * JxW;
-                        }
-                      cell_K(i, j) += k_ij * JxW;
-                    }
-                }
-            }
-
+          add_elastic_cell_matrices(fe_values, E, nu, rho, cell_K, cell_M);
           if (parameters.mean_dilatation)
             replace_dilatation(fe_values, E, nu, cell, cell_K);
           cell->get_dof_indices(local_dofs);

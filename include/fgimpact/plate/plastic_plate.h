@@ -195,6 +195,33 @@ namespace fgimpact
     load(CheckpointReader &in);
 
   private:
+    /// to = from on the owned entries (same owned DoFs, same order).  Not
+    /// operator=, whose Epetra map comparison is collective on some ranks
+    /// only: a resumed 2-rank J2 run deadlocked in it.
+    static void
+    copy_owned(const TrilinosWrappers::MPI::Vector &from,
+               TrilinosWrappers::MPI::Vector       &to);
+
+    /// Whether any quadrature point of fe_values is metal-rich enough to
+    /// yield (GradedStrength::metal_rich()).
+    bool
+    any_metal_rich(const FEValues<3> &fe_values) const;
+
+    /// A plastic cell's DoFs into dofs and their indices in u_ghosted into
+    /// local_index (point-major: 3 s + component).
+    void
+    add_cell_dofs(const DoFHandler<3>::active_cell_iterator &cell);
+
+    /// u with its constraints distributed, imported into u_ghosted: its
+    /// values, indexed by local_index.
+    const double *
+    ghosted_values(const TrilinosWrappers::MPI::Vector &u);
+
+    /// The trial state of an elastic cell c that update() skipped: no
+    /// plastic strain, work or utilization.
+    void
+    clear_trial(const unsigned int c);
+
     void
     setup();
 
