@@ -6,6 +6,8 @@ cd "$(dirname "$0")/.."
 # The library's floors: no include runs back up (issue 39; doc/code_map.md, "Code
 # map").
 scripts/check_floors.py
+# No .cc over 500 lines, no function over 60 (pmccabe; doc/code_map.md).
+scripts/check_sizes.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 # fgimpact_unit_tests: every unit test's body, built once before ctest
 # (its tests would otherwise race to build it; tests/unit/CMakeLists.txt).
