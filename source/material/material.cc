@@ -1,3 +1,4 @@
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/material/material.h>
 
 #include <algorithm>
@@ -31,59 +32,10 @@ namespace fgimpact
 
   namespace
   {
+    /// Material/Ceramic Poisson's ratio: 'same' (-2) or a number.
     void
-    declare_gradation_parameters(ParameterHandler &prm)
-    {
-      prm.declare_entry(
-        "Ceramic Poisson's ratio",
-        "same",
-        Patterns::Anything(),
-        "Poisson's ratio nu_c of the ceramic (bottom face): 'same' (the "
-        "metal's, Poisson's ratio) or a number in [-0.99, 0.49]. With a "
-        "different value nu varies through the thickness. Dimensionless.");
-      prm.declare_entry(
-        "Gradation",
-        "power law",
-        gradation_names().pattern(),
-        "How the properties vary with zeta = z/h (z from the bottom face; "
-        "metal on top). " +
-          gradation_help());
-      prm.declare_entry(
-        "Homogenization",
-        "rule of mixtures",
-        homogenization_names().pattern(),
-        "How E and nu of the mixture follow from the metal volume fraction "
-        "(power law and sigmoid only). rule of mixtures: P = P_c + (P_m - "
-        "P_c) V_m for E, nu and rho. Mori-Tanaka: metal matrix with ceramic "
-        "inclusions, Mori-Tanaka bulk and shear moduli (nu then varies even "
-        "with equal constituent ratios); rho by the rule of mixtures.");
-      prm.declare_entry(
-        "Profile file",
-        "",
-        Patterns::FileName(),
-        "Gradation = tabulated: a CSV file with the columns z/h (from the "
-        "bottom face, strictly increasing from 0 to 1), E (Pa), nu and rho "
-        "(kg/m^3); '#' starts a comment, one header line is allowed. A "
-        "relative path is relative to the directory of the .prm given on "
-        "the command line (parameters.prm records it as an absolute path).");
-      prm.declare_entry(
-        "Graded nodal values",
-        "sampled",
-        graded_nodal_values_names().pattern(),
-        "Property mode = graded: the nodal values the elements interpolate. "
-        "sampled: the profile at the nodes (Eq. 3.3). layer average: the "
-        "element-wise L2 projection of the profile onto polynomials in z "
-        "of the element degree, so that each element keeps the exact "
-        "average of E, nu and rho over its thickness; a boundary layer "
-        "thinner than an element (n -> 0+) is then not misread "
-        "(doc/theory.md).");
-    }
-
-
-
-    void
-    parse_gradation_parameters(ParameterHandler                       &prm,
-                               FunctionallyGradedMaterial::Parameters &p)
+    parse_ceramic_poissons_ratio(ParameterHandler                       &prm,
+                                 FunctionallyGradedMaterial::Parameters &p)
     {
       const std::string nu_c = prm.get("Ceramic Poisson's ratio");
       if (nu_c == "same")
@@ -107,16 +59,105 @@ namespace fgimpact
                                  "[-0.99, 0.49]."));
           p.ceramic_poissons_ratio = value;
         }
-      p.gradation = gradation_names().value(prm.get("Gradation"));
-      p.homogenization =
-        homogenization_names().value(prm.get("Homogenization"));
-      p.profile_file = prm.get("Profile file");
-      AssertThrow(p.gradation != Gradation::tabulated ||
-                    !p.profile_file.empty(),
-                  ExcMessage("Material/Gradation = tabulated needs "
-                             "Material/Profile file."));
-      p.graded_nodal_values =
-        graded_nodal_values_names().value(prm.get("Graded nodal values"));
+    }
+  } // namespace
+
+
+
+  namespace
+  {
+    /// The entries of Material that set a member as they stand.
+    const ParameterTable<FunctionallyGradedMaterial::Parameters> &
+    material_table()
+    {
+      using P = FunctionallyGradedMaterial::Parameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add("Metal Young's modulus",
+              &P::metal_youngs_modulus,
+              Patterns::Double(1e3, 1e15),
+              "Young's modulus E_m of the metal constituent, on top "
+              "of the plate (z = h). Unit: Pa.");
+        t.add("Metal density",
+              &P::metal_density,
+              Patterns::Double(1e-3, 1e6),
+              "Mass density rho_m of the metal constituent. "
+              "Unit: kg/m^3.");
+        t.add("Ceramic Young's modulus",
+              &P::ceramic_youngs_modulus,
+              Patterns::Double(1e3, 1e15),
+              "Young's modulus E_c of the ceramic constituent, at "
+              "the bottom of the plate (z = 0). Unit: Pa.");
+        t.add("Ceramic density",
+              &P::ceramic_density,
+              Patterns::Double(1e-3, 1e6),
+              "Mass density rho_c of the ceramic constituent. "
+              "Unit: kg/m^3.");
+        t.add("Poisson's ratio",
+              &P::poissons_ratio,
+              Patterns::Double(-0.99, 0.49),
+              "Poisson's ratio nu of the metal, and of the "
+              "ceramic unless Ceramic Poisson's ratio is set: then "
+              "constant through the thickness (Eq. 2.12). "
+              "Dimensionless.");
+        t.add("Power-law index",
+              &P::power_law_index,
+              Patterns::Double(0., 1e6),
+              "Volume fraction index n of Eq. 2.1, "
+              "P(z) = P_c + (P_m - P_c) (z/h)^n with z from the "
+              "bottom face. n = 0 is pure METAL (the paper's "
+              "convention, opposite to most FGM papers); n -> "
+              "infinity tends to pure ceramic. Dimensionless.");
+        t.add(
+          "Property mode",
+          &P::property_mode,
+          property_mode_names(),
+          "graded: E and rho are interpolated from their nodal values with the "
+          "element shape functions at every quadrature point (graded finite "
+          "elements, Eq. 3.3). homogeneous: one value per element, evaluated "
+          "at the element centre (conventional elements). pointwise: E(z) and "
+          "rho(z) of Eq. 2.1 evaluated at every quadrature point (no "
+          "interpolation; for steep gradients, large n, where the graded "
+          "interpolant smears the metal skin over the top element).");
+        t.add(
+          "Gradation",
+          &P::gradation,
+          gradation_names(),
+          "How the properties vary with zeta = z/h (z from the bottom face; "
+          "metal on top). " +
+            gradation_help());
+        t.add(
+          "Homogenization",
+          &P::homogenization,
+          homogenization_names(),
+          "How E and nu of the mixture follow from the metal volume fraction "
+          "(power law and sigmoid only). rule of mixtures: P = P_c + (P_m - "
+          "P_c) V_m for E, nu and rho. Mori-Tanaka: metal matrix with ceramic "
+          "inclusions, Mori-Tanaka bulk and shear moduli (nu then varies even "
+          "with equal constituent ratios); rho by the rule of mixtures.");
+        t.add(
+          "Profile file",
+          &P::profile_file,
+          Patterns::FileName(),
+          "Gradation = tabulated: a CSV file with the columns z/h (from the "
+          "bottom face, strictly increasing from 0 to 1), E (Pa), nu and rho "
+          "(kg/m^3); '#' starts a comment, one header line is allowed. A "
+          "relative path is relative to the directory of the .prm given on "
+          "the command line (parameters.prm records it as an absolute path).");
+        t.add(
+          "Graded nodal values",
+          &P::graded_nodal_values,
+          graded_nodal_values_names(),
+          "Property mode = graded: the nodal values the elements interpolate. "
+          "sampled: the profile at the nodes (Eq. 3.3). layer average: the "
+          "element-wise L2 projection of the profile onto polynomials in z "
+          "of the element degree, so that each element keeps the exact "
+          "average of E, nu and rho over its thickness; a boundary layer "
+          "thinner than an element (n -> 0+) is then not misread "
+          "(doc/theory.md).");
+        return t;
+      }();
+      return table;
     }
   } // namespace
 
@@ -128,53 +169,15 @@ namespace fgimpact
   {
     prm.enter_subsection("Material");
     {
-      prm.declare_entry("Metal Young's modulus",
-                        "70e9",
-                        Patterns::Double(1e3, 1e15),
-                        "Young's modulus E_m of the metal constituent, on top "
-                        "of the plate (z = h). Unit: Pa.");
-      prm.declare_entry("Metal density",
-                        "2707",
-                        Patterns::Double(1e-3, 1e6),
-                        "Mass density rho_m of the metal constituent. "
-                        "Unit: kg/m^3.");
-      prm.declare_entry("Ceramic Young's modulus",
-                        "380e9",
-                        Patterns::Double(1e3, 1e15),
-                        "Young's modulus E_c of the ceramic constituent, at "
-                        "the bottom of the plate (z = 0). Unit: Pa.");
-      prm.declare_entry("Ceramic density",
-                        "3800",
-                        Patterns::Double(1e-3, 1e6),
-                        "Mass density rho_c of the ceramic constituent. "
-                        "Unit: kg/m^3.");
-      prm.declare_entry("Poisson's ratio",
-                        "0.3",
-                        Patterns::Double(-0.99, 0.49),
-                        "Poisson's ratio nu of the metal, and of the "
-                        "ceramic unless Ceramic Poisson's ratio is set: then "
-                        "constant through the thickness (Eq. 2.12). "
-                        "Dimensionless.");
-      prm.declare_entry("Power-law index",
-                        "1",
-                        Patterns::Double(0., 1e6),
-                        "Volume fraction index n of Eq. 2.1, "
-                        "P(z) = P_c + (P_m - P_c) (z/h)^n with z from the "
-                        "bottom face. n = 0 is pure METAL (the paper's "
-                        "convention, opposite to most FGM papers); n -> "
-                        "infinity tends to pure ceramic. Dimensionless.");
+      material_table().declare(prm);
+      // Not a member as it stands: 'same' is ceramic_poissons_ratio < -1.
       prm.declare_entry(
-        "Property mode",
-        "graded",
-        property_mode_names().pattern(),
-        "graded: E and rho are interpolated from their nodal values with the "
-        "element shape functions at every quadrature point (graded finite "
-        "elements, Eq. 3.3). homogeneous: one value per element, evaluated "
-        "at the element centre (conventional elements). pointwise: E(z) and "
-        "rho(z) of Eq. 2.1 evaluated at every quadrature point (no "
-        "interpolation; for steep gradients, large n, where the graded "
-        "interpolant smears the metal skin over the top element).");
-      declare_gradation_parameters(prm);
+        "Ceramic Poisson's ratio",
+        "same",
+        Patterns::Anything(),
+        "Poisson's ratio nu_c of the ceramic (bottom face): 'same' (the "
+        "metal's, Poisson's ratio) or a number in [-0.99, 0.49]. With a "
+        "different value nu varies through the thickness. Dimensionless.");
     }
     prm.leave_subsection();
   }
@@ -187,14 +190,11 @@ namespace fgimpact
   {
     prm.enter_subsection("Material");
     {
-      metal_youngs_modulus   = prm.get_double("Metal Young's modulus");
-      metal_density          = prm.get_double("Metal density");
-      ceramic_youngs_modulus = prm.get_double("Ceramic Young's modulus");
-      ceramic_density        = prm.get_double("Ceramic density");
-      poissons_ratio         = prm.get_double("Poisson's ratio");
-      power_law_index        = prm.get_double("Power-law index");
-      property_mode = property_mode_names().value(prm.get("Property mode"));
-      parse_gradation_parameters(prm, *this);
+      material_table().parse(prm, *this);
+      parse_ceramic_poissons_ratio(prm, *this);
+      AssertThrow(gradation != Gradation::tabulated || !profile_file.empty(),
+                  ExcMessage("Material/Gradation = tabulated needs "
+                             "Material/Profile file."));
     }
     prm.leave_subsection();
   }
