@@ -10,8 +10,9 @@ namespace fgimpact
   {
     // Plain decimals in [1e-4, 1e6), as one writes them ("0.2", "2707");
     // outside, engineering notation as SI values are written ("70e9",
-    // "1e-6", "25e-6"). to_chars without a precision gives the shortest
-    // digits that read back as the same double.
+    // "1e-6", "25e-6") where it needs at most one padding zero. to_chars
+    // without a precision gives the shortest digits that read back as the same
+    // double.
     const double magnitude = std::abs(value);
     char         buffer[64];
     if (value == 0. || (magnitude >= 1e-4 && magnitude < 1e6))
@@ -37,8 +38,11 @@ namespace fgimpact
     for (const char c : text.substr(0, e))
       if (c >= '0' && c <= '9')
         digits += c;
-    // The mantissa in [1, 1000): exponent a multiple of 3.
-    const int shift = ((exponent % 3) + 3) % 3;
+    // The mantissa in [1, 1000), exponent a multiple of 3 ("380e9"),
+    // unless that pads it with two zeros ("3e8", not "300e6").
+    int shift = ((exponent % 3) + 3) % 3;
+    if (digits.size() + 2 <= static_cast<std::size_t>(shift) + 1)
+      shift = 0;
     while (digits.size() < static_cast<std::size_t>(shift) + 1)
       digits += '0';
     std::string mantissa = digits.substr(0, shift + 1);

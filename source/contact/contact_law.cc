@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/base/selection.h>
 #include <fgimpact/contact/contact_law.h>
 
@@ -61,31 +62,50 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The entries of HertzContactLaw::Parameters that set a member as they
+    /// stand.
+    const ParameterTable<HertzContactLaw::Parameters> &
+    contact_law_table()
+    {
+      using P                              = HertzContactLaw::Parameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add(
+          "Plate modulus",
+          &P::plate_modulus,
+          plate_modulus_names(),
+          "turner graded: the paper's modified Hertz law, Turner's apparent "
+          "modulus (Eq. 2.9, consistent form) of the contact region whose "
+          "Voigt/Reuss properties follow from V_m = 1/(1+n) (Eqs. 2.2-2.3). "
+          "isotropic top: the plain Hertz law with the top face's "
+          "Q = E_m/(1 - nu^2).");
+        t.add("Swanson beta",
+              &P::swanson_beta,
+              Patterns::Double(1e-6, 1e6),
+              "Swanson's empirical finite-thickness factor beta of "
+              "Eq. 2.8, F = beta K_h alpha^{3/2}. Dimensionless.");
+        t.add("Contact stiffness",
+              &P::given_stiffness,
+              Patterns::Double(0., 1e20),
+              "K_h given directly (e.g. measured), overriding the "
+              "law above (Swanson beta still multiplies it); 0 = "
+              "compute it from the law. Unit: N/m^1.5.");
+        return t;
+      }();
+      return table;
+    }
+  } // namespace
+
+
+
   void
   HertzContactLaw::Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
     {
-      prm.declare_entry(
-        "Plate modulus",
-        "turner graded",
-        plate_modulus_names().pattern(),
-        "turner graded: the paper's modified Hertz law, Turner's apparent "
-        "modulus (Eq. 2.9, consistent form) of the contact region whose "
-        "Voigt/Reuss properties follow from V_m = 1/(1+n) (Eqs. 2.2-2.3). "
-        "isotropic top: the plain Hertz law with the top face's "
-        "Q = E_m/(1 - nu^2).");
-      prm.declare_entry("Swanson beta",
-                        "1",
-                        Patterns::Double(1e-6, 1e6),
-                        "Swanson's empirical finite-thickness factor beta of "
-                        "Eq. 2.8, F = beta K_h alpha^{3/2}. Dimensionless.");
-      prm.declare_entry("Contact stiffness",
-                        "0",
-                        Patterns::Double(0., 1e20),
-                        "K_h given directly (e.g. measured), overriding the "
-                        "law above (Swanson beta still multiplies it); 0 = "
-                        "compute it from the law. Unit: N/m^1.5.");
+      contact_law_table().declare(prm);
     }
     prm.leave_subsection();
   }
@@ -97,9 +117,7 @@ namespace fgimpact
   {
     prm.enter_subsection("Contact");
     {
-      plate_modulus   = plate_modulus_names().value(prm.get("Plate modulus"));
-      swanson_beta    = prm.get_double("Swanson beta");
-      given_stiffness = prm.get_double("Contact stiffness");
+      contact_law_table().parse(prm, *this);
     }
     prm.leave_subsection();
   }

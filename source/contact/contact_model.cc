@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/base/selection.h>
 #include <fgimpact/contact/contact_model.h>
 #include <fgimpact/contact/resolved_contact.h>
@@ -377,40 +378,58 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The entries of ContactModelParameters that set a member as they stand.
+    const ParameterTable<ContactModelParameters> &
+    contact_model_table()
+    {
+      using P                              = ContactModelParameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add("Model",
+              &P::model,
+              ContactModelParameters::model_names(),
+              contact_model_registry().help());
+        t.add(
+          "Gap shape",
+          &P::paraboloid_gap,
+          gap_shape_names(),
+          "resolved sphere: the height of the ball's surface above its lowest "
+          "point at distance r, R - sqrt(R^2 - r^2) (sphere) or the Hertz "
+          "approximation r^2/(2R) (paraboloid).");
+        t.add(
+          "Stabilization",
+          &P::modified_mass,
+          stabilization_names(),
+          "resolved sphere: modified mass = the contact candidates' z "
+          "degrees of freedom carry no mass (Khenous, Laborde & Renard 2008), "
+          "which removes the chatter and the energy error of Newmark with hard "
+          "contact (doc/contact.md); the mass removed vanishes with the "
+          "element size and is logged. none = the consistent mass.");
+        t.add(
+          "Candidate radius",
+          &P::candidate_radius,
+          Patterns::Double(0., 10.),
+          "resolved sphere: top nodes within this distance of the impact "
+          "point are contact candidates (one solve each at set-up); 0 = "
+          "automatic, 1.5 times the largest contact radius of the ball on a "
+          "half-space of the top face's modulus plus two of the smallest "
+          "elements. Unit: m.");
+        return t;
+      }();
+      return table;
+    }
+  } // namespace
+
+
+
   void
   ContactModelParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
     {
-      prm.declare_entry("Model",
-                        "hertz node",
-                        model_names().pattern(),
-                        contact_model_registry().help());
-      prm.declare_entry(
-        "Gap shape",
-        "sphere",
-        gap_shape_names().pattern(),
-        "resolved sphere: the height of the ball's surface above its lowest "
-        "point at distance r, R - sqrt(R^2 - r^2) (sphere) or the Hertz "
-        "approximation r^2/(2R) (paraboloid).");
-      prm.declare_entry(
-        "Stabilization",
-        "modified mass",
-        stabilization_names().pattern(),
-        "resolved sphere: modified mass = the contact candidates' z "
-        "degrees of freedom carry no mass (Khenous, Laborde & Renard 2008), "
-        "which removes the chatter and the energy error of Newmark with hard "
-        "contact (doc/contact.md); the mass removed vanishes with the "
-        "element size and is logged. none = the consistent mass.");
-      prm.declare_entry(
-        "Candidate radius",
-        "0",
-        Patterns::Double(0., 10.),
-        "resolved sphere: top nodes within this distance of the impact "
-        "point are contact candidates (one solve each at set-up); 0 = "
-        "automatic, 1.5 times the largest contact radius of the ball on a "
-        "half-space of the top face's modulus plus two of the smallest "
-        "elements. Unit: m.");
+      contact_model_table().declare(prm);
     }
     prm.leave_subsection();
   }
@@ -421,10 +440,7 @@ namespace fgimpact
   ContactModelParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Contact");
-    model            = model_names().value(prm.get("Model"));
-    paraboloid_gap   = gap_shape_names().value(prm.get("Gap shape"));
-    modified_mass    = stabilization_names().value(prm.get("Stabilization"));
-    candidate_radius = prm.get_double("Candidate radius");
+    contact_model_table().parse(prm, *this);
     prm.leave_subsection();
   }
 

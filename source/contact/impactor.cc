@@ -1,3 +1,4 @@
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/base/selection.h>
 #include <fgimpact/contact/impactor.h>
 
@@ -20,60 +21,78 @@ namespace fgimpact
   } // namespace
 
 
+  namespace
+  {
+    /// The entries of Impactor::Parameters that set a member as they stand.
+    const ParameterTable<Impactor::Parameters> &
+    impactor_table()
+    {
+      using P                              = Impactor::Parameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add("Radius",
+              &P::radius,
+              Patterns::Double(1e-6, 10.),
+              "Radius R of the spherical impactor. Unit: m.");
+        t.add("Density",
+              &P::density,
+              Patterns::Double(1e-3, 1e6),
+              "Mass density rho_i of the impactor; its mass is "
+              "4/3 pi R^3 rho_i unless 'Mass' is set. "
+              "Unit: kg/m^3.");
+        t.add("Mass",
+              &P::given_mass,
+              Patterns::Double(0., 1e6),
+              "Impactor mass given directly, overriding the one "
+              "computed from radius and density; 0 = compute it. "
+              "Unit: kg.");
+        t.add("Initial velocity",
+              &P::initial_velocity,
+              Patterns::Double(1e-9, 1e3),
+              "Impact velocity V0 towards the plate (along -z), "
+              "Eq. 2.16. Unit: m/s.");
+        t.add("Impact point x",
+              &P::impact_x,
+              Patterns::Double(-1., 1e3),
+              "x coordinate of the impact point on the top face; a "
+              "negative value means the centre a/2. The contact "
+              "force acts at the top-surface node nearest to it. "
+              "Unit: m.");
+        t.add("Impact point y",
+              &P::impact_y,
+              Patterns::Double(-1., 1e3),
+              "y coordinate of the impact point; negative means "
+              "b/2. Unit: m.");
+        t.add("Material",
+              &P::elastic,
+              ball_material_names(),
+              "rigid: Q_alpha = Q_zp (Eq. 2.7). elastic: "
+              "1/Q_alpha = 1/Q_zi + 1/Q_zp (Eq. 2.6) with the "
+              "impactor's Young's modulus and Poisson's ratio.");
+        t.add("Young's modulus",
+              &P::youngs_modulus,
+              Patterns::Double(1e3, 1e15),
+              "Young's modulus E_i of an elastic impactor. Unit: "
+              "Pa.");
+        t.add("Poisson's ratio",
+              &P::poissons_ratio,
+              Patterns::Double(-0.99, 0.49),
+              "Poisson's ratio nu_i of an elastic impactor. "
+              "Dimensionless.");
+        return t;
+      }();
+      return table;
+    }
+  } // namespace
+
+
+
   void
   Impactor::Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Impactor");
     {
-      prm.declare_entry("Radius",
-                        "0.015",
-                        Patterns::Double(1e-6, 10.),
-                        "Radius R of the spherical impactor. Unit: m.");
-      prm.declare_entry("Density",
-                        "7800",
-                        Patterns::Double(1e-3, 1e6),
-                        "Mass density rho_i of the impactor; its mass is "
-                        "4/3 pi R^3 rho_i unless 'Mass' is set. "
-                        "Unit: kg/m^3.");
-      prm.declare_entry("Mass",
-                        "0",
-                        Patterns::Double(0., 1e6),
-                        "Impactor mass given directly, overriding the one "
-                        "computed from radius and density; 0 = compute it. "
-                        "Unit: kg.");
-      prm.declare_entry("Initial velocity",
-                        "1",
-                        Patterns::Double(1e-9, 1e3),
-                        "Impact velocity V0 towards the plate (along -z), "
-                        "Eq. 2.16. Unit: m/s.");
-      prm.declare_entry("Impact point x",
-                        "-1",
-                        Patterns::Double(-1., 1e3),
-                        "x coordinate of the impact point on the top face; a "
-                        "negative value means the centre a/2. The contact "
-                        "force acts at the top-surface node nearest to it. "
-                        "Unit: m.");
-      prm.declare_entry("Impact point y",
-                        "-1",
-                        Patterns::Double(-1., 1e3),
-                        "y coordinate of the impact point; negative means "
-                        "b/2. Unit: m.");
-      prm.declare_entry("Material",
-                        "rigid",
-                        ball_material_names().pattern(),
-                        "rigid: Q_alpha = Q_zp (Eq. 2.7). elastic: "
-                        "1/Q_alpha = 1/Q_zi + 1/Q_zp (Eq. 2.6) with the "
-                        "impactor's Young's modulus and Poisson's ratio.");
-      prm.declare_entry("Young's modulus",
-                        "207e9",
-                        Patterns::Double(1e3, 1e15),
-                        "Young's modulus E_i of an elastic impactor. Unit: "
-                        "Pa.");
-      prm.declare_entry("Poisson's ratio",
-                        "0.3",
-                        Patterns::Double(-0.99, 0.49),
-                        "Poisson's ratio nu_i of an elastic impactor. "
-                        "Dimensionless.");
+      impactor_table().declare(prm);
     }
     prm.leave_subsection();
   }
@@ -85,15 +104,7 @@ namespace fgimpact
   {
     prm.enter_subsection("Impactor");
     {
-      radius           = prm.get_double("Radius");
-      density          = prm.get_double("Density");
-      given_mass       = prm.get_double("Mass");
-      initial_velocity = prm.get_double("Initial velocity");
-      impact_x         = prm.get_double("Impact point x");
-      impact_y         = prm.get_double("Impact point y");
-      elastic          = ball_material_names().value(prm.get("Material"));
-      youngs_modulus   = prm.get_double("Young's modulus");
-      poissons_ratio   = prm.get_double("Poisson's ratio");
+      impactor_table().parse(prm, *this);
     }
     prm.leave_subsection();
   }

@@ -66,6 +66,104 @@ namespace fgimpact
 
   namespace
   {
+    /// The constituents' moduli, densities and Poisson's ratio, and the
+    /// power-law index.
+    void
+    add_constituent_rows(
+      ParameterTable<FunctionallyGradedMaterial::Parameters> &t)
+    {
+      using P = FunctionallyGradedMaterial::Parameters;
+
+      t.add("Metal Young's modulus",
+            &P::metal_youngs_modulus,
+            Patterns::Double(1e3, 1e15),
+            "Young's modulus E_m of the metal constituent, on top "
+            "of the plate (z = h). Unit: Pa.");
+      t.add("Metal density",
+            &P::metal_density,
+            Patterns::Double(1e-3, 1e6),
+            "Mass density rho_m of the metal constituent. "
+            "Unit: kg/m^3.");
+      t.add("Ceramic Young's modulus",
+            &P::ceramic_youngs_modulus,
+            Patterns::Double(1e3, 1e15),
+            "Young's modulus E_c of the ceramic constituent, at "
+            "the bottom of the plate (z = 0). Unit: Pa.");
+      t.add("Ceramic density",
+            &P::ceramic_density,
+            Patterns::Double(1e-3, 1e6),
+            "Mass density rho_c of the ceramic constituent. "
+            "Unit: kg/m^3.");
+      t.add("Poisson's ratio",
+            &P::poissons_ratio,
+            Patterns::Double(-0.99, 0.49),
+            "Poisson's ratio nu of the metal, and of the "
+            "ceramic unless Ceramic Poisson's ratio is set: then "
+            "constant through the thickness (Eq. 2.12). "
+            "Dimensionless.");
+      t.add("Power-law index",
+            &P::power_law_index,
+            Patterns::Double(0., 1e6),
+            "Volume fraction index n of Eq. 2.1, "
+            "P(z) = P_c + (P_m - P_c) (z/h)^n with z from the "
+            "bottom face. n = 0 is pure METAL (the paper's "
+            "convention, opposite to most FGM papers); n -> "
+            "infinity tends to pure ceramic. Dimensionless.");
+    }
+
+    /// How the properties are graded and interpolated.
+    void
+    add_grading_rows(ParameterTable<FunctionallyGradedMaterial::Parameters> &t)
+    {
+      using P = FunctionallyGradedMaterial::Parameters;
+      t.add(
+        "Property mode",
+        &P::property_mode,
+        property_mode_names(),
+        "graded: E and rho are interpolated from their nodal values with the "
+        "element shape functions at every quadrature point (graded finite "
+        "elements, Eq. 3.3). homogeneous: one value per element, evaluated "
+        "at the element centre (conventional elements). pointwise: E(z) and "
+        "rho(z) of Eq. 2.1 evaluated at every quadrature point (no "
+        "interpolation; for steep gradients, large n, where the graded "
+        "interpolant smears the metal skin over the top element).");
+      t.add("Gradation",
+            &P::gradation,
+            gradation_names(),
+            "How the properties vary with zeta = z/h (z from the bottom face; "
+            "metal on top). " +
+              gradation_help());
+      t.add(
+        "Homogenization",
+        &P::homogenization,
+        homogenization_names(),
+        "How E and nu of the mixture follow from the metal volume fraction "
+        "(power law and sigmoid only). rule of mixtures: P = P_c + (P_m - "
+        "P_c) V_m for E, nu and rho. Mori-Tanaka: metal matrix with ceramic "
+        "inclusions, Mori-Tanaka bulk and shear moduli (nu then varies even "
+        "with equal constituent ratios); rho by the rule of mixtures.");
+      t.add(
+        "Profile file",
+        &P::profile_file,
+        Patterns::FileName(),
+        "Gradation = tabulated: a CSV file with the columns z/h (from the "
+        "bottom face, strictly increasing from 0 to 1), E (Pa), nu and rho "
+        "(kg/m^3); '#' starts a comment, one header line is allowed. A "
+        "relative path is relative to the directory of the .prm given on "
+        "the command line (parameters.prm records it as an absolute path).");
+      t.add(
+        "Graded nodal values",
+        &P::graded_nodal_values,
+        graded_nodal_values_names(),
+        "Property mode = graded: the nodal values the elements interpolate. "
+        "sampled: the profile at the nodes (Eq. 3.3). layer average: the "
+        "element-wise L2 projection of the profile onto polynomials in z "
+        "of the element degree, so that each element keeps the exact "
+        "average of E, nu and rho over its thickness; a boundary layer "
+        "thinner than an element (n -> 0+) is then not misread "
+        "(doc/theory.md).");
+    }
+
     /// The entries of Material that set a member as they stand.
     const ParameterTable<FunctionallyGradedMaterial::Parameters> &
     material_table()
@@ -73,88 +171,8 @@ namespace fgimpact
       using P = FunctionallyGradedMaterial::Parameters;
       static const ParameterTable<P> table = [] {
         ParameterTable<P> t;
-        t.add("Metal Young's modulus",
-              &P::metal_youngs_modulus,
-              Patterns::Double(1e3, 1e15),
-              "Young's modulus E_m of the metal constituent, on top "
-              "of the plate (z = h). Unit: Pa.");
-        t.add("Metal density",
-              &P::metal_density,
-              Patterns::Double(1e-3, 1e6),
-              "Mass density rho_m of the metal constituent. "
-              "Unit: kg/m^3.");
-        t.add("Ceramic Young's modulus",
-              &P::ceramic_youngs_modulus,
-              Patterns::Double(1e3, 1e15),
-              "Young's modulus E_c of the ceramic constituent, at "
-              "the bottom of the plate (z = 0). Unit: Pa.");
-        t.add("Ceramic density",
-              &P::ceramic_density,
-              Patterns::Double(1e-3, 1e6),
-              "Mass density rho_c of the ceramic constituent. "
-              "Unit: kg/m^3.");
-        t.add("Poisson's ratio",
-              &P::poissons_ratio,
-              Patterns::Double(-0.99, 0.49),
-              "Poisson's ratio nu of the metal, and of the "
-              "ceramic unless Ceramic Poisson's ratio is set: then "
-              "constant through the thickness (Eq. 2.12). "
-              "Dimensionless.");
-        t.add("Power-law index",
-              &P::power_law_index,
-              Patterns::Double(0., 1e6),
-              "Volume fraction index n of Eq. 2.1, "
-              "P(z) = P_c + (P_m - P_c) (z/h)^n with z from the "
-              "bottom face. n = 0 is pure METAL (the paper's "
-              "convention, opposite to most FGM papers); n -> "
-              "infinity tends to pure ceramic. Dimensionless.");
-        t.add(
-          "Property mode",
-          &P::property_mode,
-          property_mode_names(),
-          "graded: E and rho are interpolated from their nodal values with the "
-          "element shape functions at every quadrature point (graded finite "
-          "elements, Eq. 3.3). homogeneous: one value per element, evaluated "
-          "at the element centre (conventional elements). pointwise: E(z) and "
-          "rho(z) of Eq. 2.1 evaluated at every quadrature point (no "
-          "interpolation; for steep gradients, large n, where the graded "
-          "interpolant smears the metal skin over the top element).");
-        t.add(
-          "Gradation",
-          &P::gradation,
-          gradation_names(),
-          "How the properties vary with zeta = z/h (z from the bottom face; "
-          "metal on top). " +
-            gradation_help());
-        t.add(
-          "Homogenization",
-          &P::homogenization,
-          homogenization_names(),
-          "How E and nu of the mixture follow from the metal volume fraction "
-          "(power law and sigmoid only). rule of mixtures: P = P_c + (P_m - "
-          "P_c) V_m for E, nu and rho. Mori-Tanaka: metal matrix with ceramic "
-          "inclusions, Mori-Tanaka bulk and shear moduli (nu then varies even "
-          "with equal constituent ratios); rho by the rule of mixtures.");
-        t.add(
-          "Profile file",
-          &P::profile_file,
-          Patterns::FileName(),
-          "Gradation = tabulated: a CSV file with the columns z/h (from the "
-          "bottom face, strictly increasing from 0 to 1), E (Pa), nu and rho "
-          "(kg/m^3); '#' starts a comment, one header line is allowed. A "
-          "relative path is relative to the directory of the .prm given on "
-          "the command line (parameters.prm records it as an absolute path).");
-        t.add(
-          "Graded nodal values",
-          &P::graded_nodal_values,
-          graded_nodal_values_names(),
-          "Property mode = graded: the nodal values the elements interpolate. "
-          "sampled: the profile at the nodes (Eq. 3.3). layer average: the "
-          "element-wise L2 projection of the profile onto polynomials in z "
-          "of the element degree, so that each element keeps the exact "
-          "average of E, nu and rho over its thickness; a boundary layer "
-          "thinner than an element (n -> 0+) is then not misread "
-          "(doc/theory.md).");
+        add_constituent_rows(t);
+        add_grading_rows(t);
         return t;
       }();
       return table;
@@ -171,9 +189,12 @@ namespace fgimpact
     {
       material_table().declare(prm);
       // Not a member as it stands: 'same' is ceramic_poissons_ratio < -1.
+      const Parameters defaults;
       prm.declare_entry(
         "Ceramic Poisson's ratio",
-        "same",
+        defaults.ceramic_poissons_ratio < -1. ?
+          std::string("same") :
+          prm_string(defaults.ceramic_poissons_ratio),
         Patterns::Anything(),
         "Poisson's ratio nu_c of the ceramic (bottom face): 'same' (the "
         "metal's, Poisson's ratio) or a number in [-0.99, 0.49]. With a "

@@ -1,5 +1,6 @@
 // The graded strengths of the validity report (strength.h).
 
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/base/selection.h>
 #include <fgimpact/material/strength.h>
 
@@ -31,24 +32,62 @@ namespace fgimpact
 
   namespace
   {
-    /// Material/Plasticity and its hardening entries (in the subsection
-    /// already entered).
+    /// The metal's yield and the ceramic's tensile strength.
     void
-    declare_plasticity(ParameterHandler &prm)
+    add_strength_rows(ParameterTable<GradedStrength::Parameters> &t)
     {
-      prm.declare_entry(
+      using P = GradedStrength::Parameters;
+
+      t.add(
+        "Metal yield strength",
+        &P::metal_yield_strength,
+        Patterns::Double(0., 1e11),
+        "Yield strength Y_m of the metal phase: the validity report compares "
+        "the von Mises stress of the metal-rich part (V_m >= 1/2) with the "
+        "graded yield strength of the TTO rule (TTO q). Default: an "
+        "aluminium alloy 6061-T6 (the paper's metal, E_m = 70 GPa, rho = "
+        "2707 kg/m^3, is an aluminium it does not name). 0 switches the check "
+        "off. Unit: Pa.");
+      t.add(
+        "Ceramic tensile strength",
+        &P::ceramic_tensile_strength,
+        Patterns::Double(0., 1e11),
+        "Tensile strength S_c of the ceramic phase: the validity report "
+        "compares the largest principal stress of the ceramic-rich part "
+        "(V_m < 1/2) with (1 - V_m) S_c + V_m Y_m. Default: a dense alumina "
+        "(the paper's ceramic, E_c = 380 GPa, rho = 3800 kg/m^3; tensile "
+        "strengths of 200-300 MPa, flexural about 380 MPa). 0 switches the "
+        "check off. Unit: Pa.");
+    }
+
+    /// Plasticity and its hardening.
+    void
+    add_plasticity_rows(ParameterTable<GradedStrength::Parameters> &t)
+    {
+      using P = GradedStrength::Parameters;
+      t.add("TTO q",
+            &P::tto_q,
+            Patterns::Double(0., 1e13),
+            "The Tamura-Tomota-Ozawa stress transfer q = (sigma_c - sigma_m) / "
+            "(eps_m - eps_c) of the metal-ceramic mixture (the softer metal "
+            "strains more, the ceramic carries more): the graded yield "
+            "strength is Y_m [V_m + (q + E_m)/(q + E_c) E_c/E_m (1 - V_m)]. "
+            "Large q: the phases strain alike; 0: they carry the same stress. "
+            "Default 4.5 GPa, the value used for Ti/TiB (Jin, Paulino & Dodds "
+            "2003); Ni/Al2O3 measured about 90 GPa. Unit: Pa.");
+      t.add(
         "Plasticity",
-        "none",
-        plasticity_names().pattern(),
+        &P::plasticity,
+        plasticity_names(),
         "none: the plate is elastic (the paper). J2: the metal-rich part "
         "(V_m >= 1/2) is elastic-plastic, small-strain von Mises plasticity "
         "with linear isotropic hardening, its yield strength graded by the "
         "TTO rule (Metal yield strength, TTO q), the ceramic phase elastic; "
         "needs Contact/Model = resolved sphere for an impact (a point force "
         "has no converged stress under it).");
-      prm.declare_entry(
+      t.add(
         "Metal hardening modulus",
-        "3e8",
+        &P::metal_hardening_modulus,
         Patterns::Double(0., 1e12),
         "Plasticity = J2: the metal's hardening modulus H_m = d sigma_y / d "
         "eps_p (linear isotropic hardening), graded by Graded hardening. 0 = "
@@ -56,17 +95,31 @@ namespace fgimpact
         "tangent: its ceramic stays elastic). Default: 6061-T6, whose "
         "true stress rises from 275 to about 310 MPa over 12 % plastic "
         "strain. Unit: Pa.");
-      prm.declare_entry(
-        "Graded hardening",
-        "TTO tangent",
-        hardening_names().pattern(),
-        "Plasticity = J2: the hardening modulus H(z) of the metal-rich "
-        "mixture. TTO tangent: the mixture's own, from the TTO rule with "
-        "the same q applied to the metal's tangent E_m H_m/(E_m + H_m) and "
-        "the elastic ceramic, H = E E_t/(E - E_t) (E, E_t: the mixture's "
-        "TTO modulus and tangent; at V_m = 0.9, q = 4.5 GPa: 0.83 GPa). "
-        "scaled as yield: H_m Y(z)/Y_m (0.30 GPa there), the earlier rule, "
-        "an assumption without a derivation, kept to compare.");
+      t.add("Graded hardening",
+            &P::graded_hardening,
+            hardening_names(),
+            "Plasticity = J2: the hardening modulus H(z) of the metal-rich "
+            "mixture. TTO tangent: the mixture's own, from the TTO rule with "
+            "the same q applied to the metal's tangent E_m H_m/(E_m + H_m) and "
+            "the elastic ceramic, H = E E_t/(E - E_t) (E, E_t: the mixture's "
+            "TTO modulus and tangent; at V_m = 0.9, q = 4.5 GPa: 0.83 GPa). "
+            "scaled as yield: H_m Y(z)/Y_m (0.30 GPa there), the earlier rule, "
+            "an assumption without a derivation, kept to compare.");
+    }
+
+    /// The entries of GradedStrength::Parameters that set a member as they
+    /// stand.
+    const ParameterTable<GradedStrength::Parameters> &
+    strength_table()
+    {
+      using P                              = GradedStrength::Parameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        add_strength_rows(t);
+        add_plasticity_rows(t);
+        return t;
+      }();
+      return table;
     }
   } // namespace
 
@@ -76,38 +129,7 @@ namespace fgimpact
   GradedStrength::Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    prm.declare_entry(
-      "Metal yield strength",
-      "275e6",
-      Patterns::Double(0., 1e11),
-      "Yield strength Y_m of the metal phase: the validity report compares "
-      "the von Mises stress of the metal-rich part (V_m >= 1/2) with the "
-      "graded yield strength of the TTO rule (TTO q). Default: an "
-      "aluminium alloy 6061-T6 (the paper's metal, E_m = 70 GPa, rho = "
-      "2707 kg/m^3, is an aluminium it does not name). 0 switches the check "
-      "off. Unit: Pa.");
-    prm.declare_entry(
-      "Ceramic tensile strength",
-      "260e6",
-      Patterns::Double(0., 1e11),
-      "Tensile strength S_c of the ceramic phase: the validity report "
-      "compares the largest principal stress of the ceramic-rich part "
-      "(V_m < 1/2) with (1 - V_m) S_c + V_m Y_m. Default: a dense alumina "
-      "(the paper's ceramic, E_c = 380 GPa, rho = 3800 kg/m^3; tensile "
-      "strengths of 200-300 MPa, flexural about 380 MPa). 0 switches the "
-      "check off. Unit: Pa.");
-    prm.declare_entry(
-      "TTO q",
-      "4.5e9",
-      Patterns::Double(0., 1e13),
-      "The Tamura-Tomota-Ozawa stress transfer q = (sigma_c - sigma_m) / "
-      "(eps_m - eps_c) of the metal-ceramic mixture (the softer metal "
-      "strains more, the ceramic carries more): the graded yield "
-      "strength is Y_m [V_m + (q + E_m)/(q + E_c) E_c/E_m (1 - V_m)]. "
-      "Large q: the phases strain alike; 0: they carry the same stress. "
-      "Default 4.5 GPa, the value used for Ti/TiB (Jin, Paulino & Dodds "
-      "2003); Ni/Al2O3 measured about 90 GPa. Unit: Pa.");
-    declare_plasticity(prm);
+    strength_table().declare(prm);
     prm.leave_subsection();
   }
 
@@ -117,12 +139,7 @@ namespace fgimpact
   GradedStrength::Parameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    metal_yield_strength     = prm.get_double("Metal yield strength");
-    ceramic_tensile_strength = prm.get_double("Ceramic tensile strength");
-    tto_q                    = prm.get_double("TTO q");
-    plasticity               = plasticity_names().value(prm.get("Plasticity"));
-    metal_hardening_modulus  = prm.get_double("Metal hardening modulus");
-    graded_hardening = hardening_names().value(prm.get("Graded hardening"));
+    strength_table().parse(prm, *this);
     prm.leave_subsection();
   }
 

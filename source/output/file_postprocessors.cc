@@ -1,6 +1,6 @@
 // The postprocessors that write CSV files: history.csv and probes.csv (the
-// VTU/PVD series: field_writer.cc).  Each keeps a failed write in output_failure() and drops
-// only its own writer.
+// VTU/PVD series: field_writer.cc).  Each keeps a failed write in
+// output_failure() and drops only its own writer.
 
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/output/monitor.h>

@@ -12,6 +12,7 @@
 #include <fgimpact/base/checkpoint.h>
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/files.h>
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/output/mirrored_data_out.h>
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
@@ -134,6 +135,33 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The entries of VtuFields that set a member as they stand.
+    const ParameterTable<VtuFields> &
+    vtu_fields_table()
+    {
+      using P                              = VtuFields;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add(
+          "Mirror symmetric part",
+          &P::mirror,
+          Patterns::Bool(),
+          "With Geometry/Symmetry modelling a half or a quarter of the plate: "
+          "true writes the VTU files of the whole plate (the part and its "
+          "reflections across the cut planes x = a/2, y = b/2, with the signs of "
+          "the odd vector and tensor components changed); false writes the "
+          "modelled part only (mirror it in ParaView with the Reflect filter). "
+          "No effect on a whole plate.");
+        return t;
+      }();
+      return table;
+    }
+  } // namespace
+
+
+
   void
   VtuFields::declare_parameters(ParameterHandler &prm)
   {
@@ -158,16 +186,7 @@ namespace fgimpact
       "(impact runs: peak_fields.vtu at the end, the nodal maxima over the "
       "VTU snapshots of the recovered von Mises stress and |sigma_zz|, "
       "MPa).");
-    prm.declare_entry(
-      "Mirror symmetric part",
-      "true",
-      Patterns::Bool(),
-      "With Geometry/Symmetry modelling a half or a quarter of the plate: "
-      "true writes the VTU files of the whole plate (the part and its "
-      "reflections across the cut planes x = a/2, y = b/2, with the signs of "
-      "the odd vector and tensor components changed); false writes the "
-      "modelled part only (mirror it in ParaView with the Reflect filter). "
-      "No effect on a whole plate.");
+    vtu_fields_table().declare(prm);
   }
 
 
@@ -189,6 +208,6 @@ namespace fgimpact
     cell_stress  = has("cell_stress");
     material     = has("material");
     peak         = has("peak");
-    mirror       = prm.get_bool("Mirror symmetric part");
+    vtu_fields_table().parse(prm, *this);
   }
 } // namespace fgimpact

@@ -2,6 +2,7 @@
 
 #include <deal.II/grid/grid_generator.h>
 
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/base/selection.h>
 #include <fgimpact/plate/geometry.h>
 
@@ -48,12 +49,13 @@ namespace fgimpact
     void
     declare_supports(ParameterHandler &prm)
     {
+      const PlateGeometry::Parameters defaults;
       prm.enter_subsection("Boundary conditions");
       {
-        for (const auto &name : PlateGeometry::side_names)
+        for (unsigned int f = 0; f < 4; ++f)
           prm.declare_entry(
-            name,
-            "simply supported",
+            PlateGeometry::side_names[f],
+            support_names().name(defaults.supports[f]),
             support_names().pattern(),
             "Support of this whole side face (x min: x = 0, x max: x = a, y "
             "min: y = 0, y max: y = b). simply supported (Eq. 2.15): "
@@ -63,7 +65,7 @@ namespace fgimpact
             "free.");
         prm.declare_entry(
           "Face z min",
-          "free",
+          support_names().name(defaults.bottom_support),
           support_names().pattern(),
           "Support of the bottom face z = 0: free (a plate), clamped "
           "(u = v = w = 0: bonded to a rigid base) or simply supported "
@@ -78,14 +80,17 @@ namespace fgimpact
 
   namespace
   {
-    /// Geometry/Contact refinement levels, radius and Symmetry (in the
-    /// subsection already entered).
+    /// Geometry/Contact refinement levels (in the subsection already
+    /// entered): `auto` or a number, two members.
     void
-    declare_refinement_and_symmetry(ParameterHandler &prm)
+    declare_refinement_levels(ParameterHandler &prm)
     {
+      const PlateGeometry::Parameters defaults;
       prm.declare_entry(
         "Contact refinement levels",
-        "auto",
+        defaults.contact_refinement_auto ?
+          std::string("auto") :
+          prm_string(defaults.contact_refinement_levels),
         Patterns::Selection("auto|0|1|2|3|4|5|6|7|8|9|10|11|12"),
         "Times the cells near the impact point are split in two in each "
         "direction (graded, with hanging-node constraints): the element "
@@ -95,29 +100,74 @@ namespace fgimpact
         "put 4 element sizes across the half-space Hertz estimate of the "
         "largest contact radius (doc/contact.md: about 1 % in the peak "
         "force); the log gives the choice.");
-      prm.declare_entry(
-        "Contact refinement radius",
-        "0",
-        Patterns::Double(0., 10.),
-        "Radius of the core around the impact point that gets the finest "
-        "cells; each coarser level reaches two of its cells further. 0 = "
-        "automatic: 1.5 times the largest contact radius of the ball on a "
-        "half-space of the top face's modulus. Unit: m.");
-      prm.declare_entry(
-        "Symmetry",
-        "auto",
-        symmetry_names().pattern(),
-        "Model a part of a symmetric scene: quarter = the part x <= a/2, "
-        "y <= b/2 with u_x = 0 on x = a/2 and u_y = 0 on y = b/2; half = "
-        "the part x <= a/2 (or y <= b/2 if only that plane is a symmetry "
-        "plane); none = the whole plate; auto = the smallest part the scene "
-        "allows (none, with a log line, if none). A plane is a symmetry "
-        "plane if the impact point lies on it, the supports of the two "
-        "faces parallel to it are equal and the subdivisions across it are "
-        "even; modal problems and explicit runs with the automatic time "
-        "step (Time step = 0) are never cut. history.csv and summary.txt "
-        "report the whole plate; the VTU files hold the whole plate too "
-        "(Output/Mirror symmetric part = true) or the part.");
+    }
+  } // namespace
+
+
+
+  namespace
+  {
+    /// The entries of PlateGeometry::Parameters that set a member as they
+    /// stand.
+    const ParameterTable<PlateGeometry::Parameters> &
+    geometry_table()
+    {
+      using P                              = PlateGeometry::Parameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add("Length a",
+              &P::length,
+              Patterns::Double(1e-6, 1e3),
+              "Plate length a along x. Unit: m.");
+        t.add("Width b",
+              &P::width,
+              Patterns::Double(1e-6, 1e3),
+              "Plate width b along y. Unit: m.");
+        t.add("Thickness h",
+              &P::thickness,
+              Patterns::Double(1e-6, 1e3),
+              "Plate thickness h along z; z = 0 is the (ceramic) "
+              "bottom face, z = h the (metal) top face that the "
+              "impactor strikes. Unit: m.");
+        t.add("Subdivisions x",
+              &P::subdivisions_x,
+              Patterns::Integer(1, 100000),
+              "Number of elements along x. Even, so that a node "
+              "lies under a central impact.");
+        t.add("Subdivisions y",
+              &P::subdivisions_y,
+              Patterns::Integer(1, 100000),
+              "Number of elements along y.");
+        t.add("Subdivisions z",
+              &P::subdivisions_z,
+              Patterns::Integer(1, 100000),
+              "Number of elements through the thickness.");
+        t.add(
+          "Contact refinement radius",
+          &P::contact_refinement_radius,
+          Patterns::Double(0., 10.),
+          "Radius of the core around the impact point that gets the finest "
+          "cells; each coarser level reaches two of its cells further. 0 = "
+          "automatic: 1.5 times the largest contact radius of the ball on a "
+          "half-space of the top face's modulus. Unit: m.");
+        t.add(
+          "Symmetry",
+          &P::symmetry,
+          symmetry_names(),
+          "Model a part of a symmetric scene: quarter = the part x <= a/2, "
+          "y <= b/2 with u_x = 0 on x = a/2 and u_y = 0 on y = b/2; half = "
+          "the part x <= a/2 (or y <= b/2 if only that plane is a symmetry "
+          "plane); none = the whole plate; auto = the smallest part the scene "
+          "allows (none, with a log line, if none). A plane is a symmetry "
+          "plane if the impact point lies on it, the supports of the two "
+          "faces parallel to it are equal and the subdivisions across it are "
+          "even; modal problems and explicit runs with the automatic time "
+          "step (Time step = 0) are never cut. history.csv and summary.txt "
+          "report the whole plate; the VTU files hold the whole plate too "
+          "(Output/Mirror symmetric part = true) or the part.");
+        return t;
+      }();
+      return table;
     }
   } // namespace
 
@@ -128,34 +178,8 @@ namespace fgimpact
   {
     prm.enter_subsection("Geometry");
     {
-      prm.declare_entry("Length a",
-                        "0.2",
-                        Patterns::Double(1e-6, 1e3),
-                        "Plate length a along x. Unit: m.");
-      prm.declare_entry("Width b",
-                        "0.1",
-                        Patterns::Double(1e-6, 1e3),
-                        "Plate width b along y. Unit: m.");
-      prm.declare_entry("Thickness h",
-                        "0.02",
-                        Patterns::Double(1e-6, 1e3),
-                        "Plate thickness h along z; z = 0 is the (ceramic) "
-                        "bottom face, z = h the (metal) top face that the "
-                        "impactor strikes. Unit: m.");
-      prm.declare_entry("Subdivisions x",
-                        "40",
-                        Patterns::Integer(1, 100000),
-                        "Number of elements along x. Even, so that a node "
-                        "lies under a central impact.");
-      prm.declare_entry("Subdivisions y",
-                        "20",
-                        Patterns::Integer(1, 100000),
-                        "Number of elements along y.");
-      prm.declare_entry("Subdivisions z",
-                        "4",
-                        Patterns::Integer(1, 100000),
-                        "Number of elements through the thickness.");
-      declare_refinement_and_symmetry(prm);
+      geometry_table().declare(prm);
+      declare_refinement_levels(prm);
     }
     prm.leave_subsection();
 
@@ -169,18 +193,11 @@ namespace fgimpact
   {
     prm.enter_subsection("Geometry");
     {
-      length                   = prm.get_double("Length a");
-      width                    = prm.get_double("Width b");
-      thickness                = prm.get_double("Thickness h");
-      subdivisions_x           = prm.get_integer("Subdivisions x");
-      subdivisions_y           = prm.get_integer("Subdivisions y");
-      subdivisions_z           = prm.get_integer("Subdivisions z");
+      geometry_table().parse(prm, *this);
       const std::string levels = prm.get("Contact refinement levels");
       contact_refinement_auto  = (levels == "auto");
       contact_refinement_levels =
         contact_refinement_auto ? 0 : Utilities::string_to_int(levels);
-      contact_refinement_radius = prm.get_double("Contact refinement radius");
-      symmetry                  = symmetry_names().value(prm.get("Symmetry"));
     }
     prm.leave_subsection();
 

@@ -9,6 +9,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/base/selection.h>
 #include <fgimpact/plate/cell_matrices.h>
 #include <fgimpact/plate/plate_model.h>
@@ -28,29 +29,47 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The entries of PlateModel::Parameters that set a member as they stand.
+    const ParameterTable<PlateModel::Parameters> &
+    finite_element_table()
+    {
+      using P                              = PlateModel::Parameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add("Degree",
+              &P::degree,
+              Patterns::Integer(1, 2),
+              "Polynomial degree p of the FE_Q(p)^3 displacement "
+              "element: 1 = the paper's 8-node graded brick, 2 = "
+              "27-node brick.");
+        t.add(
+          "Volumetric strain",
+          &P::mean_dilatation,
+          volumetric_strain_names,
+          "The element's volumetric strain div u, in the stiffness and in every "
+          "strain and stress written: pointwise (the paper's fully integrated "
+          "brick), or the cell's mean (B-bar: Simo and Hughes' mean "
+          "dilatation, Abaqus' C3D8 with selectively reduced integration), "
+          "which does not lock when the material is nearly incompressible "
+          "(Poisson's ratio near 1/2, or J2 plastic flow: a pressure that "
+          "jumps sign between nodes). With Degree = 2 one constant per cell "
+          "is a poor pressure (Q2-P0): use it with Degree = 1.");
+        return t;
+      }();
+      return table;
+    }
+  } // namespace
+
+
+
   void
   PlateModel::Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Finite element");
     {
-      prm.declare_entry("Degree",
-                        "1",
-                        Patterns::Integer(1, 2),
-                        "Polynomial degree p of the FE_Q(p)^3 displacement "
-                        "element: 1 = the paper's 8-node graded brick, 2 = "
-                        "27-node brick.");
-      prm.declare_entry(
-        "Volumetric strain",
-        "pointwise",
-        volumetric_strain_names.pattern(),
-        "The element's volumetric strain div u, in the stiffness and in every "
-        "strain and stress written: pointwise (the paper's fully integrated "
-        "brick), or the cell's mean (B-bar: Simo and Hughes' mean "
-        "dilatation, Abaqus' C3D8 with selectively reduced integration), "
-        "which does not lock when the material is nearly incompressible "
-        "(Poisson's ratio near 1/2, or J2 plastic flow: a pressure that "
-        "jumps sign between nodes). With Degree = 2 one constant per cell "
-        "is a poor pressure (Q2-P0): use it with Degree = 1.");
+      finite_element_table().declare(prm);
     }
     prm.leave_subsection();
   }
@@ -61,9 +80,7 @@ namespace fgimpact
   PlateModel::Parameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Finite element");
-    degree = prm.get_integer("Degree");
-    mean_dilatation =
-      volumetric_strain_names.value(prm.get("Volumetric strain"));
+    finite_element_table().parse(prm, *this);
     prm.leave_subsection();
   }
 

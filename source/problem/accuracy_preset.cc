@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/problem/accuracy_preset.h>
 #include <fgimpact/time/time_stepper.h>
 
@@ -46,51 +47,70 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The entries of AccuracyPreset::Parameters that set a member as they
+    /// stand.
+    const ParameterTable<AccuracyPreset::Parameters> &
+    accuracy_table()
+    {
+      using P                              = AccuracyPreset::Parameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add(
+          "Accuracy",
+          &P::preset,
+          AccuracyPreset::preset_names(),
+          "Discretization preset. custom: Geometry/Subdivisions x, y, z and "
+          "Time integration/Time step as given. The others overwrite those "
+          "four entries (the written parameters.prm shows the effective "
+          "values) and keep the in-plane element size at 5 mm (Subdivisions x, "
+          "y = the nearest even number of 5 mm elements): under the paper's "
+          "point contact force the in-plane size under the ball sets the "
+          "contact force, which does not converge under refinement (-8 to -9 "
+          "% per halving), so the presets fix it and results are comparable "
+          "only at equal in-plane size. Errors for the default scene "
+          "(prm/default.prm, doc/accuracy.md) relative to the thickness- and "
+          "dt-converged values at 5 mm, peak force / contact duration / "
+          "departure velocity / max mid-plane deflection: fast = 2 elements "
+          "through the thickness, dt = 2 us (40 x 20 x 2, 7749 DoFs, about "
+          "1 s): +7.9 / -5.8 / -1.8 / -4.3 %. standard = 4 elements, dt = 1 "
+          "us, the default mesh (12915 DoFs, about 3.5 s): +3.3 / -2.6 / -1.0 "
+          "/ -0.3 %. accurate = 16 elements, dt = 1 us (43911 DoFs, about "
+          "20 s): +0.31 / -0.26 / -0.10 / +0.04 %. Presets need Time "
+          "integration/Scheme = implicit; the mesh applies to every Problem "
+          "type. converged: an impact with Contact/Model = resolved sphere or "
+          "hertz midplane run at increasing Geometry/Contact refinement levels "
+          "(from one below the scene's automatic level), base meshes "
+          "(Subdivisions doubled in plane and through the thickness) and "
+          "contact levels on the final base, then once at half the Time step, "
+          "refining further the source with the largest share until, for the "
+          "peak contact force, contact duration, departure velocity, largest "
+          "mid-plane deflection, indentation and the probes' peak stresses, "
+          "the error estimates of the four sources add up to at most Accuracy "
+          "tolerance; convergence.csv, and each number's estimate and its "
+          "sources in summary.txt (doc/accuracy.md).");
+        t.add("Accuracy tolerance",
+              &P::tolerance,
+              Patterns::Double(1e-6, 0.5),
+              "Accuracy = converged: the bound on each headline "
+              "number's relative error estimate, the sum of its "
+              "contact levels', base mesh's (in plane, through the "
+              "thickness) and time step's, each times a factor of "
+              "safety of 1.25 (Roache's grid convergence index). "
+              "Dimensionless (0.01 = 1 %).");
+        return t;
+      }();
+      return table;
+    }
+  } // namespace
+
+
+
   void
   AccuracyPreset::Parameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry(
-      "Accuracy",
-      "custom",
-      preset_names().pattern(),
-      "Discretization preset. custom: Geometry/Subdivisions x, y, z and "
-      "Time integration/Time step as given. The others overwrite those "
-      "four entries (the written parameters.prm shows the effective "
-      "values) and keep the in-plane element size at 5 mm (Subdivisions x, "
-      "y = the nearest even number of 5 mm elements): under the paper's "
-      "point contact force the in-plane size under the ball sets the "
-      "contact force, which does not converge under refinement (-8 to -9 "
-      "% per halving), so the presets fix it and results are comparable "
-      "only at equal in-plane size. Errors for the default scene "
-      "(prm/default.prm, doc/accuracy.md) relative to the thickness- and "
-      "dt-converged values at 5 mm, peak force / contact duration / "
-      "departure velocity / max mid-plane deflection: fast = 2 elements "
-      "through the thickness, dt = 2 us (40 x 20 x 2, 7749 DoFs, about "
-      "1 s): +7.9 / -5.8 / -1.8 / -4.3 %. standard = 4 elements, dt = 1 "
-      "us, the default mesh (12915 DoFs, about 3.5 s): +3.3 / -2.6 / -1.0 "
-      "/ -0.3 %. accurate = 16 elements, dt = 1 us (43911 DoFs, about "
-      "20 s): +0.31 / -0.26 / -0.10 / +0.04 %. Presets need Time "
-      "integration/Scheme = implicit; the mesh applies to every Problem "
-      "type. converged: an impact with Contact/Model = resolved sphere or "
-      "hertz midplane run at increasing Geometry/Contact refinement levels "
-      "(from one below the scene's automatic level), base meshes "
-      "(Subdivisions doubled in plane and through the thickness) and "
-      "contact levels on the final base, then once at half the Time step, "
-      "refining further the source with the largest share until, for the "
-      "peak contact force, contact duration, departure velocity, largest "
-      "mid-plane deflection, indentation and the probes' peak stresses, "
-      "the error estimates of the four sources add up to at most Accuracy "
-      "tolerance; convergence.csv, and each number's estimate and its "
-      "sources in summary.txt (doc/accuracy.md).");
-    prm.declare_entry("Accuracy tolerance",
-                      "0.01",
-                      Patterns::Double(1e-6, 0.5),
-                      "Accuracy = converged: the bound on each headline "
-                      "number's relative error estimate, the sum of its "
-                      "contact levels', base mesh's (in plane, through the "
-                      "thickness) and time step's, each times a factor of "
-                      "safety of 1.25 (Roache's grid convergence index). "
-                      "Dimensionless (0.01 = 1 %).");
+    accuracy_table().declare(prm);
   }
 
 
@@ -98,8 +118,7 @@ namespace fgimpact
   void
   AccuracyPreset::Parameters::apply(ParameterHandler &prm)
   {
-    preset              = preset_names().value(prm.get("Accuracy"));
-    tolerance           = prm.get_double("Accuracy tolerance");
+    accuracy_table().parse(prm, *this);
     file_subdivisions_x = file_subdivisions_y = file_subdivisions_z = 0;
     file_time_step                                                  = 0;
     if (preset == Preset::custom || preset == Preset::converged)

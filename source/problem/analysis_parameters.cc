@@ -1,3 +1,4 @@
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/base/selection.h>
 #include <fgimpact/problem/analysis_parameters.h>
 
@@ -19,45 +20,101 @@ namespace fgimpact
   } // namespace
 
 
+  namespace
+  {
+    /// The entries of StaticAnalysisParameters that set a member as they stand.
+    const ParameterTable<StaticAnalysisParameters> &
+    static_table()
+    {
+      using P                              = StaticAnalysisParameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add("Load",
+              &P::load,
+              load_names(),
+              "Load on the top face, downward: sinusoidal = "
+              "q0 sin(pi x/a) sin(pi y/b) (exact 3D solution exists "
+              "for simply supported plates), uniform = q0, point = "
+              "a force P at the top node nearest to the impact "
+              "point, sphere = the rigid impactor (Impactor/Radius) "
+              "pressed Indentation deep at the impact point, in "
+              "frictionless unilateral contact (as Contact/Model = "
+              "resolved sphere; refine with Geometry/Contact "
+              "refinement levels).");
+        t.add("Indentation",
+              &P::indentation,
+              Patterns::Double(0., 1.),
+              "Load = sphere: how far the sphere's lowest point is "
+              "pushed below the undeformed top face. Unit: m.");
+        t.add("Load steps",
+              &P::load_steps,
+              Patterns::Integer(1, 100000),
+              "Load = sphere with Material/Plasticity = J2: the "
+              "indentation is applied in this many equal steps, "
+              "and removed in as many (the residual crater is "
+              "measured after unloading; load_curve.csv holds "
+              "every step).");
+        t.add("Pressure",
+              &P::pressure,
+              Patterns::Double(-1e12, 1e12),
+              "Amplitude q0 of the sinusoidal or uniform pressure. "
+              "Unit: Pa.");
+        t.add("Point force",
+              &P::point_force,
+              Patterns::Double(-1e12, 1e12),
+              "Point force P of Load = point. Unit: N.");
+        return t;
+      }();
+      return table;
+    }
+  } // namespace
+
+
+
+  namespace
+  {
+    /// The entries of ModalAnalysisParameters that set a member as they stand.
+    const ParameterTable<ModalAnalysisParameters> &
+    modal_table()
+    {
+      using P                              = ModalAnalysisParameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add("Number of modes",
+              &P::n_modes,
+              Patterns::Integer(1, 500),
+              "How many of the lowest natural frequencies (above "
+              "the shift) to compute.");
+        t.add("Shift",
+              &P::shift,
+              Patterns::Double(0., 1e9),
+              "Shift sigma of shift-invert, as a frequency; the "
+              "modes nearest above it converge first. 0 needs a "
+              "supported plate (K positive definite). Unit: Hz.");
+        t.add("Tolerance",
+              &P::tolerance,
+              Patterns::Double(1e-15, 1e-2),
+              "Stop when the relative change of every requested "
+              "omega^2 between two iterations is below this. "
+              "Dimensionless.");
+        t.add("Max iterations",
+              &P::max_iterations,
+              Patterns::Integer(1, 100000),
+              "Subspace iterations cap; reaching it is an error.");
+        return t;
+      }();
+      return table;
+    }
+  } // namespace
+
+
+
   void
   StaticAnalysisParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Static");
     {
-      prm.declare_entry("Load",
-                        "sinusoidal",
-                        load_names().pattern(),
-                        "Load on the top face, downward: sinusoidal = "
-                        "q0 sin(pi x/a) sin(pi y/b) (exact 3D solution exists "
-                        "for simply supported plates), uniform = q0, point = "
-                        "a force P at the top node nearest to the impact "
-                        "point, sphere = the rigid impactor (Impactor/Radius) "
-                        "pressed Indentation deep at the impact point, in "
-                        "frictionless unilateral contact (as Contact/Model = "
-                        "resolved sphere; refine with Geometry/Contact "
-                        "refinement levels).");
-      prm.declare_entry("Indentation",
-                        "1e-5",
-                        Patterns::Double(0., 1.),
-                        "Load = sphere: how far the sphere's lowest point is "
-                        "pushed below the undeformed top face. Unit: m.");
-      prm.declare_entry("Load steps",
-                        "20",
-                        Patterns::Integer(1, 100000),
-                        "Load = sphere with Material/Plasticity = J2: the "
-                        "indentation is applied in this many equal steps, "
-                        "and removed in as many (the residual crater is "
-                        "measured after unloading; load_curve.csv holds "
-                        "every step).");
-      prm.declare_entry("Pressure",
-                        "1e6",
-                        Patterns::Double(-1e12, 1e12),
-                        "Amplitude q0 of the sinusoidal or uniform pressure. "
-                        "Unit: Pa.");
-      prm.declare_entry("Point force",
-                        "1000",
-                        Patterns::Double(-1e12, 1e12),
-                        "Point force P of Load = point. Unit: N.");
+      static_table().declare(prm);
     }
     prm.leave_subsection();
   }
@@ -69,11 +126,7 @@ namespace fgimpact
   {
     prm.enter_subsection("Static");
     {
-      load        = load_names().value(prm.get("Load"));
-      indentation = prm.get_double("Indentation");
-      load_steps  = prm.get_integer("Load steps");
-      pressure    = prm.get_double("Pressure");
-      point_force = prm.get_double("Point force");
+      static_table().parse(prm, *this);
     }
     prm.leave_subsection();
   }
@@ -85,27 +138,7 @@ namespace fgimpact
   {
     prm.enter_subsection("Modal");
     {
-      prm.declare_entry("Number of modes",
-                        "6",
-                        Patterns::Integer(1, 500),
-                        "How many of the lowest natural frequencies (above "
-                        "the shift) to compute.");
-      prm.declare_entry("Shift",
-                        "0",
-                        Patterns::Double(0., 1e9),
-                        "Shift sigma of shift-invert, as a frequency; the "
-                        "modes nearest above it converge first. 0 needs a "
-                        "supported plate (K positive definite). Unit: Hz.");
-      prm.declare_entry("Tolerance",
-                        "1e-10",
-                        Patterns::Double(1e-15, 1e-2),
-                        "Stop when the relative change of every requested "
-                        "omega^2 between two iterations is below this. "
-                        "Dimensionless.");
-      prm.declare_entry("Max iterations",
-                        "200",
-                        Patterns::Integer(1, 100000),
-                        "Subspace iterations cap; reaching it is an error.");
+      modal_table().declare(prm);
     }
     prm.leave_subsection();
   }
@@ -117,10 +150,7 @@ namespace fgimpact
   {
     prm.enter_subsection("Modal");
     {
-      n_modes        = prm.get_integer("Number of modes");
-      shift          = prm.get_double("Shift");
-      tolerance      = prm.get_double("Tolerance");
-      max_iterations = prm.get_integer("Max iterations");
+      modal_table().parse(prm, *this);
     }
     prm.leave_subsection();
   }

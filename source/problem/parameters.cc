@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/tensor.h>
 
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/base/selection.h>
 #include <fgimpact/problem/parameter_checks.h>
 #include <fgimpact/problem/parameters.h>
@@ -337,16 +338,34 @@ namespace fgimpact
     }
   } // namespace
 
+  namespace
+  {
+    /// The entries of Parameters that set a member as they stand.
+    const ParameterTable<Parameters> &
+    top_level_table()
+    {
+      using P                              = Parameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add("Problem type",
+              &P::problem_type,
+              problem_type_names(),
+              "impact: the sphere strikes the plate (time history). "
+              "static: K u = f under the load of subsection Static. "
+              "modal: the lowest natural frequencies and mode "
+              "shapes (subsection Modal).");
+        return t;
+      }();
+      return table;
+    }
+  } // namespace
+
+
+
   void
   Parameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.declare_entry("Problem type",
-                      "impact",
-                      problem_type_names().pattern(),
-                      "impact: the sphere strikes the plate (time history). "
-                      "static: K u = f under the load of subsection Static. "
-                      "modal: the lowest natural frequencies and mode "
-                      "shapes (subsection Modal).");
+    top_level_table().declare(prm);
     AccuracyPreset::Parameters::declare_parameters(prm);
     PlateGeometry::Parameters::declare_parameters(prm);
     StaticAnalysisParameters::declare_parameters(prm);
@@ -366,7 +385,7 @@ namespace fgimpact
   void
   Parameters::parse_parameters(ParameterHandler &prm)
   {
-    problem_type = problem_type_names().value(prm.get("Problem type"));
+    top_level_table().parse(prm, *this);
     // First, explicitly: a preset rewrites Geometry/Subdivisions and Time
     // integration/Time step in prm (so parameters.prm shows them).
     accuracy.apply(prm);

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <fgimpact/base/parameter_table.h>
 #include <fgimpact/base/selection.h>
 #include <fgimpact/problem/study_parameters.h>
 
@@ -36,6 +37,47 @@ namespace fgimpact
   } // namespace
 
 
+  namespace
+  {
+    /// The entries of StudyParameters that set a member as they stand.
+    const ParameterTable<StudyParameters> &
+    study_table()
+    {
+      using P                              = StudyParameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add("Combination",
+              &P::combination,
+              combination_names(),
+              "product: every combination of the lists (the first "
+              "entry varies slowest). zip: the i-th case takes the "
+              "i-th value of every list (all lists equally long).");
+        t.add(
+          "Method",
+          &P::method,
+          method_names(),
+          "auto: cases that share the plate and differ only in the impactor, "
+          "the contact law's constants or Newton's control run as "
+          "convolutions of the plate's unit response (Hertz node contact, "
+          "implicit Newmark with beta = 1/4, gamma = 1/2, no VTU), the others "
+          "through the time loop (logged). time loop: every case through the "
+          "normal time loop.");
+        t.add("Write VTU",
+              &P::write_vtu,
+              Patterns::Bool(),
+              "false: the cases write no VTU (Output/VTU interval "
+              "= 0, so that they can run by convolution); "
+              "--study-case K reruns one case with the input's "
+              "VTU output. true: the input's VTU interval (time "
+              "loop).");
+        return t;
+      }();
+      return table;
+    }
+  } // namespace
+
+
+
   void
   StudyParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -51,30 +93,7 @@ namespace fgimpact
         "one run. Each case writes a normal output directory "
         "Directory/case_NNN and Directory/study.csv gathers their "
         "summaries. The command-line option --study appends to this list.");
-      prm.declare_entry("Combination",
-                        "product",
-                        combination_names().pattern(),
-                        "product: every combination of the lists (the first "
-                        "entry varies slowest). zip: the i-th case takes the "
-                        "i-th value of every list (all lists equally long).");
-      prm.declare_entry(
-        "Method",
-        "auto",
-        method_names().pattern(),
-        "auto: cases that share the plate and differ only in the impactor, "
-        "the contact law's constants or Newton's control run as "
-        "convolutions of the plate's unit response (Hertz node contact, "
-        "implicit Newmark with beta = 1/4, gamma = 1/2, no VTU), the others "
-        "through the time loop (logged). time loop: every case through the "
-        "normal time loop.");
-      prm.declare_entry("Write VTU",
-                        "false",
-                        Patterns::Bool(),
-                        "false: the cases write no VTU (Output/VTU interval "
-                        "= 0, so that they can run by convolution); "
-                        "--study-case K reruns one case with the input's "
-                        "VTU output. true: the input's VTU interval (time "
-                        "loop).");
+      study_table().declare(prm);
     }
     prm.leave_subsection();
   }
@@ -90,9 +109,7 @@ namespace fgimpact
          Utilities::split_string_list(prm.get("Entries"), ';'))
       if (!entry.empty())
         entries.push_back(entry);
-    combination = combination_names().value(prm.get("Combination"));
-    method      = method_names().value(prm.get("Method"));
-    write_vtu   = prm.get_bool("Write VTU");
+    study_table().parse(prm, *this);
     prm.leave_subsection();
     n_file_entries = entries.size();
   }

@@ -85,6 +85,8 @@ namespace fgimpact_unit_tests::parameter_table
                                                     {1e-6, "1e-6"},
                                                     {2.5e-5, "25e-6"},
                                                     {-3e7, "-30e6"},
+                                                    {3e8, "3e8"},
+                                                    {1e-10, "1e-10"},
                                                     {1e6, "1e6"},
                                                     {1e-4, "0.0001"},
                                                     {0., "0"},

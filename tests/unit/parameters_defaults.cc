@@ -1,7 +1,9 @@
 // Parsing an empty input must give exactly the default-constructed
-// Parameters (the defaults are written twice: as the ParameterHandler's
-// default strings and as the member initializers of the Parameters
-// structs).  Every member is compared, without a hand-written list: the
+// Parameters.  The entries of a ParameterTable take their defaults from the
+// member initializers (so this checks prm_string()'s round trip and the
+// tables' member pointers); the few entries declared by hand beside the
+// tables (lists, `auto` or a number, 'same' or a number) are checked
+// against their members here.  Every member is compared, without a hand-written list: the
 // structs are aggregates, so their members are counted (the largest N
 // with which T{x_1, ..., x_N} compiles, as Boost.PFR does) and visited
 // with structured bindings, recursively into nested structs and vectors.

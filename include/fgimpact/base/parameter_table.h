@@ -17,7 +17,8 @@ namespace fgimpact
   using namespace dealii;
 
   /// A default for the listing: the shortest decimal that reads back as
-  /// the same double ("0.2", "7e10", "1e-6").
+  /// the same double: plain in [1e-4, 1e6) ("0.2"), else engineering
+  /// notation where it pads at most one zero ("70e9", "3e8", "1e-6").
   std::string
   prm_string(const double value);
 
