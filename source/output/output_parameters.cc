@@ -34,9 +34,12 @@ namespace fgimpact
     void
     declare_snapshot_times(ParameterHandler &prm)
     {
+      std::string times;
+      for (const double t : OutputParameters().snapshot_times)
+        times += (times.empty() ? "" : ", ") + prm_string(t);
       prm.declare_entry(
         "Snapshot times",
-        "",
+        times,
         Patterns::List(Patterns::Double(0.), 0, 10000, ","),
         "Impact runs: extra VTU snapshots at these times (s, as End time; "
         "comma-separated, e.g. 50e-6, 1.2e-4), also with VTU interval = 0: "

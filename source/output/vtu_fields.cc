@@ -18,6 +18,7 @@
 #include <fgimpact/output/postprocessing.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -137,6 +138,31 @@ namespace fgimpact
 
   namespace
   {
+    /// Output/Fields: each name and its flag, in the pattern's order.
+    const std::array<std::pair<std::string, bool VtuFields::*>, 10>
+      field_flags = {{{"displacement", &VtuFields::displacement},
+                      {"velocity", &VtuFields::velocity},
+                      {"acceleration", &VtuFields::acceleration},
+                      {"stress", &VtuFields::stress},
+                      {"von_mises", &VtuFields::von_mises},
+                      {"principal", &VtuFields::principal},
+                      {"strain", &VtuFields::strain},
+                      {"cell_stress", &VtuFields::cell_stress},
+                      {"material", &VtuFields::material},
+                      {"peak", &VtuFields::peak}}};
+
+    /// "a|b|..." (all = false: the pattern) or "a, b, ..." of the flags
+    /// set in `fields` (the default).
+    std::string
+    field_list(const VtuFields &fields, const bool all)
+    {
+      std::string list;
+      for (const auto &[name, flag] : field_flags)
+        if (all || fields.*flag)
+          list += (list.empty() ? "" : (all ? "|" : ", ")) + name;
+      return list;
+    }
+
     /// The entries of VtuFields that set a member as they stand.
     const ParameterTable<VtuFields> &
     vtu_fields_table()
@@ -167,10 +193,8 @@ namespace fgimpact
   {
     prm.declare_entry(
       "Fields",
-      "displacement, velocity, stress, von_mises, principal, material, peak",
-      Patterns::MultipleSelection("displacement|velocity|acceleration|stress|"
-                                  "von_mises|principal|strain|cell_stress|"
-                                  "material|peak"),
+      field_list(VtuFields(), false),
+      Patterns::MultipleSelection(field_list(VtuFields(), true)),
       "The fields of the VTU files, a comma-separated list of: "
       "displacement (displacement_m, m), velocity (velocity_m_s, m/s), "
       "acceleration (impact runs: acceleration_m_s2, m/s^2), "
@@ -195,19 +219,8 @@ namespace fgimpact
   VtuFields::parse_parameters(ParameterHandler &prm)
   {
     const auto list = Utilities::split_string_list(prm.get("Fields"));
-    auto       has  = [&list](const std::string &name) {
-      return std::find(list.begin(), list.end(), name) != list.end();
-    };
-    displacement = has("displacement");
-    velocity     = has("velocity");
-    acceleration = has("acceleration");
-    stress       = has("stress");
-    von_mises    = has("von_mises");
-    principal    = has("principal");
-    strain       = has("strain");
-    cell_stress  = has("cell_stress");
-    material     = has("material");
-    peak         = has("peak");
+    for (const auto &[name, flag] : field_flags)
+      this->*flag = std::find(list.begin(), list.end(), name) != list.end();
     vtu_fields_table().parse(prm, *this);
   }
 } // namespace fgimpact
