@@ -83,9 +83,12 @@ namespace fgimpact
   {
     prm.enter_subsection("Study");
     {
+      std::string entries;
+      for (const std::string &entry : StudyParameters().entries)
+        entries += (entries.empty() ? "" : "; ") + entry;
       prm.declare_entry(
         "Entries",
-        "",
+        entries,
         Patterns::Anything(),
         "The entries a parameter study varies, separated by ';', each "
         "'Section/Entry = v1, v2, ...' (nested subsections joined by '/'), "
