@@ -23,7 +23,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 . scripts/fgimpact_lib.sh
 allow_local_mpirun
-unit='material_gradation|newmark_oscillator|parameters_defaults'
+unit='material_gradation|newmark_oscillator|parameters_defaults|parameter_table'
 case "${1:-}" in
   --full) unit="$unit|turner_modulus|vtu_stress|plate_mass|patch_test|monolithic_newton|bad_input" ;;
   "") ;;
