@@ -46,11 +46,10 @@ namespace fgimpact
     d.time_step                 = time_step;
     d.scheme =
       TimeStepper::scheme_names().name(parameters.time_integration.scheme);
-    d.element_degree   = plate.get_fe().degree;
-    const double share = g.share();
-    d.symmetry      = share > 0.75 ? "none" : share > 0.3 ? "half" : "quarter";
-    d.property_mode = property_mode_names().name(m.property_mode);
-    d.gradation     = gradation_names().name(m.gradation);
+    d.element_degree  = plate.get_fe().degree;
+    d.symmetry        = g.part_name();
+    d.property_mode   = property_mode_names().name(m.property_mode);
+    d.gradation       = gradation_names().name(m.gradation);
     d.power_law_index = m.power_law_index;
     d.impactor_radius = parameters.impactor.radius;
     d.thickness       = g.thickness();

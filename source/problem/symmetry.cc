@@ -96,10 +96,8 @@ namespace fgimpact
         case Symmetry::none:
           break;
       }
-    const double share = part.share();
-    std::string  line  = std::string("symmetry: ") +
-                       (share < 0.3 ? "quarter" : "half") +
-                       " of the plate modelled (";
+    std::string line =
+      "symmetry: " + part_name(part.cut) + " of the plate modelled (";
     if (part.cut[0])
       line += "x <= a/2, u_x = 0 on x = a/2";
     if (part.cut[0] && part.cut[1])

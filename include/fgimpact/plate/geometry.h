@@ -52,6 +52,23 @@ namespace fgimpact
     double contact_radius = 0;
   };
 
+  /// The share of the whole plate that a part cut at x = a/2 (cut[0])
+  /// and y = b/2 (cut[1]) models: 1, 1/2 or 1/4.
+  inline double
+  part_share(const std::array<bool, 2> &cut)
+  {
+    return (cut[0] ? 0.5 : 1.) * (cut[1] ? 0.5 : 1.);
+  }
+
+  /// Its name, as Geometry/Symmetry spells it: none, half or quarter.
+  inline std::string
+  part_name(const std::array<bool, 2> &cut)
+  {
+    return cut[0] && cut[1] ? "quarter" : cut[0] || cut[1] ? "half" : "none";
+  }
+
+
+
   /**
    * The plate a x b x h, x and y in-plane, z through the thickness from the
    * bottom face, meshed by GridGenerator::subdivided_hyper_rectangle with
@@ -153,7 +170,14 @@ namespace fgimpact
     double
     share() const
     {
-      return (cut[0] ? 0.5 : 1.) * (cut[1] ? 0.5 : 1.);
+      return part_share(cut);
+    }
+
+    /// none, half or quarter (part_name()).
+    std::string
+    part_name() const
+    {
+      return fgimpact::part_name(cut);
     }
 
     /// How many points of the whole plate the part's point p stands for:

@@ -1,6 +1,7 @@
 #ifndef fgimpact_symmetry_h
 #define fgimpact_symmetry_h
 
+#include <fgimpact/plate/geometry.h>
 #include <fgimpact/problem/parameters.h>
 
 #include <array>
@@ -20,7 +21,7 @@ namespace fgimpact
     double
     share() const
     {
-      return (cut[0] ? 0.5 : 1.) * (cut[1] ? 0.5 : 1.);
+      return part_share(cut);
     }
   };
 
