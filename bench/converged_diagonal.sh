@@ -64,6 +64,10 @@ done | awk '
       printf "\n%-24s", "  change %"
       for (i = 2; i <= NR; ++i) printf " %12.3f", 100 * (q[i, k] / q[i - 1, k] - 1)
       d1 = q[NR - 1, k] - q[NR - 2, k]; d2 = q[NR, k] - q[NR - 1, k]
+      if (d1 * d2 <= 0 || d1 * d1 <= d2 * d2) {
+        printf "\n%-24s no order: the last two changes do not shrink with one sign\n", ""
+        continue
+      }
       p = log(d1 / d2) / log(2)
       limit = q[NR, k] + d2 / (2 ^ p - 1)
       printf "\n%-24s order %.2f (last two changes), limit %.7g\n", "", p, limit

@@ -3,7 +3,9 @@
 # and no function over 60 lines (pmccabe's count, signature and comments
 # inside included).  Prints each offender and exits 1 if there is one.
 # pmccabe is Debian's `pmccabe` (CI installs it); without it the function
-# rule is skipped with a line that says so.
+# rule is skipped with a line that says so.  pmccabe misreads the classes
+# defined inside a .cc (4 files print "too many }'s"); a brace scan of those
+# found no function over 60 lines on 2026-11-28.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 max_file=500
@@ -26,8 +28,9 @@ if command -v pmccabe >/dev/null; then
     status=1
   fi
   n=$(pmccabe source/*.cc source/*/*.cc 2>/dev/null | wc -l)
-  echo "check_sizes: $n functions, none over $max_function lines; no file over $max_file lines" |
-    { [ $status -eq 0 ] && cat || true; }
+  if [ $status -eq 0 ]; then
+    echo "check_sizes: $n functions, none over $max_function lines; no file over $max_file lines"
+  fi
 else
   echo "check_sizes: pmccabe not installed, function lengths not checked (apt-get install pmccabe)"
 fi
