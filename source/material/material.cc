@@ -111,6 +111,36 @@ namespace fgimpact
             "infinity tends to pure ceramic. Dimensionless.");
     }
 
+    /// The constituents' thermal expansion and conductivity.
+    void
+    add_thermal_rows(ParameterTable<FunctionallyGradedMaterial::Parameters> &t)
+    {
+      using P = FunctionallyGradedMaterial::Parameters;
+      t.add("Metal thermal expansion",
+            &P::metal_thermal_expansion,
+            Patterns::Double(0., 1e-3),
+            "Linear thermal expansion coefficient alpha_m of the metal "
+            "constituent (read only with a Thermal/Temperature field); "
+            "graded by the rule of mixtures at the metal volume fraction. "
+            "Unit: 1/K.");
+      t.add("Ceramic thermal expansion",
+            &P::ceramic_thermal_expansion,
+            Patterns::Double(0., 1e-3),
+            "Linear thermal expansion coefficient alpha_c of the ceramic "
+            "constituent. Unit: 1/K.");
+      t.add("Metal conductivity",
+            &P::metal_conductivity,
+            Patterns::Double(1e-3, 1e5),
+            "Thermal conductivity k_m of the metal constituent (read only "
+            "with Thermal/Temperature field = conduction); graded by the "
+            "rule of mixtures. Unit: W/(m K).");
+      t.add("Ceramic conductivity",
+            &P::ceramic_conductivity,
+            Patterns::Double(1e-3, 1e5),
+            "Thermal conductivity k_c of the ceramic constituent. "
+            "Unit: W/(m K).");
+    }
+
     /// How the properties are graded and interpolated.
     void
     add_grading_rows(ParameterTable<FunctionallyGradedMaterial::Parameters> &t)
@@ -172,6 +202,7 @@ namespace fgimpact
       static const ParameterTable<P> table = [] {
         ParameterTable<P> t;
         add_constituent_rows(t);
+        add_thermal_rows(t);
         add_grading_rows(t);
         return t;
       }();
@@ -327,6 +358,29 @@ namespace fgimpact
     if (Em == Ec)
       return 1.;
     return std::clamp((law->properties(zeta).E - Ec) / (Em - Ec), 0., 1.);
+  }
+
+
+
+  double
+  FunctionallyGradedMaterial::thermal_expansion(const double z) const
+  {
+    const double Vm = metal_volume_fraction(z);
+    return parameters.ceramic_thermal_expansion +
+           (parameters.metal_thermal_expansion -
+            parameters.ceramic_thermal_expansion) *
+             Vm;
+  }
+
+
+
+  double
+  FunctionallyGradedMaterial::conductivity(const double z) const
+  {
+    const double Vm = metal_volume_fraction(z);
+    return parameters.ceramic_conductivity +
+           (parameters.metal_conductivity - parameters.ceramic_conductivity) *
+             Vm;
   }
 
 

@@ -336,9 +336,9 @@ namespace fgimpact
   void
   SummaryFile::write(const SummaryWriter &content)
   {
-    last = content;
+    keep(content);
     if (root)
-      content.write(filename);
+      last.write(filename);
   }
 
 

@@ -46,6 +46,27 @@ namespace fgimpact
 
 
   void
+  add_geometric_cell_matrix(const FEValues<3>                        &fe_values,
+                            const std::vector<SymmetricTensor<2, 3>> &sigma0,
+                            FullMatrix<double>                       &cell_K)
+  {
+    const FiniteElement<3> &fe = fe_values.get_fe();
+    const unsigned int      n  = fe.n_dofs_per_cell();
+    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const Tensor<1, 3> s_grad_i =
+            sigma0[q] * fe_values.shape_grad(i, q) * fe_values.JxW(q);
+          const unsigned int ci = fe.system_to_component_index(i).first;
+          for (unsigned int j = 0; j < n; ++j)
+            if (fe.system_to_component_index(j).first == ci)
+              cell_K(i, j) += s_grad_i * fe_values.shape_grad(j, q);
+        }
+  }
+
+
+
+  void
   add_cell_mass_product(const FEValues<3>         &fe_values,
                         const std::vector<double> &rho,
                         const Vector<double>      &d,

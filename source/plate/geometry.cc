@@ -71,6 +71,19 @@ namespace fgimpact
           "(u = v = w = 0: bonded to a rigid base) or simply supported "
           "(w = 0 only: resting on a frictionless rigid base, which can pull "
           "as well as push).");
+        prm.declare_entry(
+          "In-plane edges",
+          defaults.immovable_edges ? "immovable" : "movable",
+          Patterns::Selection("movable|immovable"),
+          "The in-plane displacement normal to a simply supported side. "
+          "movable: free (Eq. 2.15), so a uniform heating expands the plate "
+          "between the sides. immovable: its mean over the thickness "
+          "vanishes on every line of nodes through the thickness (a "
+          "distributed coupling: the side may rotate about its mid-plane, "
+          "not translate), so a uniform Delta T gives sigma = -E alpha "
+          "Delta T / (1 - nu) in a homogeneous plate, as in plate theory "
+          "(doc/thermal.md). A clamped side holds every component on the "
+          "whole face, immovable either way.");
       }
       prm.leave_subsection();
     }
@@ -205,7 +218,8 @@ namespace fgimpact
     {
       for (unsigned int f = 0; f < 4; ++f)
         supports[f] = support_names().value(prm.get(side_names[f]));
-      bottom_support = support_names().value(prm.get("Face z min"));
+      bottom_support  = support_names().value(prm.get("Face z min"));
+      immovable_edges = (prm.get("In-plane edges") == "immovable");
     }
     prm.leave_subsection();
   }

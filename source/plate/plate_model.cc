@@ -301,6 +301,7 @@ namespace fgimpact
         VectorTools::interpolate_boundary_values(
           mapping, dof_handler, face, Functions::ZeroFunction<3>(3), c, mask);
       }
+    add_immovable_edges(c);
     c.close();
   }
 

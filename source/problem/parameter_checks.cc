@@ -88,4 +88,6 @@ namespace fgimpact
                   "scene change it by -0.82 %, then +0.82 %); use Degree = 1 "
                   "(doc/contact.md)."));
   }
+
+
 } // namespace fgimpact

@@ -123,10 +123,14 @@ namespace fgimpact
           const unsigned int t1 = (normal + 1) % 3, t2 = (normal + 2) % 3;
           // Simply supported: the side's w and tangential in-plane
           // component (Eq. 2.15), the base's w only.
+          // An immovable simply supported side also holds its normal
+          // component on the mid-plane (z = 0 here).
           const std::vector<unsigned int> components =
             support == SideSupport::clamped ?
               std::vector<unsigned int>{0, 1, 2} :
             normal == 2 ? std::vector<unsigned int>{2} :
+            g.immovable_edges ?
+                          std::vector<unsigned int>{1 - normal, 2, normal} :
                           std::vector<unsigned int>{1 - normal, 2};
           for (unsigned int corner = 0; corner < 4; ++corner)
             {
@@ -139,11 +143,14 @@ namespace fgimpact
                   // (t + omega x p)_c: t_c + sum_k omega_k (e_k x p)_c.
                   std::array<double, 6> row = {};
                   row[c]                    = 1.;
+                  std::array<double, 3> q   = p;
+                  if (c == normal && support != SideSupport::clamped)
+                    q[2] = 0.;
                   for (unsigned int k = 0; k < 3; ++k)
                     {
                       const unsigned int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
                       // e_k x p = e_k2 p_k1 - e_k1 p_k2
-                      row[3 + k] = (c == k1 ? -p[k2] : c == k2 ? p[k1] : 0.);
+                      row[3 + k] = (c == k1 ? -q[k2] : c == k2 ? q[k1] : 0.);
                     }
                   A.push_back(row);
                 }
@@ -371,6 +378,7 @@ namespace fgimpact
     StaticAnalysisParameters::declare_parameters(prm);
     ModalAnalysisParameters::declare_parameters(prm);
     FunctionallyGradedMaterial::Parameters::declare_parameters(prm);
+    ThermalParameters::declare_parameters(prm);
     GradedStrength::Parameters::declare_parameters(prm);
     HertzContactLaw::Parameters::declare_parameters(prm);
     ContactModelParameters::declare_parameters(prm);
@@ -392,6 +400,7 @@ namespace fgimpact
 
     geometry.parse_parameters(prm);
     material.parse_parameters(prm);
+    thermal.parse_parameters(prm);
     strength.parse_parameters(prm);
     finite_element.parse_parameters(prm);
     contact.parse_parameters(prm);

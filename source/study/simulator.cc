@@ -2,6 +2,7 @@
 
 #include <fgimpact/analysis/modal_analysis.h>
 #include <fgimpact/analysis/static_analysis.h>
+#include <fgimpact/analysis/thermal_step.h>
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/stop_signals.h>
 #include <fgimpact/material/constitutive_law.h>
@@ -261,6 +262,17 @@ namespace fgimpact
       total_timer.restart(); // the plate taken over: the driver's set-up
     else
       setup_plate();
+    if (parameters.thermal.active())
+      {
+        thermal = std::make_unique<ThermalStep>(parameters.thermal,
+                                                *plate,
+                                                parameters.linear_solver);
+        thermal->run();
+        thermal->print(pcout);
+        if (parameters.thermal.geometric_stiffness)
+          plate->add_initial_stress_stiffness(thermal->geometric_stiffness());
+        summary_file.set_appendix(thermal->summary());
+      }
     switch (parameters.problem_type)
       {
         case ProblemType::impact:

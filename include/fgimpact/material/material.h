@@ -78,10 +78,18 @@ namespace fgimpact
       double poissons_ratio         = 0.3;
       /// Negative: the same as poissons_ratio (Material/Ceramic Poisson's
       /// ratio = same).
-      double            ceramic_poissons_ratio = -2.;
-      double            power_law_index        = 1.;
-      PropertyMode      property_mode          = PropertyMode::graded;
-      Gradation         gradation              = Gradation::power_law;
+      double ceramic_poissons_ratio = -2.;
+      double power_law_index        = 1.;
+      /// Linear thermal expansion coefficients (1/K) and thermal
+      /// conductivities (W/(m K)) of the constituents (Thermal/*: only a
+      /// temperature field reads them); the defaults are aluminium and
+      /// alumina, the default scene's pair.
+      double            metal_thermal_expansion   = 23e-6;
+      double            ceramic_thermal_expansion = 7.4e-6;
+      double            metal_conductivity        = 204.;
+      double            ceramic_conductivity      = 10.4;
+      PropertyMode      property_mode             = PropertyMode::graded;
+      Gradation         gradation                 = Gradation::power_law;
       Homogenization    homogenization      = Homogenization::rule_of_mixtures;
       GradedNodalValues graded_nodal_values = GradedNodalValues::sampled;
       /// Gradation = tabulated: the CSV file (after
@@ -123,6 +131,16 @@ namespace fgimpact
     /// Poisson's ratio nu(z).
     double
     poissons_ratio(const double z) const;
+
+    /// The linear thermal expansion coefficient alpha(z) (1/K): the rule
+    /// of mixtures of the constituents' at the metal volume fraction
+    /// metal_volume_fraction(z), for every gradation law.
+    double
+    thermal_expansion(const double z) const;
+
+    /// The thermal conductivity k(z) (W/(m K)), by the same rule.
+    double
+    conductivity(const double z) const;
 
     /// Whether nu is the same at every z: the constitutive law then uses
     /// it exactly (no interpolation, so the default scene's numbers are

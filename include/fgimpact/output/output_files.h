@@ -98,6 +98,13 @@ namespace fgimpact
     void
     add_text(const std::string &name, const std::string &value);
 
+    /// The lines of `other` after these.
+    void
+    append(const SummaryWriter &other)
+    {
+      lines.insert(lines.end(), other.lines.begin(), other.lines.end());
+    }
+
     /// Write all lines to filename; throws ExcOutputFailure if it cannot.
     void
     write(const std::string &filename) const;
@@ -175,6 +182,14 @@ namespace fgimpact
     void
     write_failed(const SummaryWriter &content);
 
+    /// Lines that every later write() adds after its content's (the
+    /// thermal step's keys, known before the analysis writes).
+    void
+    set_appendix(const SummaryWriter &lines)
+    {
+      appendix = lines;
+    }
+
     /// Keep `content` as the last write's entries without writing (the
     /// ranks that do not write a file their rank 0 wrote: a study reads
     /// its cases' results from memory on every rank).
@@ -182,6 +197,7 @@ namespace fgimpact
     keep(const SummaryWriter &content)
     {
       last = content;
+      last.append(appendix);
     }
 
     /// The entries of the last write (none before).
@@ -199,6 +215,7 @@ namespace fgimpact
     const std::string filename;
     const bool        root;
     SummaryWriter     last;
+    SummaryWriter     appendix;
   };
 } // namespace fgimpact
 

@@ -95,6 +95,10 @@ namespace fgimpact
       /// Support of the bottom face z = 0 (id 4): simply supported is
       /// w = 0 only (a frictionless rigid base).
       SideSupport bottom_support = SideSupport::free;
+      /// Boundary conditions/In-plane edges = immovable: a simply
+      /// supported side also holds the in-plane displacement normal to it
+      /// on the mid-plane z = h/2 (the edge may still rotate).
+      bool immovable_edges = false;
       /// Contact refinement: levels as given (auto: chosen from the scene
       /// by Simulator::contact_refinement(), levels then 0 here) and the
       /// core radius (m, 0: automatic).

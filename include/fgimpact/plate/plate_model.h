@@ -115,6 +115,15 @@ namespace fgimpact
       return cut_coupling;
     }
 
+    /// K += K_sigma: the initial-stress stiffness of a pre-stress
+    /// (assemble_geometric_stiffness(), on K's sparsity), before any
+    /// analysis reads K.
+    void
+    add_initial_stress_stiffness(const TrilinosWrappers::SparseMatrix &K_sigma)
+    {
+      stiffness.add(1., K_sigma);
+    }
+
     /// Reinit v as a (non-ghosted) vector of locally owned DoFs.
     void
     initialize_vector(TrilinosWrappers::MPI::Vector &v) const;
@@ -282,6 +291,23 @@ namespace fgimpact
     /// Hanging nodes and supports into c, and with_cuts the symmetry cuts.
     void
     make_constraints(AffineConstraints<double> &c, const bool with_cuts) const;
+    /**
+     * Boundary conditions/In-plane edges = immovable
+     * (source/plate/edge_constraints.cc): on every column of nodes through
+     * the thickness of a simply supported side, the mean over z of the
+     * normal in-plane displacement vanishes (a distributed coupling: the
+     * side may rotate about its mid-plane, not translate).  Holding the
+     * mid-plane nodes alone would be a line support on a 3D body, whose
+     * restraint softens under refinement (u ~ log r).
+     */
+    void
+    add_immovable_edges(AffineConstraints<double> &c) const;
+
+    /// One column's constraint, column = (z, DoF) pairs: the node nearest
+    /// the mid-plane as minus the weighted others.
+    void
+    add_mean_constraint(std::vector<std::pair<double, double>> &column,
+                        AffineConstraints<double>              &c) const;
     void
     assemble();
     /// B-bar: the pointwise dilatation of cell_K replaced by the cell's

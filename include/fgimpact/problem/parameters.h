@@ -8,6 +8,7 @@
 #include <fgimpact/contact/impactor.h>
 #include <fgimpact/material/material.h>
 #include <fgimpact/material/strength.h>
+#include <fgimpact/material/thermal.h>
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/plate/geometry.h>
 #include <fgimpact/plate/linear_solver.h>
@@ -44,6 +45,7 @@ namespace fgimpact
     AccuracyPreset::Parameters             accuracy;
     PlateGeometry::Parameters              geometry;
     FunctionallyGradedMaterial::Parameters material;
+    ThermalParameters                      thermal;
     GradedStrength::Parameters             strength;
     PlateModel::Parameters                 finite_element;
     HertzContactLaw::Parameters            contact;

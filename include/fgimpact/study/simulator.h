@@ -21,6 +21,7 @@ namespace fgimpact
   using namespace dealii;
 
   class ConvergedRun;
+  class ThermalStep;
 
   /**
    * The program: parameters -> plate model (geometry, material, mesh and
@@ -106,6 +107,7 @@ namespace fgimpact
     std::unique_ptr<FunctionallyGradedMaterial> material;
     std::unique_ptr<Scene>                      scene;
     std::unique_ptr<PlateModel>                 plate;
+    std::unique_ptr<ThermalStep>                thermal;
     std::unique_ptr<ProblemDriver>              driver;
     std::vector<ImpactMonitor::RowObserver>     observers;
     CheckpointSettings                          checkpoint_settings;

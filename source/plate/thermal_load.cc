@@ -1,0 +1,194 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <fgimpact/material/constitutive_law.h>
+#include <fgimpact/plate/cell_matrices.h>
+#include <fgimpact/plate/probes.h>
+#include <fgimpact/plate/thermal_load.h>
+
+#include <limits>
+
+namespace fgimpact
+{
+  void
+  assemble_thermal_load(const PlateModel              &plate,
+                        const TemperatureProfile      &temperature,
+                        TrilinosWrappers::MPI::Vector &rhs)
+  {
+    const FESystem<3>                   &fe = plate.get_fe();
+    const QGauss<3>                      quadrature(fe.degree + 1);
+    FEValues<3>                          fe_values(plate.get_mapping(),
+                          fe,
+                          quadrature,
+                          update_gradients | update_quadrature_points |
+                            update_JxW_values);
+    PropertyInterpolator                 properties(fe.base_element(0),
+                                    quadrature.get_points(),
+                                    plate.get_material());
+    const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
+    Vector<double>                       cell_f(dofs_per_cell);
+    std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
+    std::vector<double>                  E, nu, rho;
+    plate.initialize_vector(rhs);
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          properties.values(cell, E, nu, rho);
+          const ArrayView<const double> mean_div = plate.mean_divergence(cell);
+          cell_f                                 = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              // C e I = (3 lambda + 2 mu) e I (Pa).
+              const double stress =
+                (3. * HookeLaw::lambda(E[q], nu[q]) +
+                 2. * HookeLaw::mu(E[q], nu[q])) *
+                temperature.thermal_strain(fe_values.quadrature_point(q)[2]);
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  const double div_i =
+                    mean_div.size() > 0 ?
+                      mean_div[i] :
+                      fe_values.shape_grad(
+                        i, q)[fe.system_to_component_index(i).first];
+                  cell_f[i] += stress * div_i * fe_values.JxW(q);
+                }
+            }
+          cell->get_dof_indices(local_dofs);
+          plate.get_constraints().distribute_local_to_global(cell_f,
+                                                             local_dofs,
+                                                             rhs);
+        }
+    rhs.compress(VectorOperation::add);
+  }
+
+
+
+  SymmetricTensor<2, 3>
+  thermal_stress_at(const PlateModel                    &plate,
+                    const TemperatureProfile            &temperature,
+                    const TrilinosWrappers::MPI::Vector &u,
+                    const Point<3>                      &location)
+  {
+    const auto cells = locally_owned_cells_containing(plate, location);
+    SymmetricTensor<2, 3> sum;
+    const FESystem<3>    &fe = plate.get_fe();
+    for (const auto &[cell, unit_point] : cells)
+      {
+        const Quadrature<3>  point(unit_point);
+        FEValues<3>          fe_values(plate.get_mapping(),
+                              fe,
+                              point,
+                              update_gradients | update_quadrature_points);
+        PropertyInterpolator properties(fe.base_element(0),
+                                        {unit_point},
+                                        plate.get_material());
+        fe_values.reinit(cell);
+        std::vector<std::vector<Tensor<1, 3>>> gradients(
+          1, std::vector<Tensor<1, 3>>(3));
+        fe_values.get_function_gradients(u, gradients);
+        std::vector<SymmetricTensor<2, 3>> eps(1);
+        for (unsigned int c = 0; c < 3; ++c)
+          for (unsigned int d = 0; d < 3; ++d)
+            eps[0][c][d] += (c == d ? 1. : 0.5) * gradients[0][c][d];
+        plate.apply_mean_dilatation(cell, u, eps);
+        std::vector<double> E, nu, rho;
+        properties.values(cell, E, nu, rho);
+        const double e =
+          temperature.thermal_strain(fe_values.quadrature_point(0)[2]);
+        sum += HookeLaw::stress(E[0],
+                                nu[0],
+                                eps[0] - e * unit_symmetric_tensor<3>());
+      }
+    const MPI_Comm     comm = plate.get_mpi_communicator();
+    const unsigned int n =
+      Utilities::MPI::sum(static_cast<unsigned int>(cells.size()), comm);
+    if (n == 0)
+      return SymmetricTensor<2, 3>() * std::numeric_limits<double>::quiet_NaN();
+    SymmetricTensor<2, 3> total;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int j = i; j < 3; ++j)
+        total[i][j] = Utilities::MPI::sum(sum[i][j], comm) / n;
+    return total;
+  }
+
+
+
+  namespace
+  {
+    /// sigma0 = C (eps(u) - e I) at the quadrature points of one cell.
+    void
+    prestress(const PlateModel                          &plate,
+              const TemperatureProfile                  &temperature,
+              const TrilinosWrappers::MPI::Vector       &u,
+              const FEValues<3>                         &fe_values,
+              const DoFHandler<3>::active_cell_iterator &cell,
+              const PropertyInterpolator                &properties,
+              std::vector<SymmetricTensor<2, 3>>        &sigma0)
+    {
+      const unsigned int n_q = fe_values.n_quadrature_points;
+      std::vector<std::vector<Tensor<1, 3>>> gradients(
+        n_q, std::vector<Tensor<1, 3>>(3));
+      fe_values.get_function_gradients(u, gradients);
+      std::vector<SymmetricTensor<2, 3>> eps(n_q);
+      for (unsigned int q = 0; q < n_q; ++q)
+        for (unsigned int c = 0; c < 3; ++c)
+          for (unsigned int d = 0; d < 3; ++d)
+            eps[q][c][d] += (c == d ? 1. : 0.5) * gradients[q][c][d];
+      plate.apply_mean_dilatation(cell, u, eps);
+      std::vector<double> E, nu, rho;
+      properties.values(cell, E, nu, rho);
+      sigma0.resize(n_q);
+      for (unsigned int q = 0; q < n_q; ++q)
+        sigma0[q] =
+          HookeLaw::stress(E[q],
+                           nu[q],
+                           eps[q] - temperature.thermal_strain(
+                                      fe_values.quadrature_point(q)[2]) *
+                                      unit_symmetric_tensor<3>());
+    }
+  } // namespace
+
+
+
+  void
+  assemble_geometric_stiffness(const PlateModel                    &plate,
+                               const TemperatureProfile            &temperature,
+                               const TrilinosWrappers::MPI::Vector &u,
+                               TrilinosWrappers::SparseMatrix      &K_sigma)
+  {
+    const FESystem<3>                   &fe = plate.get_fe();
+    const QGauss<3>                      quadrature(fe.degree + 1);
+    FEValues<3>                          fe_values(plate.get_mapping(),
+                          fe,
+                          quadrature,
+                          update_gradients | update_quadrature_points |
+                            update_JxW_values);
+    PropertyInterpolator                 properties(fe.base_element(0),
+                                    quadrature.get_points(),
+                                    plate.get_material());
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_K(n, n);
+    std::vector<types::global_dof_index> dofs(n);
+    std::vector<SymmetricTensor<2, 3>>   sigma0;
+    K_sigma.copy_from(plate.stiffness_matrix());
+    K_sigma                                      = 0.;
+    const AffineConstraints<double> &constraints = plate.get_constraints();
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          prestress(plate, temperature, u, fe_values, cell, properties, sigma0);
+          cell_K = 0;
+          add_geometric_cell_matrix(fe_values, sigma0, cell_K);
+          cell->get_dof_indices(dofs);
+          constraints.distribute_local_to_global(cell_K, dofs, K_sigma);
+        }
+    K_sigma.compress(VectorOperation::add);
+    for (const auto dof : plate.locally_owned_dofs())
+      if (constraints.is_constrained(dof))
+        K_sigma.set(dof, dof, 0.);
+    K_sigma.compress(VectorOperation::insert);
+  }
+} // namespace fgimpact
