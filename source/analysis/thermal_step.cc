@@ -142,24 +142,30 @@ namespace fgimpact
 
 
   void
-  ThermalStep::print(ConditionalOStream &out) const
+  ThermalStep::print(ConditionalOStream &out, const bool with_time) const
   {
+    // The buckling solve's iterations are left out: they may vary with the
+    // BLAS kernel.
     const double h = plate.get_geometry().get_parameters().thickness;
+    const std::ios_base::fmtflags flags     = out.get_stream().flags();
+    const std::streamsize         precision = out.get_stream().precision();
     out << std::fixed << std::setprecision(3)
-        << "Thermal step: T = " << profile.temperature(0.) << " K (bottom) to "
-        << profile.temperature(h) << " K (top), T_ref = "
-        << profile.get_parameters().reference_temperature << " K; sigma_xx "
-        << "at the face centres " << top[0][0] / 1e6 << " MPa (top), "
-        << bottom[0][0] / 1e6 << " MPa (bottom)";
-    if (profile.get_parameters().geometric_stiffness)
-      out << "; buckling at " << std::setprecision(4) << buckling.factor
-          << " x (T - T_ref), a change of "
-          << buckling.factor * largest_change() << " K (" << buckling.iterations
-          << " subspace iterations)" << std::setprecision(3);
+        << "  thermal step: T = " << profile.temperature(0.)
+        << " K (bottom) to " << profile.temperature(h) << " K (top), T_ref = "
+        << profile.get_parameters().reference_temperature
+        << " K; sigma_xx at the face centres " << top[0][0] / 1e6
+        << " MPa (top), " << bottom[0][0] / 1e6 << " MPa (bottom)";
     if (n_pins > 0)
       out << "; " << n_pins
           << " rigid-body motion(s) free, pinned without force";
-    out << "; " << std::setprecision(2) << seconds << " s" << std::endl;
-    out.get_stream().unsetf(std::ios_base::floatfield);
+    if (with_time)
+      out << "; " << std::setprecision(2) << seconds << " s";
+    out << '\n';
+    if (profile.get_parameters().geometric_stiffness)
+      out << "  thermal buckling at " << std::setprecision(3) << buckling.factor
+          << " x (T - T_ref), a change of " << std::setprecision(1)
+          << buckling.factor * largest_change() << " K\n";
+    out.get_stream().flags(flags);
+    out.get_stream().precision(precision);
   }
 } // namespace fgimpact

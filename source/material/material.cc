@@ -141,6 +141,29 @@ namespace fgimpact
             "Unit: W/(m K).");
     }
 
+    /// The named, temperature-dependent constituents.
+    void
+    add_named_rows(ParameterTable<FunctionallyGradedMaterial::Parameters> &t)
+    {
+      using P = FunctionallyGradedMaterial::Parameters;
+      t.add("Metal material",
+            &P::metal_material,
+            metal_material_names(),
+            "The metal constituent (top face). constant: the Metal entries "
+            "above. A name: its E, nu, rho, thermal expansion and "
+            "conductivity follow the temperature field (Thermal), the "
+            "graded property at a point being the mixture of the "
+            "constituents at the local temperature; the Metal entries are "
+            "then ignored (without a field: at Thermal/Reference "
+            "temperature). Power-law and sigmoid gradations only. " +
+              named_material_help());
+      t.add("Ceramic material",
+            &P::ceramic_material,
+            ceramic_material_names(),
+            "The ceramic constituent (bottom face): constant (the Ceramic "
+            "entries above) or a name, as Metal material.");
+    }
+
     /// How the properties are graded and interpolated.
     void
     add_grading_rows(ParameterTable<FunctionallyGradedMaterial::Parameters> &t)
@@ -203,6 +226,7 @@ namespace fgimpact
         ParameterTable<P> t;
         add_constituent_rows(t);
         add_thermal_rows(t);
+        add_named_rows(t);
         add_grading_rows(t);
         return t;
       }();
@@ -244,6 +268,13 @@ namespace fgimpact
     {
       material_table().parse(prm, *this);
       parse_ceramic_poissons_ratio(prm, *this);
+      AssertThrow(!temperature_dependent() ||
+                    gradation == Gradation::power_law ||
+                    gradation == Gradation::sigmoid,
+                  ExcMessage("Material/Metal material or Ceramic material "
+                             "names a constituent, which needs a gradation "
+                             "of the two phases' volume fraction "
+                             "(Material/Gradation = power law or sigmoid)."));
       AssertThrow(gradation != Gradation::tabulated || !profile_file.empty(),
                   ExcMessage("Material/Gradation = tabulated needs "
                              "Material/Profile file."));
@@ -291,8 +322,9 @@ namespace fgimpact
 
 
   FunctionallyGradedMaterial::FunctionallyGradedMaterial(
-    const Parameters &parameters,
-    const double      thickness)
+    const Parameters                    &parameters,
+    const double                         thickness,
+    const std::function<double(double)> &temperature)
     : parameters(parameters)
     , h(thickness)
     , law(create_gradation_law(parameters.gradation,
@@ -300,6 +332,7 @@ namespace fgimpact
                                parameters.constituents(),
                                parameters.power_law_index,
                                parameters.profile_file))
+    , temperature(temperature)
   {}
 
 
@@ -307,7 +340,13 @@ namespace fgimpact
   IsotropicProperties
   FunctionallyGradedMaterial::properties(const double z) const
   {
-    return law->properties(std::clamp(z / h, 0., 1.));
+    const double zeta = std::clamp(z / h, 0., 1.);
+    if (!follows_temperature())
+      return law->properties(zeta);
+    // The mixture of the constituents at the local temperature.
+    return homogenize(constituents_at(temperature(z)),
+                      law->metal_fraction(zeta),
+                      parameters.homogenization);
   }
 
 
@@ -341,7 +380,8 @@ namespace fgimpact
   bool
   FunctionallyGradedMaterial::constant_poissons_ratio() const
   {
-    return law->constant_poissons_ratio();
+    // Named constituents' nu follows T(z).
+    return law->constant_poissons_ratio() && !follows_temperature();
   }
 
 
@@ -365,6 +405,8 @@ namespace fgimpact
   double
   FunctionallyGradedMaterial::thermal_expansion(const double z) const
   {
+    if (follows_temperature())
+      return thermal_expansion(z, temperature(z));
     const double Vm = metal_volume_fraction(z);
     return parameters.ceramic_thermal_expansion +
            (parameters.metal_thermal_expansion -
@@ -377,6 +419,8 @@ namespace fgimpact
   double
   FunctionallyGradedMaterial::conductivity(const double z) const
   {
+    if (follows_temperature())
+      return conductivity(z, temperature(z));
     const double Vm = metal_volume_fraction(z);
     return parameters.ceramic_conductivity +
            (parameters.metal_conductivity - parameters.ceramic_conductivity) *

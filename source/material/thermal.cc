@@ -110,6 +110,38 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The interval ends of R(z)'s quadrature on [0, h]: Chebyshev points
+    /// (clustered at both faces, where a power law or a sigmoid with an
+    /// index below 1 has an unbounded slope), the end intervals split
+    /// geometrically (ratio 10, 14 times), so that Gauss' rule never spans
+    /// the singular point's neighbourhood (n = 0.5: 1e-13 K).
+    std::vector<double>
+    conduction_nodes(const double h)
+    {
+      const unsigned int  n_intervals = 400;
+      std::vector<double> cos_nodes(n_intervals + 1);
+      for (unsigned int i = 0; i <= n_intervals; ++i)
+        cos_nodes[i] =
+          0.5 * h *
+          (1. - std::cos(M_PI * static_cast<double>(i) / n_intervals));
+      cos_nodes.front()         = 0.;
+      cos_nodes.back()          = h;
+      const double        first = cos_nodes[1];
+      std::vector<double> nodes{0.};
+      for (int k = 14; k >= 1; --k)
+        nodes.push_back(first * std::pow(10., -k));
+      nodes.insert(nodes.end(), cos_nodes.begin() + 1, cos_nodes.end() - 1);
+      for (int k = 1; k <= 14; ++k)
+        nodes.push_back(h - first * std::pow(10., -k));
+      nodes.push_back(h);
+      return nodes;
+    }
+  } // namespace
+
+
+
   TemperatureProfile::TemperatureProfile(
     const ThermalParameters          &parameters,
     const FunctionallyGradedMaterial &material)
@@ -119,29 +151,87 @@ namespace fgimpact
   {
     if (parameters.field != TemperatureField::conduction)
       return;
-    // Clustered at both faces (Chebyshev points), where a power law or a
-    // sigmoid with an index below 1 has an unbounded slope, and the end
-    // intervals split geometrically (ratio 10, 14 times): Gauss' rule then
-    // never spans the singular point's neighbourhood (n = 0.5: 1e-13 K).
-    const unsigned int  n_intervals = 400;
-    std::vector<double> cos_nodes(n_intervals + 1);
-    for (unsigned int i = 0; i <= n_intervals; ++i)
-      cos_nodes[i] =
-        0.5 * h * (1. - std::cos(M_PI * static_cast<double>(i) / n_intervals));
-    cos_nodes.front()  = 0.;
-    cos_nodes.back()   = h;
-    const double first = cos_nodes[1];
-    nodes.push_back(0.);
-    for (int k = 14; k >= 1; --k)
-      nodes.push_back(first * std::pow(10., -k));
-    nodes.insert(nodes.end(), cos_nodes.begin() + 1, cos_nodes.end() - 1);
-    for (int k = 1; k <= 14; ++k)
-      nodes.push_back(h - first * std::pow(10., -k));
-    nodes.push_back(h);
+    nodes = conduction_nodes(h);
+    solve_conduction();
+  }
+
+
+
+  void
+  TemperatureProfile::solve_conduction()
+  {
+    // k(T): Picard iterations from the linear profile, T of each one from
+    // R of the one before (for a constant k the first is exact).
+    const double T_b = parameters.bottom_temperature,
+                 T_t = parameters.top_temperature;
+    for (const double z : nodes)
+      {
+        node_temperatures.push_back(T_b + (T_t - T_b) * z / h);
+        node_slopes.push_back((T_t - T_b) / h);
+      }
+    const bool varies = material.get_parameters().temperature_dependent();
+    for (iterations = 1; iterations <= 200; ++iterations)
+      {
+        integrate_resistances();
+        double change = 0;
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          {
+            const double T =
+              T_b + (T_t - T_b) * resistances[i] / resistances.back();
+            change = std::max(change, std::abs(T - node_temperatures[i]));
+            node_temperatures[i] = T;
+          }
+        for (unsigned int i = 0; i < nodes.size(); ++i)
+          node_slopes[i] =
+            (T_t - T_b) /
+            (resistances.back() *
+             material.conductivity(nodes[i], node_temperatures[i]));
+        if (!varies)
+          return;
+        if (change <= 1e-10 * std::max(std::abs(T_b), std::abs(T_t)))
+          {
+            integrate_resistances();
+            return;
+          }
+      }
+    AssertThrow(false,
+                ExcMessage("Thermal/Temperature field = conduction: the "
+                           "temperature-dependent conductivity's fixed-point "
+                           "iteration did not converge in 200 iterations; "
+                           "check Material/Metal material and Ceramic "
+                           "material and the face temperatures."));
+  }
+
+
+
+  void
+  TemperatureProfile::integrate_resistances()
+  {
     resistances.assign(nodes.size(), 0.);
     for (unsigned int i = 1; i < nodes.size(); ++i)
       resistances[i] =
         resistances[i - 1] + gauss_resistance(nodes[i - 1], nodes[i]);
+  }
+
+
+
+  double
+  TemperatureProfile::iterate_temperature(const double z) const
+  {
+    const auto upper = std::upper_bound(nodes.begin(), nodes.end(), z);
+    if (upper == nodes.begin())
+      return node_temperatures.front();
+    if (upper == nodes.end())
+      return node_temperatures.back();
+    const std::size_t i  = (upper - nodes.begin()) - 1;
+    const double      dz = nodes[i + 1] - nodes[i];
+    const double      s  = (z - nodes[i]) / dz;
+    // Hermite basis on [0, 1].
+    const double h00 = (1. + 2. * s) * (1. - s) * (1. - s),
+                 h10 = s * (1. - s) * (1. - s), h01 = s * s * (3. - 2. * s),
+                 h11 = s * s * (s - 1.);
+    return h00 * node_temperatures[i] + h10 * dz * node_slopes[i] +
+           h01 * node_temperatures[i + 1] + h11 * dz * node_slopes[i + 1];
   }
 
 
@@ -152,8 +242,11 @@ namespace fgimpact
     static const QGauss<1> rule(8);
     double                 sum = 0.;
     for (unsigned int q = 0; q < rule.size(); ++q)
-      sum += rule.weight(q) /
-             material.conductivity(z0 + (z1 - z0) * rule.point(q)[0]);
+      {
+        const double z = z0 + (z1 - z0) * rule.point(q)[0];
+        sum +=
+          rule.weight(q) / material.conductivity(z, iterate_temperature(z));
+      }
     return sum * (z1 - z0);
   }
 

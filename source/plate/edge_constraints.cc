@@ -46,9 +46,10 @@ namespace fgimpact
 
 
   void
-  PlateModel::add_immovable_edges(AffineConstraints<double> &c) const
+  PlateModel::collect_edge_columns(const AffineConstraints<double> &c)
   {
     const PlateGeometry::Parameters &g = geometry.get_parameters();
+    edge_columns.clear();
     if (!g.immovable_edges)
       return;
     std::map<types::global_dof_index, Point<3>> points;
@@ -62,7 +63,8 @@ namespace fgimpact
         const unsigned int normal = face / 2, along = 1 - normal;
         ComponentMask      mask(3, false);
         mask.set(normal, true);
-        // Every rank sees every column whole: the owners' nodes gathered.
+        // The owners' unconstrained nodes, gathered: every rank sees every
+        // column whole and the same.
         std::vector<EdgeNode> mine;
         for (const auto dof :
              DoFTools::extract_boundary_dofs(dof_handler, mask, {face}))
@@ -76,20 +78,39 @@ namespace fgimpact
           for (const EdgeNode &node : part)
             columns[node[0]].emplace_back(node[1], node[2]);
         for (auto &[position, column] : columns)
-          add_mean_constraint(column, c);
+          {
+            std::sort(column.begin(), column.end());
+            edge_columns.push_back(column);
+          }
       }
+    // A column may span ranks: its DoFs join the relevant set, so that
+    // its line can be stored and condensed on every rank.
+    IndexSet columns_dofs(dof_handler.n_dofs());
+    for (const auto &column : edge_columns)
+      for (const auto &node : column)
+        columns_dofs.add_index(
+          static_cast<types::global_dof_index>(node.second));
+    locally_relevant.add_indices(columns_dofs);
+  }
+
+
+
+  void
+  PlateModel::add_immovable_edges(AffineConstraints<double> &c) const
+  {
+    for (const auto &column : edge_columns)
+      add_mean_constraint(column, c);
   }
 
 
 
   void
   PlateModel::add_mean_constraint(
-    std::vector<std::pair<double, double>> &column,
-    AffineConstraints<double>              &c) const
+    const std::vector<std::pair<double, double>> &column,
+    AffineConstraints<double>                    &c) const
   {
     // A column that misses a face (a support holds its end, or a hanging
     // node) is held there already, or is not one element's nodes.
-    std::sort(column.begin(), column.end());
     const double h = geometry.get_parameters().thickness;
     if (column.size() < 2 || column.front().first > 1e-9 * h ||
         column.back().first < h * (1 - 1e-9))

@@ -155,17 +155,7 @@ namespace fgimpact
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);
     setup_constraints();
 
-    TrilinosWrappers::SparsityPattern sparsity(locally_owned,
-                                               locally_owned,
-                                               locally_relevant,
-                                               mpi_communicator);
-    DoFTools::make_sparsity_pattern(dof_handler,
-                                    sparsity,
-                                    constraints,
-                                    /*keep_constrained_dofs=*/false,
-                                    Utilities::MPI::this_mpi_process(
-                                      mpi_communicator));
-    sparsity.compress();
+    const TrilinosWrappers::SparsityPattern sparsity = sparsity_pattern();
     stiffness.reinit(sparsity);
     mass.reinit(sparsity);
     if (parameters.mean_dilatation)
@@ -275,7 +265,16 @@ namespace fgimpact
   void
   PlateModel::setup_constraints()
   {
-    make_constraints(constraints, geometry.is_cut(0) || geometry.is_cut(1));
+    const bool cuts = geometry.is_cut(0) || geometry.is_cut(1);
+    edge_columns.clear();
+    make_constraints(constraints, cuts);
+    if (geometry.get_parameters().immovable_edges)
+      {
+        // The immovable sides' columns need the supports first, and widen
+        // the relevant set: the constraints once more, with their lines.
+        collect_edge_columns(constraints);
+        make_constraints(constraints, cuts);
+      }
   }
 
 
@@ -303,6 +302,27 @@ namespace fgimpact
       }
     add_immovable_edges(c);
     c.close();
+  }
+
+
+
+  TrilinosWrappers::SparsityPattern
+  PlateModel::sparsity_pattern() const
+  {
+    // Rows of the ghost DoFs writable: a rank adds its cells' entries to
+    // rows other ranks own.
+    TrilinosWrappers::SparsityPattern sparsity(locally_owned,
+                                               locally_owned,
+                                               locally_relevant,
+                                               mpi_communicator);
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    sparsity,
+                                    constraints,
+                                    /*keep_constrained_dofs=*/false,
+                                    Utilities::MPI::this_mpi_process(
+                                      mpi_communicator));
+    sparsity.compress();
+    return sparsity;
   }
 
 

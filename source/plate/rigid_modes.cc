@@ -3,6 +3,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/lac/lapack_full_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 
 #include <fgimpact/plate/rigid_modes.h>
 
@@ -32,12 +33,13 @@ namespace fgimpact
       return row;
     }
 
-    /// The Gram matrix of the constraints' residuals on the six motions,
-    /// summed over the ranks.
-    FullMatrix<double>
-    constraint_gram(const PlateModel &plate,
-                    const Point<3>   &centre,
-                    const double      size)
+    /// The six unit motions as ghosted vectors on the plate's DoFs: a
+    /// constraint's entries may lie off this rank's cells (an immovable
+    /// side's column), where only their owner knows the support point.
+    std::array<TrilinosWrappers::MPI::Vector, 6>
+    motion_vectors(const PlateModel &plate,
+                   const Point<3>   &centre,
+                   const double      size)
     {
       const DoFHandler<3>                        &dh = plate.get_dof_handler();
       std::map<types::global_dof_index, Point<3>> points;
@@ -49,12 +51,42 @@ namespace fgimpact
           mask.set(c, true);
           component_dofs[c] = DoFTools::extract_dofs(dh, mask);
         }
+      std::array<TrilinosWrappers::MPI::Vector, 6> motions;
+      for (unsigned int m = 0; m < 6; ++m)
+        {
+          TrilinosWrappers::MPI::Vector owned;
+          plate.initialize_vector(owned);
+          for (const auto dof : plate.locally_owned_dofs())
+            {
+              unsigned int c = 0;
+              while (c < 2 && !component_dofs[c].is_element(dof))
+                ++c;
+              owned(dof) =
+                motion_row(Point<3>((points.at(dof) - centre) / size), c)[m];
+            }
+          owned.compress(VectorOperation::insert);
+          motions[m].reinit(plate.locally_owned_dofs(),
+                            plate.locally_relevant_dofs(),
+                            plate.get_mpi_communicator());
+          motions[m] = owned;
+        }
+      return motions;
+    }
+
+    /// The Gram matrix of the constraints' residuals on the six motions,
+    /// summed over the ranks.
+    FullMatrix<double>
+    constraint_gram(const PlateModel &plate,
+                    const Point<3>   &centre,
+                    const double      size)
+    {
+      const std::array<TrilinosWrappers::MPI::Vector, 6> motions =
+        motion_vectors(plate, centre, size);
       const auto row_of = [&](const types::global_dof_index dof) {
-        unsigned int c = 0;
-        while (c < 2 && !component_dofs[c].is_element(dof))
-          ++c;
-        Point<3> p = points.at(dof);
-        return motion_row(Point<3>((p - centre) / size), c);
+        Motion row;
+        for (unsigned int m = 0; m < 6; ++m)
+          row[m] = motions[m](dof);
+        return row;
       };
       const AffineConstraints<double> &constraints = plate.get_constraints();
       std::vector<double>              gram(36, 0.);

@@ -172,8 +172,7 @@ namespace fgimpact
     FullMatrix<double>                   cell_K(n, n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<SymmetricTensor<2, 3>>   sigma0;
-    K_sigma.copy_from(plate.stiffness_matrix());
-    K_sigma                                      = 0.;
+    K_sigma.reinit(plate.sparsity_pattern());
     const AffineConstraints<double> &constraints = plate.get_constraints();
     for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())

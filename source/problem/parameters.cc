@@ -401,6 +401,9 @@ namespace fgimpact
     geometry.parse_parameters(prm);
     material.parse_parameters(prm);
     thermal.parse_parameters(prm);
+    // Named constituents: their faces' values in the constant entries.
+    material.use_named_at(thermal.face_temperature(true),
+                          thermal.face_temperature(false));
     strength.parse_parameters(prm);
     finite_element.parse_parameters(prm);
     contact.parse_parameters(prm);

@@ -262,17 +262,7 @@ namespace fgimpact
       total_timer.restart(); // the plate taken over: the driver's set-up
     else
       setup_plate();
-    if (parameters.thermal.active())
-      {
-        thermal = std::make_unique<ThermalStep>(parameters.thermal,
-                                                *plate,
-                                                parameters.linear_solver);
-        thermal->run();
-        thermal->print(pcout);
-        if (parameters.thermal.geometric_stiffness)
-          plate->add_initial_stress_stiffness(thermal->geometric_stiffness());
-        summary_file.set_appendix(thermal->summary());
-      }
+    run_thermal_step();
     switch (parameters.problem_type)
       {
         case ProblemType::impact:
@@ -307,9 +297,7 @@ namespace fgimpact
     total_timer.restart();
     const SymmetricPart part = resolve_symmetry(parameters);
     geometry = std::make_unique<PlateGeometry>(parameters.geometry, part.cut);
-    material =
-      std::make_unique<FunctionallyGradedMaterial>(parameters.material,
-                                                   geometry->thickness());
+    make_material();
     scene = std::make_unique<Scene>(parameters, *material, geometry->share());
     // Refuse a run that cannot fit before the long set-up (the mesh).
     const LocalRefinement refinement =

@@ -100,9 +100,10 @@ namespace fgimpact
     SummaryWriter
     summary() const;
 
-    /// The log's lines.
+    /// The log's lines (with_time: the step's wall time, Output/Print
+    /// timing).
     void
-    print(ConditionalOStream &out) const;
+    print(ConditionalOStream &out, const bool with_time) const;
 
   private:
     /// The thermal displacement: K u = f_th with solver (K or K pinned).

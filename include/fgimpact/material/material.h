@@ -4,8 +4,10 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <fgimpact/material/gradation.h>
+#include <fgimpact/material/temperature_dependence.h>
 
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -84,12 +86,17 @@ namespace fgimpact
       /// conductivities (W/(m K)) of the constituents (Thermal/*: only a
       /// temperature field reads them); the defaults are aluminium and
       /// alumina, the default scene's pair.
-      double            metal_thermal_expansion   = 23e-6;
-      double            ceramic_thermal_expansion = 7.4e-6;
-      double            metal_conductivity        = 204.;
-      double            ceramic_conductivity      = 10.4;
-      PropertyMode      property_mode             = PropertyMode::graded;
-      Gradation         gradation                 = Gradation::power_law;
+      double metal_thermal_expansion   = 23e-6;
+      double ceramic_thermal_expansion = 7.4e-6;
+      double metal_conductivity        = 204.;
+      double ceramic_conductivity      = 10.4;
+      /// Material/Metal material, Ceramic material: a named constituent
+      /// whose properties follow temperature (temperature_dependence.h);
+      /// constant: the entries above.
+      NamedMaterial     metal_material      = NamedMaterial::constant;
+      NamedMaterial     ceramic_material    = NamedMaterial::constant;
+      PropertyMode      property_mode       = PropertyMode::graded;
+      Gradation         gradation           = Gradation::power_law;
       Homogenization    homogenization      = Homogenization::rule_of_mixtures;
       GradedNodalValues graded_nodal_values = GradedNodalValues::sampled;
       /// Gradation = tabulated: the CSV file (after
@@ -111,10 +118,30 @@ namespace fgimpact
       /// The metal and ceramic constituents.
       Constituents
       constituents() const;
+
+      /// Whether a constituent is named (its properties follow T).
+      bool
+      temperature_dependent() const
+      {
+        return metal_material != NamedMaterial::constant ||
+               ceramic_material != NamedMaterial::constant;
+      }
+
+      /// A named constituent's E, nu, rho, alpha and k written into the
+      /// constant entries, the metal's at T_metal (K, the top face), the
+      /// ceramic's at T_ceramic (the bottom face): what reads the
+      /// constituents' constants (the contact modulus, the graded
+      /// strengths) sees the faces' values.
+      void
+      use_named_at(const double T_metal, const double T_ceramic);
     };
 
-    FunctionallyGradedMaterial(const Parameters &parameters,
-                               const double      thickness);
+    /// temperature: T(z) in K at which named constituents are evaluated
+    /// (empty: their values in the constant entries, use_named_at()).
+    FunctionallyGradedMaterial(
+      const Parameters                    &parameters,
+      const double                         thickness,
+      const std::function<double(double)> &temperature = {});
 
     /// E (Pa), nu and rho (kg/m^3) at height z (m), z clipped to [0, h].
     IsotropicProperties
@@ -141,6 +168,21 @@ namespace fgimpact
     /// The thermal conductivity k(z) (W/(m K)), by the same rule.
     double
     conductivity(const double z) const;
+
+    /// alpha and k at height z (m) with the constituents at temperature
+    /// T (K) (source/material/material_temperature.cc).
+    double
+    thermal_expansion(const double z, const double T) const;
+    double
+    conductivity(const double z, const double T) const;
+
+    /// Whether the constituents' properties depend on temperature here
+    /// (named constituents and a temperature field bound).
+    bool
+    follows_temperature() const
+    {
+      return parameters.temperature_dependent() && temperature;
+    }
 
     /// Whether nu is the same at every z: the constitutive law then uses
     /// it exactly (no interpolation, so the default scene's numbers are
@@ -181,9 +223,15 @@ namespace fgimpact
     }
 
   private:
+    /// E, nu, rho of the constituents at T (K): the named ones' laws,
+    /// the constants otherwise.
+    Constituents
+    constituents_at(const double T) const;
+
     const Parameters                    parameters;
     const double                        h;
     const std::unique_ptr<GradationLaw> law;
+    const std::function<double(double)> temperature;
   };
 } // namespace fgimpact
 

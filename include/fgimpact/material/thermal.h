@@ -51,6 +51,22 @@ namespace fgimpact
     void
     parse_parameters(ParameterHandler &prm);
 
+    /// T (K) at the top (metal) and bottom (ceramic) faces: the field's
+    /// boundary values (T_ref without a field).
+    double
+    face_temperature(const bool top) const
+    {
+      switch (field)
+        {
+          case TemperatureField::none:
+            return reference_temperature;
+          case TemperatureField::uniform:
+            return reference_temperature + temperature_change;
+          default:
+            return top ? top_temperature : bottom_temperature;
+        }
+    }
+
     /// Whether a thermal step runs (Temperature field != none).
     bool
     active() const
@@ -92,7 +108,17 @@ namespace fgimpact
     double
     thermal_strain(const double z) const
     {
-      return material.thermal_expansion(z) * change(z);
+      const double T = temperature(z);
+      return material.thermal_expansion(z, T) *
+             (T - parameters.reference_temperature);
+    }
+
+    /// Conduction with a temperature-dependent k: the fixed-point
+    /// iterations it took (1 for a constant k, 0 for the other fields).
+    unsigned int
+    n_iterations() const
+    {
+      return iterations;
     }
 
     const ThermalParameters &
@@ -107,15 +133,33 @@ namespace fgimpact
     double
     resistance(const double z) const;
 
-    /// int_{z0}^{z1} dz'/k by 8-point Gauss-Legendre.
+    /// int_{z0}^{z1} dz'/k by 8-point Gauss-Legendre, k at the last
+    /// iterate's temperature.
     double
     gauss_resistance(const double z0, const double z1) const;
+
+    /// The last iterate's temperature at z: cubic Hermite between the
+    /// nodes, with their exact slopes (error ~ dz^4 T'''').
+    double
+    iterate_temperature(const double z) const;
+
+    /// Conduction: T at the nodes, by fixed-point iterations where k
+    /// depends on T.
+    void
+    solve_conduction();
+
+    /// R at the nodes with k at the last iterate's temperature.
+    void
+    integrate_resistances();
 
     const ThermalParameters           parameters;
     const FunctionallyGradedMaterial &material;
     const double                      h;
-    /// Conduction: the interval ends and R at each of them.
-    std::vector<double> nodes, resistances;
+    /// Conduction: the interval ends, R and the last iterate's T and
+    /// dT/dz at each (the flux is constant: dT/dz = (T_t - T_b) / (R(h)
+    /// k)).
+    std::vector<double> nodes, resistances, node_temperatures, node_slopes;
+    unsigned int        iterations = 0;
   };
 } // namespace fgimpact
 

@@ -18,6 +18,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
@@ -123,6 +124,11 @@ namespace fgimpact
     {
       stiffness.add(1., K_sigma);
     }
+
+    /// The sparsity of K and M (constraints condensed), for another
+    /// matrix assembled on the same couplings under MPI.
+    TrilinosWrappers::SparsityPattern
+    sparsity_pattern() const;
 
     /// Reinit v as a (non-ghosted) vector of locally owned DoFs.
     void
@@ -303,11 +309,18 @@ namespace fgimpact
     void
     add_immovable_edges(AffineConstraints<double> &c) const;
 
-    /// One column's constraint, column = (z, DoF) pairs: the node nearest
-    /// the mid-plane as minus the weighted others.
+    /// One column's constraint, column = (z, DoF) pairs sorted by z: the
+    /// node nearest the mid-plane as minus the weighted others.
     void
-    add_mean_constraint(std::vector<std::pair<double, double>> &column,
-                        AffineConstraints<double>              &c) const;
+    add_mean_constraint(const std::vector<std::pair<double, double>> &column,
+                        AffineConstraints<double>                    &c) const;
+
+    /// In-plane edges = immovable: the columns of the simply supported
+    /// sides' normal-component DoFs that the supports and hanging nodes of
+    /// c leave free, gathered from their owners; their DoFs join
+    /// locally_relevant.  Collective.
+    void
+    collect_edge_columns(const AffineConstraints<double> &c);
     void
     assemble();
     /// B-bar: the pointwise dilatation of cell_K replaced by the cell's
@@ -334,6 +347,8 @@ namespace fgimpact
     TrilinosWrappers::SparseMatrix          stiffness, mass;
     TrilinosWrappers::MPI::Vector           cut_coupling;
     LocalRefinement                         refinement;
+    /// collect_edge_columns(): (z, DoF) per node, each column sorted by z.
+    std::vector<std::vector<std::pair<double, double>>> edge_columns;
     /// mean_divergence() of every locally owned cell, by active index.
     std::vector<double> mean_divergences;
 

@@ -7,6 +7,7 @@
 
 #include <fgimpact/analysis/impact_driver.h>
 #include <fgimpact/material/material.h>
+#include <fgimpact/material/thermal.h>
 #include <fgimpact/output/results.h>
 #include <fgimpact/plate/geometry.h>
 #include <fgimpact/plate/plate_model.h>
@@ -91,6 +92,16 @@ namespace fgimpact
     ~Simulator();
 
   private:
+    /// The plate's material; named constituents bound to T(z)
+    /// (source/study/simulator_thermal.cc).
+    void
+    make_material();
+
+    /// Thermal/Temperature field: the thermal step, its log lines and
+    /// summary keys, and with Geometric stiffness its K_sigma into K.
+    void
+    run_thermal_step();
+
     /// Graded elements with sampled nodal values: a log warning if they
     /// misread the profile by more than 25 % in an element layer (a
     /// boundary layer, n -> 0+), naming the entries that fix it.
@@ -105,6 +116,10 @@ namespace fgimpact
 
     std::unique_ptr<PlateGeometry>              geometry;
     std::unique_ptr<FunctionallyGradedMaterial> material;
+    /// Named constituents: the material before it is bound to T(z), and
+    /// T(z).
+    std::unique_ptr<FunctionallyGradedMaterial> unbound_material;
+    std::unique_ptr<TemperatureProfile>         temperature_profile;
     std::unique_ptr<Scene>                      scene;
     std::unique_ptr<PlateModel>                 plate;
     std::unique_ptr<ThermalStep>                thermal;
