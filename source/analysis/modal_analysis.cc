@@ -157,19 +157,31 @@ namespace fgimpact
                 std::vector<TrilinosWrappers::MPI::Vector> &X,
                 std::vector<TrilinosWrappers::MPI::Vector> &Y)
     {
-      X.resize(p);
-      Y.resize(p);
-      for (unsigned int j = 0; j < p; ++j)
-        {
-          plate.initialize_vector(X[j]);
-          plate.initialize_vector(Y[j]);
-          for (const auto i : X[j].locally_owned_elements())
-            X[j](i) = std::sin(0.37 + 1.7 * j + 12.9898 * i * (j + 1));
-          X[j].compress(VectorOperation::insert);
-          X[j].scale(mask);
-        }
+      subspace_start_block(plate, p, X, Y);
+      for (auto &x : X)
+        x.scale(mask);
     }
   } // namespace
+
+
+
+  void
+  subspace_start_block(const PlateModel                           &plate,
+                       const unsigned int                          p,
+                       std::vector<TrilinosWrappers::MPI::Vector> &X,
+                       std::vector<TrilinosWrappers::MPI::Vector> &Y)
+  {
+    X.resize(p);
+    Y.resize(p);
+    for (unsigned int j = 0; j < p; ++j)
+      {
+        plate.initialize_vector(X[j]);
+        plate.initialize_vector(Y[j]);
+        for (const auto i : X[j].locally_owned_elements())
+          X[j](i) = std::sin(0.37 + 1.7 * j + 12.9898 * i * (j + 1));
+        X[j].compress(VectorOperation::insert);
+      }
+  }
 
 
 

@@ -1,5 +1,6 @@
 #include <deal.II/lac/lapack_full_matrix.h>
 
+#include <fgimpact/analysis/modal_analysis.h>
 #include <fgimpact/analysis/thermal_buckling.h>
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/stop_signals.h>
@@ -31,6 +32,11 @@ namespace fgimpact
           for (unsigned int i = 0; i <= j; ++i)
             Kr(i, j) = Kr(j, i) = Y[i] * tmp;
         }
+      // A vector the pre-stress does not reach (G X = 0 there) is zero:
+      // a unit diagonal keeps the projected K definite (its mu is 0).
+      for (unsigned int j = 0; j < p; ++j)
+        if (Kr(j, j) == 0.)
+          Kr(j, j) = 1.;
       std::vector<Vector<double>> q(p, Vector<double>(p));
       Gr.compute_generalized_eigenvalues_symmetric(Kr, q);
       std::vector<double> mu(p);
@@ -59,20 +65,18 @@ namespace fgimpact
     TrilinosWrappers::SparseMatrix G;
     G.copy_from(K_sigma);
     G *= -1.;
-    const unsigned int                         p = 8;
-    std::vector<TrilinosWrappers::MPI::Vector> X(p), Y(p);
-    TrilinosWrappers::MPI::Vector              tmp;
-    plate.initialize_vector(tmp);
-    for (unsigned int j = 0; j < p; ++j)
-      {
-        plate.initialize_vector(X[j]);
-        plate.initialize_vector(Y[j]);
-        for (const auto i : X[j].locally_owned_elements())
-          X[j](i) = std::sin(0.37 + 1.7 * j + 12.9898 * i * (j + 1));
-        X[j].compress(VectorOperation::insert);
-      }
     BucklingResult result;
-    double         mu_old = 0.;
+    if (G.linfty_norm() == 0.) // no pre-stress (a free plate, Delta T = 0)
+      {
+        result.factor = std::numeric_limits<double>::infinity();
+        return result;
+      }
+    const unsigned int                         p = 8;
+    std::vector<TrilinosWrappers::MPI::Vector> X, Y;
+    subspace_start_block(plate, p, X, Y);
+    TrilinosWrappers::MPI::Vector tmp;
+    plate.initialize_vector(tmp);
+    double mu_old = 0.;
     for (result.iterations = 1; result.iterations <= 300; ++result.iterations)
       {
         throw_if_stop_signal(plate.get_mpi_communicator(),

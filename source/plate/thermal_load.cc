@@ -11,21 +11,42 @@
 
 namespace fgimpact
 {
+  namespace
+  {
+    /// The quadrature, FEValues and graded properties of the thermal
+    /// step's cell integrals (those of the stiffness: QGauss(p + 1)).
+    struct CellValues
+    {
+      explicit CellValues(const PlateModel &plate)
+        : quadrature(plate.get_fe().degree + 1)
+        , fe_values(plate.get_mapping(),
+                    plate.get_fe(),
+                    quadrature,
+                    update_gradients | update_quadrature_points |
+                      update_JxW_values)
+        , properties(plate.get_fe().base_element(0),
+                     quadrature.get_points(),
+                     plate.get_material())
+      {}
+
+      const QGauss<3>      quadrature;
+      FEValues<3>          fe_values;
+      PropertyInterpolator properties;
+    };
+  } // namespace
+
+
+
   void
   assemble_thermal_load(const PlateModel              &plate,
                         const TemperatureProfile      &temperature,
                         TrilinosWrappers::MPI::Vector &rhs)
   {
     const FESystem<3>                   &fe = plate.get_fe();
-    const QGauss<3>                      quadrature(fe.degree + 1);
-    FEValues<3>                          fe_values(plate.get_mapping(),
-                          fe,
-                          quadrature,
-                          update_gradients | update_quadrature_points |
-                            update_JxW_values);
-    PropertyInterpolator                 properties(fe.base_element(0),
-                                    quadrature.get_points(),
-                                    plate.get_material());
+    CellValues                           values(plate);
+    const QGauss<3>                     &quadrature    = values.quadrature;
+    FEValues<3>                         &fe_values     = values.fe_values;
+    PropertyInterpolator                &properties    = values.properties;
     const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
     Vector<double>                       cell_f(dofs_per_cell);
     std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
@@ -159,16 +180,10 @@ namespace fgimpact
                                TrilinosWrappers::SparseMatrix      &K_sigma)
   {
     const FESystem<3>                   &fe = plate.get_fe();
-    const QGauss<3>                      quadrature(fe.degree + 1);
-    FEValues<3>                          fe_values(plate.get_mapping(),
-                          fe,
-                          quadrature,
-                          update_gradients | update_quadrature_points |
-                            update_JxW_values);
-    PropertyInterpolator                 properties(fe.base_element(0),
-                                    quadrature.get_points(),
-                                    plate.get_material());
-    const unsigned int                   n = fe.n_dofs_per_cell();
+    CellValues                           values(plate);
+    FEValues<3>                         &fe_values  = values.fe_values;
+    PropertyInterpolator                &properties = values.properties;
+    const unsigned int                   n          = fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_K(n, n);
     std::vector<types::global_dof_index> dofs(n);
     std::vector<SymmetricTensor<2, 3>>   sigma0;

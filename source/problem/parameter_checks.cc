@@ -90,4 +90,41 @@ namespace fgimpact
   }
 
 
+
+  void
+  check_named_materials(const Parameters &p)
+  {
+    // Touloukian's laws are cubic fits: SUS304's E turns negative near
+    // 1490 K. Every temperature of the field lies between the faces' (the
+    // conduction profile is monotone), sampled every kelvin.
+    const double T0 = std::min(p.thermal.face_temperature(true),
+                               p.thermal.face_temperature(false)),
+                 T1 = std::max(p.thermal.face_temperature(true),
+                               p.thermal.face_temperature(false));
+    const std::pair<const char *, NamedMaterial> phases[] = {
+      {"Metal material", p.material.metal_material},
+      {"Ceramic material", p.material.ceramic_material}};
+    for (const auto &[entry, named] : phases)
+      if (named != NamedMaterial::constant)
+        for (double T = T0; T <= T1 + 0.5; T += 1.)
+          {
+            const ConstituentState s =
+              constituent_state(named, std::min(T, T1));
+            const bool ok = s.E > 0. && s.nu > -1. && s.nu < 0.5 && s.k > 0.;
+            AssertThrow(ok,
+                        ExcMessage(
+                          std::string("Material/") + entry + " = " +
+                          (entry[0] == 'M' ? metal_material_names() :
+                                             ceramic_material_names())
+                            .name(named) +
+                          ": its temperature law gives " +
+                          (s.E <= 0. ? "a Young's modulus <= 0" :
+                           s.k <= 0. ? "a conductivity <= 0" :
+                                       "a Poisson's ratio outside (-1, 0.5)") +
+                          " at " +
+                          std::to_string(static_cast<int>(std::min(T, T1))) +
+                          " K, outside its fit; lower the Thermal "
+                          "temperatures."));
+          }
+  }
 } // namespace fgimpact

@@ -364,6 +364,18 @@ namespace fgimpact_unit_tests::bad_input
          "subsection Contact\n set Model = resolved sphere\nend\n",
          1,
          "Finite element/Degree"},
+        // Issue 42: SUS304's cubic law for E turns negative near 1490 K.
+        {"a named constituent beyond its temperature law",
+         "subsection Material\n set Metal material = SUS304\nend\n"
+         "subsection Thermal\n set Temperature field = uniform\n"
+         " set Temperature change = 1200\nend\n",
+         1,
+         "Material/Metal material"},
+        {"a named constituent with an exponential gradation",
+         "subsection Material\n set Ceramic material = Si3N4\n"
+         " set Gradation = exponential\nend\n",
+         1,
+         "Material/Metal material or Ceramic material"},
         {"negative log interval",
          "subsection Output\n set Log interval = -1\nend\n",
          1,

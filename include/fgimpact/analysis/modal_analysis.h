@@ -20,6 +20,15 @@ namespace fgimpact
 {
   using namespace dealii;
 
+  /// A subspace iteration's start block: p deterministic vectors with all
+  /// length scales present (X) and p of the same layout (Y), on the
+  /// plate's owned DoFs (modal and thermal buckling solves).
+  void
+  subspace_start_block(const PlateModel                           &plate,
+                       const unsigned int                          p,
+                       std::vector<TrilinosWrappers::MPI::Vector> &X,
+                       std::vector<TrilinosWrappers::MPI::Vector> &Y);
+
   /**
    * The lowest natural frequencies and mode shapes of K phi = omega^2 M phi
    * by subspace iteration with shift-invert: each iteration applies

@@ -21,6 +21,11 @@ namespace fgimpact
   /// converge under contact refinement.
   void
   check_resolved_contact_degree(const Parameters &p);
+
+  /// Named constituents: their temperature laws physical (E > 0, k > 0,
+  /// -1 < nu < 1/2) over the field's temperatures.
+  void
+  check_named_materials(const Parameters &p);
 } // namespace fgimpact
 
 #endif
