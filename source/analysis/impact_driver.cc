@@ -231,12 +231,17 @@ namespace fgimpact
                                            impactor.initial_velocity(),
                                            scene.impact_point(),
                                            impactor.radius()));
-    monitor->add(std::make_unique<ValidityMonitor>(
+    auto validity = std::make_unique<ValidityMonitor>(
       plate,
       validity_setup(parameters, scene, *contact, results),
       results,
       pcout,
-      plasticity.get()));
+      plasticity.get());
+    // A thermal pre-stress: the indices of the total stress.
+    if (thermal_state)
+      validity->set_prestress(thermal_state->displacement(),
+                              thermal_state->temperature());
+    monitor->add(std::move(validity));
     monitor->start(resume);
     if (resume)
       accept_resume();

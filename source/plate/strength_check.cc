@@ -184,15 +184,7 @@ namespace fgimpact
   StrengthCheck::evaluate(const TrilinosWrappers::MPI::Vector &u,
                           const double                         t)
   {
-    if (!importer)
-      importer =
-        std::make_unique<Epetra_Import>(u_ghosted.trilinos_vector().Map(),
-                                        u.trilinos_vector().Map());
-    const int error = u_ghosted.trilinos_vector().Import(u.trilinos_vector(),
-                                                         *importer,
-                                                         Insert);
-    AssertThrow(error == 0, ExcTrilinosError(error));
-    const double *const values = u_ghosted.trilinos_vector()[0];
+    const double *const values = gather(u);
     const unsigned int  n_dofs = 3 * n_scalar;
     std::vector<double> cell_u(n_dofs);
     for (unsigned int c = 0; c < table.size(); ++c)
@@ -232,6 +224,8 @@ namespace fgimpact
                     plasticity->yield_stress(points[k][2],
                                              state.equivalent_plastic_strain);
               }
+            if (!prestrain.empty())
+              add_prestrain(k, G);
             check_point(k, G, t, yield_stress);
           }
       }
@@ -340,7 +334,8 @@ namespace fgimpact
     if (n_scalar != 8)
       {
         const double bound =
-          displacement_spread(cell_u, n_scalar) * gradient_bound[table[c]];
+          displacement_spread(cell_u, n_scalar) * gradient_bound[table[c]] +
+          (prestrain.empty() ? 0. : prestrain_norm[c]);
         return bound * f.metal <= metal_local.ratio &&
                bound * f.ceramic_norm <= ceramic_local.ratio;
       }
@@ -354,10 +349,13 @@ namespace fgimpact
           std::pow(0.5 * (G[a][b] + G[b][a]) - (a == b ? tr / 3. : 0.), 2);
     // |eps(x) - eps_c| <= |grad u(x) - grad u_c| <= sqrt(variation2), and
     // |tr| changes by at most sqrt(3) times that.
-    const double V   = std::sqrt(variation2);
-    const double dev = std::sqrt(dev2) + V;
+    const double V = std::sqrt(variation2);
+    // A pre-stress: its strain's largest deviator and trace in the cell.
+    const double dev0 = prestrain.empty() ? 0. : prestrain_dev[c],
+                 tr0  = prestrain.empty() ? 0. : prestrain_trace[c];
+    const double dev  = std::sqrt(dev2) + V + dev0;
     return f.metal * dev <= metal_local.ratio &&
-           f.ceramic_trace * (std::abs(tr) + std::sqrt(3.) * V) +
+           f.ceramic_trace * (std::abs(tr) + std::sqrt(3.) * V + tr0) +
                f.ceramic_deviator * dev <=
              ceramic_local.ratio;
   }

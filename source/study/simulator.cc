@@ -272,6 +272,8 @@ namespace fgimpact
             for (const auto &observer : observers)
               impact->add_row_observer(observer);
             impact->set_checkpointing(checkpoint_settings);
+            if (thermal)
+              impact->set_thermal_state(*thermal);
             driver = std::move(impact);
             break;
           }

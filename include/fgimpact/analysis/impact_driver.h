@@ -4,6 +4,7 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 
+#include <fgimpact/analysis/thermal_step.h>
 #include <fgimpact/base/checkpoint.h>
 #include <fgimpact/contact/contact_law.h>
 #include <fgimpact/contact/contact_model.h>
@@ -82,6 +83,15 @@ namespace fgimpact
     void
     add_row_observer(const ImpactMonitor::RowObserver &observer);
 
+    /// The thermal step before this impact (Thermal/Temperature field):
+    /// the validity indices take its stress into the total. Before
+    /// setup(); it must outlive the driver.
+    void
+    set_thermal_state(const ThermalStep &thermal)
+    {
+      thermal_state = &thermal;
+    }
+
     /// Checkpoints: the parameters' text to store, and whether to resume
     /// (before run()).
     void
@@ -94,6 +104,8 @@ namespace fgimpact
     }
 
   private:
+    /// set_thermal_state(); null without a temperature field.
+    const ThermalStep *thermal_state = nullptr;
     /// One step, recorded; true if End time = auto and the ball has left
     /// for good (the run stops after it).
     bool

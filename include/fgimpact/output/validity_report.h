@@ -116,6 +116,15 @@ namespace fgimpact
                     const ConditionalOStream &pcout,
                     const PlasticPlate       *plasticity = nullptr);
 
+    /// A thermal pre-stress: the stress scanned is the total
+    /// (StrengthCheck::set_prestress()).
+    void
+    set_prestress(const TrilinosWrappers::MPI::Vector &u_th,
+                  const TemperatureProfile            &temperature)
+    {
+      check->set_prestress(u_th, temperature);
+    }
+
     std::string
     name() const override
     {

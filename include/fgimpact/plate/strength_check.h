@@ -11,6 +11,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <fgimpact/material/strength.h>
+#include <fgimpact/material/thermal.h>
 #include <fgimpact/plate/plastic_plate.h>
 #include <fgimpact/plate/plate_model.h>
 
@@ -75,7 +76,27 @@ namespace fgimpact
     void
     set_plasticity(const PlasticPlate &plasticity);
 
+    /**
+     * A thermal pre-stress (Thermal/Temperature field): every stress
+     * checked is the total, C (eps(u) + eps0), with the thermal step's
+     * mechanical strain eps0 = eps(u_th) - alpha (T - T_ref) I at each
+     * point, so that the indices are those of the stress the material
+     * carries (source/plate/strength_check_prestress.cc).  u_th ghosted,
+     * constraints distributed.  Not with plasticity.
+     */
+    void
+    set_prestress(const TrilinosWrappers::MPI::Vector &u_th,
+                  const TemperatureProfile            &temperature);
+
   private:
+    /// u into u_ghosted (the layout of local_index); its values.
+    const double *
+    gather(const TrilinosWrappers::MPI::Vector &u);
+
+    /// G += eps0 at checked point k (set_prestress()).
+    void
+    add_prestrain(const unsigned int k, double G[3][3]) const;
+
     /// The cell data for the cells that are checked.
     void
     setup(const Point<3> &excluded_centre, const double excluded_radius);
@@ -157,6 +178,11 @@ namespace fgimpact
              ceramic_norm = 0;
     };
     std::vector<CellFactors> factors;
+    /// set_prestress(): eps0 per checked point (xx, yy, zz, xy, xz, yz);
+    /// per checked cell the largest |dev eps0|, |tr eps0| and |eps0| of
+    /// its points, which can_skip() adds to its bounds.  Empty without.
+    std::vector<std::array<double, 6>> prestrain;
+    std::vector<double> prestrain_dev, prestrain_trace, prestrain_norm;
     /// Per checked cell: its table, and the local indices in u_ghosted of
     /// its DoFs in the order [s * 3 + component].
     std::vector<unsigned int> table;
