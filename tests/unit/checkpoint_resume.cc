@@ -6,7 +6,8 @@
 // the PVD files identical.  Cases: Hertz node (implicit and explicit), a
 // resolved sphere whose candidate set grows during the run, and SIGTERM
 // (a checkpoint at the stop only), and a plastic plate (Material/
-// Plasticity = J2) with the resolved sphere.  Also: resume with a changed
+// Plasticity = J2) with the resolved sphere, and a thermal environment.
+// Also: resume with a changed
 // parameter, on a different number of MPI ranks, or without a checkpoint is
 // refused with one line naming the cause, exit code 1, nothing changed;
 // so is a resume with End time before the checkpoint, or whose probes.csv
@@ -325,6 +326,24 @@ namespace fgimpact_unit_tests::checkpoint_resume
                            "peak\nend\n",
                          1,
                          random.kill_point(60)) &&
+         ok;
+
+    // A thermal environment (issue 42): the resumed run repeats the
+    // thermal step (temperature-dependent constituents, immovable sides,
+    // the geometric stiffness in K, the total stress in the validity
+    // scan), which must give the same state.
+    ok = kill_and_resume(
+           "thermal",
+           hertz +
+             "subsection Material\n set Metal material = SUS304\n set "
+             "Ceramic material = Si3N4\nend\n"
+             "subsection Boundary conditions\n set In-plane edges = "
+             "immovable\nend\n"
+             "subsection Thermal\n set Temperature field = conduction\n "
+             "set Bottom temperature = 600\n set Geometric stiffness = "
+             "true\nend\n",
+           1,
+           random.kill_point(100)) &&
          ok;
 
     // Refusals, on the killed Hertz node run's directory.
