@@ -134,7 +134,8 @@ namespace fgimpact_tests
             });
         simulator.run();
         std::cout.rdbuf(old);
-        output.results = simulator.get_results();
+        if (p.problem_type == fgimpact::ProblemType::impact)
+          output.results = simulator.get_results();
         return output;
       }
     catch (...)

@@ -206,6 +206,9 @@ namespace fgimpact
                                               plasticity != nullptr);
     if (plasticity)
       monitor->set_plasticity(*plasticity);
+    // A thermal pre-stress: every stress written is the total.
+    if (thermal_state)
+      monitor->set_prestress(thermal_state->initial_stress());
     monitor->set_blow_up_advice(blow_up_advice());
     // End time = auto: the plate's compliance makes the contact longer
     // than Hertz's on a rigid base (the default scene: contact 126 us against
@@ -239,8 +242,7 @@ namespace fgimpact
       plasticity.get());
     // A thermal pre-stress: the indices of the total stress.
     if (thermal_state)
-      validity->set_prestress(thermal_state->displacement(),
-                              thermal_state->temperature());
+      validity->set_prestress(thermal_state->initial_stress());
     monitor->add(std::move(validity));
     monitor->start(resume);
     if (resume)

@@ -223,7 +223,9 @@ namespace fgimpact
     const double h = plate.get_geometry().thickness();
     for (unsigned int k = 0; k < 3; ++k)
       {
-        const PointProbe probe(plate, plate.get_geometry().centre(0.5 * k * h));
+        PointProbe probe(plate, plate.get_geometry().centre(0.5 * k * h));
+        if (initial)
+          probe.set_prestress(*initial);
         const SymmetricTensor<2, 3> sigma = probe.stress(u);
         results.deflection[k]             = -probe.displacement(u)[2];
         results.sigma_xx[k]               = sigma[0][0];
@@ -328,6 +330,8 @@ namespace fgimpact
     VtuWriter vtu(plate, directory, vtu_compression, fields);
     if (plastic)
       vtu.set_plasticity(*plastic);
+    if (initial)
+      vtu.set_prestress(*initial);
     vtu.write(0, 0., u, zero);
     vtu.finish();
   }

@@ -62,7 +62,8 @@ namespace fgimpact
     u.reinit(plate.locally_owned_dofs(),
              plate.locally_relevant_dofs(),
              plate.get_mpi_communicator());
-    u                                  = x;
+    u       = x;
+    initial = std::make_unique<InitialStress>(plate, profile, u);
     const PlateGeometry::Parameters &g = plate.get_geometry().get_parameters();
     top    = stress_at(Point<3>(g.length / 2, g.width / 2, g.thickness));
     bottom = stress_at(Point<3>(g.length / 2, g.width / 2, 0.));
@@ -74,7 +75,7 @@ namespace fgimpact
   ThermalStep::solve_buckling(const TrilinosWrappers::SparseMatrix &K,
                               EffectiveMatrixSolver                &solver)
   {
-    assemble_geometric_stiffness(plate, profile, u, K_sigma);
+    assemble_geometric_stiffness(plate, *initial, K_sigma);
     buckling = thermal_buckling_factor(K, K_sigma, solver, plate);
     const ThermalParameters &p = profile.get_parameters();
     const std::string        entry =
@@ -113,7 +114,7 @@ namespace fgimpact
   SymmetricTensor<2, 3>
   ThermalStep::stress_at(const Point<3> &p) const
   {
-    return thermal_stress_at(plate, profile, u, p);
+    return initial->stress_at(p);
   }
 
 

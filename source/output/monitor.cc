@@ -84,6 +84,18 @@ namespace fgimpact
 
 
   void
+  ImpactMonitor::set_prestress(const InitialStress &initial)
+  {
+    initial_stress = &initial;
+    mid_probe.set_prestress(initial);
+    top_probe.set_prestress(initial);
+    if (probe_set)
+      probe_set->set_prestress(plate, initial);
+  }
+
+
+
+  void
   ImpactMonitor::add_row_observer(const RowObserver &observer)
   {
     history->add_observer(observer);
@@ -114,6 +126,8 @@ namespace fgimpact
                                                 results_accumulator);
     if (plasticity)
       writer->set_plasticity(*plasticity);
+    if (initial_stress)
+      writer->set_prestress(*initial_stress);
     add(std::move(writer));
   }
 

@@ -187,6 +187,7 @@ namespace fgimpact
     if (fields.cell_stress || fields.material)
       data_out.add_data_vector(u_ghosted, postprocessor);
     add_recovered_fields(data_out);
+    add_thermal_fields(data_out);
     if (plastic)
       {
         data_out.add_data_vector(plastic_strain,

@@ -7,6 +7,8 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <deal.II/fe/fe_values.h>
+
 #include <deal.II/numerics/data_out.h>
 
 #include <fgimpact/base/checkpoint.h>
@@ -91,6 +93,9 @@ namespace fgimpact
     // B-bar: the cell's mean dilatation replaces the pointwise one.
     const bool   bbar  = with_stress && plate.uses_mean_dilatation();
     const double theta = bbar ? plate.mean_dilatation(cell, *displacement) : 0.;
+    const std::vector<SymmetricTensor<2, 3>> eps0 =
+      with_stress && initial ? initial_strain(cell, inputs.evaluation_points) :
+                               std::vector<SymmetricTensor<2, 3>>();
     for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
       {
         const auto [E, nu, rho] =
@@ -105,6 +110,8 @@ namespace fgimpact
                                    inputs.solution_gradients[p][b][a]);
             if (bbar)
               eps = PlateModel::with_dilatation(eps, theta);
+            if (initial)
+              eps += eps0[p]; // the total stress
             SymmetricTensor<2, 3> sigma = hooke.stress(E, nu, eps);
             if (plastic)
               {
@@ -136,10 +143,30 @@ namespace fgimpact
 
 
 
+  std::vector<SymmetricTensor<2, 3>>
+  StressPostprocessor::initial_strain(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const std::vector<Point<3>>               &points) const
+  {
+    std::vector<Point<3>> unit_points;
+    for (const auto &x : points)
+      unit_points.push_back(mapping.transform_real_to_unit_cell(cell, x));
+    FEValues<3> fe_values(mapping,
+                          plate.get_fe(),
+                          Quadrature<3>(unit_points),
+                          update_gradients | update_quadrature_points);
+    fe_values.reinit(cell);
+    std::vector<SymmetricTensor<2, 3>> eps0;
+    initial->strain(fe_values, cell, eps0);
+    return eps0;
+  }
+
+
+
   namespace
   {
     /// Output/Fields: each name and its flag, in the pattern's order.
-    const std::array<std::pair<std::string, bool VtuFields::*>, 10>
+    const std::array<std::pair<std::string, bool VtuFields::*>, 11>
       field_flags = {{{"displacement", &VtuFields::displacement},
                       {"velocity", &VtuFields::velocity},
                       {"acceleration", &VtuFields::acceleration},
@@ -149,7 +176,8 @@ namespace fgimpact
                       {"strain", &VtuFields::strain},
                       {"cell_stress", &VtuFields::cell_stress},
                       {"material", &VtuFields::material},
-                      {"peak", &VtuFields::peak}}};
+                      {"peak", &VtuFields::peak},
+                      {"thermal", &VtuFields::thermal}}};
 
     /// "a|b|..." (all = false: the pattern) or "a, b, ..." of the flags
     /// set in `fields` (the default).
@@ -209,7 +237,15 @@ namespace fgimpact
       "material (youngs_modulus_GPa in GPa, density_kg_m3 in kg/m^3), peak "
       "(impact runs: peak_fields.vtu at the end, the nodal maxima over the "
       "VTU snapshots of the recovered von Mises stress and |sigma_zz|, "
-      "MPa).");
+      "MPa), thermal (with a Thermal/Temperature field: the thermal step's "
+      "displacement thermal_displacement_m in m, the temperature "
+      "temperature_K in K, the expansion coefficient thermal_expansion_per_K "
+      "in 1/K and the thermal state's per-cell stress tensor "
+      "thermal_stress_MPa in MPa; no effect without a field). With a "
+      "temperature field every stress field is the total stress, the "
+      "thermal state's plus the analysis's, while displacement, velocity, "
+      "acceleration and strain are the analysis's, measured from the "
+      "thermal state.");
     vtu_fields_table().declare(prm);
   }
 

@@ -198,7 +198,8 @@ namespace fgimpact
 
 
   void
-  ProbeSet::setup_stress_weights(const PlateModel &plate)
+  ProbeSet::visit_read_nodes(const PlateModel  &plate,
+                             const NodeVisitor &visit) const
   {
     DoFHandler<3> scalar_dofs(plate.get_dof_handler().get_triangulation());
     scalar_dofs.distribute_dofs(plate.get_fe().base_element(0));
@@ -210,52 +211,103 @@ namespace fgimpact
 
     // Each cell's stress at its scalar support points, as in
     // StressRecovery::recover().
-    const auto         &fe = plate.get_fe();
-    const Quadrature<3> support(scalar_fe.get_unit_support_points());
-    FEValues<3> fe_values(plate.get_mapping(), fe, support, update_gradients);
-    PropertyInterpolator                 properties(scalar_fe,
+    const Quadrature<3>  support(scalar_fe.get_unit_support_points());
+    FEValues<3>          fe_values(plate.get_mapping(),
+                          plate.get_fe(),
+                          support,
+                          update_gradients | update_quadrature_points);
+    PropertyInterpolator properties(scalar_fe,
                                     support.get_points(),
                                     plate.get_material());
-    const HookeLaw                       hooke(plate.get_material());
-    std::vector<double>                  E, nu, rho;
-    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>> w(points.size());
-    for (auto &vectors : w)
-      vectors = weight_vectors<6>(plate);
-
+    NodeValues           node;
     for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           scalar_cell(scalar_dofs, cell)->get_dof_indices(sdofs);
-          const auto factors = cell_probe_factors(ghosted, sdofs);
-          if (factors.empty())
+          node.factors = cell_probe_factors(ghosted, sdofs);
+          if (node.factors.empty())
             continue;
           fe_values.reinit(cell);
-          properties.values(cell, E, nu, rho);
-          cell->get_dof_indices(dofs);
-          const auto mean_div = plate.mean_divergence(cell);
+          properties.values(cell, node.E, node.nu, node.rho);
+          node.planes.resize(sdofs.size());
           for (unsigned int q = 0; q < sdofs.size(); ++q)
-            if (!factors[q].empty())
-              {
-                const unsigned int planes = planes_of(cut_planes, sdofs[q]);
-                // The same points for a plastic run's correction.
-                plastic_correction.add_point(cell,
-                                             support.point(q),
-                                             factors[q],
-                                             planes);
-                for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                  add_stress_weights(hooke.stress(E[q],
-                                                  nu[q],
-                                                  PlateModel::shape_strain(
-                                                    fe_values, i, q, mean_div)),
-                                     factors[q],
-                                     planes,
-                                     dofs[i],
-                                     w);
-              }
+            node.planes[q] = planes_of(cut_planes, sdofs[q]);
+          visit(cell, fe_values, node);
         }
+  }
+
+
+
+  void
+  ProbeSet::setup_stress_weights(const PlateModel &plate)
+  {
+    const auto                          &fe = plate.get_fe();
+    const HookeLaw                       hooke(plate.get_material());
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<std::array<TrilinosWrappers::MPI::Vector, 6>> w(points.size());
+    for (auto &vectors : w)
+      vectors = weight_vectors<6>(plate);
+    visit_read_nodes(
+      plate,
+      [&](const auto        &cell,
+          const FEValues<3> &fe_values,
+          const NodeValues  &node) {
+        cell->get_dof_indices(dofs);
+        const auto mean_div = plate.mean_divergence(cell);
+        for (unsigned int q = 0; q < node.factors.size(); ++q)
+          if (!node.factors[q].empty())
+            {
+              // The same points for a plastic run's correction.
+              plastic_correction.add_point(cell,
+                                           fe_values.get_quadrature().point(q),
+                                           node.factors[q],
+                                           node.planes[q]);
+              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                add_stress_weights(hooke.stress(node.E[q],
+                                                node.nu[q],
+                                                PlateModel::shape_strain(
+                                                  fe_values, i, q, mean_div)),
+                                   node.factors[q],
+                                   node.planes[q],
+                                   dofs[i],
+                                   w);
+            }
+      });
     for (unsigned int p = 0; p < points.size(); ++p) // weights 3-8
       std::copy_n(owned_weights(plate, w[p]).begin(), 6, &weights[p][3]);
+  }
+
+
+
+  void
+  ProbeSet::set_prestress(const PlateModel &plate, const InitialStress &initial)
+  {
+    // The recovered stress of the initial state at each probe: the same
+    // nodal averages of the cells' C eps0 at their support points.
+    std::vector<double>                local(6 * points.size(), 0.);
+    std::vector<SymmetricTensor<2, 3>> eps0;
+    visit_read_nodes(
+      plate,
+      [&](const auto        &cell,
+          const FEValues<3> &fe_values,
+          const NodeValues  &node) {
+        initial.strain(fe_values, cell, eps0);
+        for (unsigned int q = 0; q < node.factors.size(); ++q)
+          for (const auto &[p, factor] : node.factors[q])
+            {
+              const SymmetricTensor<2, 3> sigma0 =
+                HookeLaw::stress(node.E[q], node.nu[q], eps0[q]);
+              for (unsigned int s = 0; s < 6; ++s)
+                if (!odd_under_reflection(s, node.planes[q]))
+                  local[6 * p + s] +=
+                    factor *
+                    sigma0[stress_component[s][0]][stress_component[s][1]];
+            }
+      });
+    prestress.resize(local.size());
+    Utilities::MPI::sum(ArrayView<const double>(local),
+                        mpi_communicator,
+                        ArrayView<double>(prestress));
   }
 
 
@@ -303,7 +355,8 @@ namespace fgimpact
           }
         for (unsigned int s = 0; s < 6; ++s)
           sigma[stress_component[s][0]][stress_component[s][1]] =
-            global[15 * p + 9 + s];
+            prestress.empty() ? global[15 * p + 9 + s] :
+                                global[15 * p + 9 + s] + prestress[6 * p + s];
         values.displacement.push_back(d);
         values.velocity.push_back(vel);
         values.acceleration.push_back(acc);

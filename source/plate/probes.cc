@@ -195,6 +195,7 @@ namespace fgimpact
     SymmetricTensor<2, 3> sigma;
     for (unsigned int s = 0; s < 6; ++s)
       sigma[voigt[s][0]][voigt[s][1]] = values[s];
-    return sigma;
+    // (Not + 0 without one: a -0 stays -0 in the printed columns.)
+    return has_prestress ? sigma + prestress : sigma;
   }
 } // namespace fgimpact

@@ -220,9 +220,9 @@ namespace fgimpact
     PropertyInterpolator properties(scalar_fe,
                                     points.get_points(),
                                     plate.get_material());
-    const FEValuesExtractors::Vector     displacement(0);
-    std::vector<SymmetricTensor<2, 3>>   eps(points.size());
-    std::vector<double>                  E, nu, rho;
+    const FEValuesExtractors::Vector   displacement(0);
+    std::vector<SymmetricTensor<2, 3>> eps(points.size()), eps0(points.size());
+    std::vector<double>                E, nu, rho;
     std::vector<types::global_dof_index> dofs(scalar_fe.n_dofs_per_cell());
 
     for (auto &v : sums)
@@ -236,6 +236,8 @@ namespace fgimpact
           fe_values[displacement].get_function_symmetric_gradients(u_ghosted,
                                                                    eps);
           plate.apply_mean_dilatation(cell, u_ghosted, eps); // B-bar
+          if (initial) // the total stress; the strain stays the analysis's
+            initial->strain(fe_values, cell, eps0);
           properties.values(cell, E, nu, rho);
           const DoFHandler<3>::active_cell_iterator scalar_cell(
             &dof_handler.get_triangulation(),
@@ -252,9 +254,9 @@ namespace fgimpact
                                             fe_values.quadrature_point(q)[2],
                                             E[q],
                                             nu[q],
-                                            eps[q],
+                                            eps[q] + eps0[q],
                                             eps_bar) :
-                             HookeLaw::stress(E[q], nu[q], eps[q]);
+                             HookeLaw::stress(E[q], nu[q], eps[q] + eps0[q]);
               add_to_sums(dofs[q], sigma, eps[q], eps_bar);
             }
         }

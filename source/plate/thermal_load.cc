@@ -86,98 +86,30 @@ namespace fgimpact
 
 
 
-  SymmetricTensor<2, 3>
-  thermal_stress_at(const PlateModel                    &plate,
-                    const TemperatureProfile            &temperature,
-                    const TrilinosWrappers::MPI::Vector &u,
-                    const Point<3>                      &location)
-  {
-    const auto cells = locally_owned_cells_containing(plate, location);
-    SymmetricTensor<2, 3> sum;
-    const FESystem<3>    &fe = plate.get_fe();
-    for (const auto &[cell, unit_point] : cells)
-      {
-        const Quadrature<3>  point(unit_point);
-        FEValues<3>          fe_values(plate.get_mapping(),
-                              fe,
-                              point,
-                              update_gradients | update_quadrature_points);
-        PropertyInterpolator properties(fe.base_element(0),
-                                        {unit_point},
-                                        plate.get_material());
-        fe_values.reinit(cell);
-        std::vector<std::vector<Tensor<1, 3>>> gradients(
-          1, std::vector<Tensor<1, 3>>(3));
-        fe_values.get_function_gradients(u, gradients);
-        std::vector<SymmetricTensor<2, 3>> eps(1);
-        for (unsigned int c = 0; c < 3; ++c)
-          for (unsigned int d = 0; d < 3; ++d)
-            eps[0][c][d] += (c == d ? 1. : 0.5) * gradients[0][c][d];
-        plate.apply_mean_dilatation(cell, u, eps);
-        std::vector<double> E, nu, rho;
-        properties.values(cell, E, nu, rho);
-        const double e =
-          temperature.thermal_strain(fe_values.quadrature_point(0)[2]);
-        sum += HookeLaw::stress(E[0],
-                                nu[0],
-                                eps[0] - e * unit_symmetric_tensor<3>());
-      }
-    const MPI_Comm     comm = plate.get_mpi_communicator();
-    const unsigned int n =
-      Utilities::MPI::sum(static_cast<unsigned int>(cells.size()), comm);
-    if (n == 0)
-      return SymmetricTensor<2, 3>() * std::numeric_limits<double>::quiet_NaN();
-    SymmetricTensor<2, 3> total;
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int j = i; j < 3; ++j)
-        total[i][j] = Utilities::MPI::sum(sum[i][j], comm) / n;
-    return total;
-  }
-
-
-
   namespace
   {
-    /// sigma0 = C (eps(u) - e I) at the quadrature points of one cell.
+    /// sigma0 = C eps0 at the quadrature points of one cell.
     void
-    prestress(const PlateModel                          &plate,
-              const TemperatureProfile                  &temperature,
-              const TrilinosWrappers::MPI::Vector       &u,
+    prestress(const InitialStress                       &initial,
               const FEValues<3>                         &fe_values,
               const DoFHandler<3>::active_cell_iterator &cell,
               const PropertyInterpolator                &properties,
               std::vector<SymmetricTensor<2, 3>>        &sigma0)
     {
-      const unsigned int n_q = fe_values.n_quadrature_points;
-      std::vector<std::vector<Tensor<1, 3>>> gradients(
-        n_q, std::vector<Tensor<1, 3>>(3));
-      fe_values.get_function_gradients(u, gradients);
-      std::vector<SymmetricTensor<2, 3>> eps(n_q);
-      for (unsigned int q = 0; q < n_q; ++q)
-        for (unsigned int c = 0; c < 3; ++c)
-          for (unsigned int d = 0; d < 3; ++d)
-            eps[q][c][d] += (c == d ? 1. : 0.5) * gradients[q][c][d];
-      plate.apply_mean_dilatation(cell, u, eps);
+      initial.strain(fe_values, cell, sigma0);
       std::vector<double> E, nu, rho;
       properties.values(cell, E, nu, rho);
-      sigma0.resize(n_q);
-      for (unsigned int q = 0; q < n_q; ++q)
-        sigma0[q] =
-          HookeLaw::stress(E[q],
-                           nu[q],
-                           eps[q] - temperature.thermal_strain(
-                                      fe_values.quadrature_point(q)[2]) *
-                                      unit_symmetric_tensor<3>());
+      for (unsigned int q = 0; q < sigma0.size(); ++q)
+        sigma0[q] = HookeLaw::stress(E[q], nu[q], sigma0[q]);
     }
   } // namespace
 
 
 
   void
-  assemble_geometric_stiffness(const PlateModel                    &plate,
-                               const TemperatureProfile            &temperature,
-                               const TrilinosWrappers::MPI::Vector &u,
-                               TrilinosWrappers::SparseMatrix      &K_sigma)
+  assemble_geometric_stiffness(const PlateModel               &plate,
+                               const InitialStress            &initial,
+                               TrilinosWrappers::SparseMatrix &K_sigma)
   {
     const FESystem<3>                   &fe = plate.get_fe();
     CellValues                           values(plate);
@@ -193,7 +125,7 @@ namespace fgimpact
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          prestress(plate, temperature, u, fe_values, cell, properties, sigma0);
+          prestress(initial, fe_values, cell, properties, sigma0);
           cell_K = 0;
           add_geometric_cell_matrix(fe_values, sigma0, cell_K);
           cell->get_dof_indices(dofs);

@@ -121,12 +121,16 @@ namespace fgimpact
     class StaticDriver : public LinearProblemDriver
     {
     public:
-      StaticDriver(const Parameters &parameters,
-                   const PlateModel &plate,
-                   const Scene      &scene,
-                   SummaryFile      &summary)
+      /// thermal: the thermal step before (null: none), whose state the
+      /// written stresses add.
+      StaticDriver(const Parameters  &parameters,
+                   const PlateModel  &plate,
+                   const Scene       &scene,
+                   SummaryFile       &summary,
+                   const ThermalStep *thermal)
         : LinearProblemDriver(parameters, plate, summary)
         , scene(scene)
+        , thermal(thermal)
       {}
 
       void
@@ -142,6 +146,8 @@ namespace fgimpact
                                 plate,
                                 scene.impact_point_in_plane(),
                                 indenter);
+        if (thermal)
+          analysis.set_prestress(thermal->initial_stress());
         // Material/Plasticity = J2: the graded strengths and the plastic
         // state (validate() allows it with Load = sphere only).
         const GradedStrength          strength(parameters.strength,
@@ -190,7 +196,8 @@ namespace fgimpact
       }
 
     private:
-      const Scene &scene;
+      const Scene       &scene;
+      const ThermalStep *thermal;
     };
 
 
@@ -278,10 +285,8 @@ namespace fgimpact
             break;
           }
         case ProblemType::static_load:
-          driver = std::make_unique<StaticDriver>(parameters,
-                                                  *plate,
-                                                  *scene,
-                                                  summary_file);
+          driver = std::make_unique<StaticDriver>(
+            parameters, *plate, *scene, summary_file, thermal.get());
           break;
         case ProblemType::modal:
           driver =

@@ -84,7 +84,8 @@ namespace fgimpact
     add_row_observer(const ImpactMonitor::RowObserver &observer);
 
     /// The thermal step before this impact (Thermal/Temperature field):
-    /// the validity indices take its stress into the total. Before
+    /// every stress written and the validity indices are the total, its
+    /// stress plus the impact's. Before
     /// setup(); it must outlive the driver.
     void
     set_thermal_state(const ThermalStep &thermal)

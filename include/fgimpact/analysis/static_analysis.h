@@ -108,6 +108,15 @@ namespace fgimpact
                    const Point<2>                          &load_point,
                    const SphereIndenter &indenter = SphereIndenter());
 
+    /// A thermal run: the stresses written (summary.txt's sigma_* keys,
+    /// the VTU's) are the total, the initial state's plus the load's, and
+    /// the VTU has the thermal fields.  Before solve().
+    void
+    set_prestress(const InitialStress &initial_stress)
+    {
+      initial = &initial_stress;
+    }
+
     /// Material/Plasticity = J2 (Load = sphere): load and unload in
     /// Parameters::load_steps steps each, every step iterated to a plastic
     /// force settled to `tolerance` of the largest nodal force.
@@ -222,6 +231,7 @@ namespace fgimpact
     TrilinosWrappers::MPI::Vector           u;
     Results                                 results;
     PlasticPlate                           *plastic           = nullptr;
+    const InitialStress                    *initial           = nullptr;
     double                                  plastic_tolerance = 1e-3;
   };
 } // namespace fgimpact

@@ -9,8 +9,11 @@
 #include <fgimpact/analysis/thermal_buckling.h>
 #include <fgimpact/material/thermal.h>
 #include <fgimpact/output/output_files.h>
+#include <fgimpact/plate/initial_stress.h>
 #include <fgimpact/plate/linear_solver.h>
 #include <fgimpact/plate/plate_model.h>
+
+#include <memory>
 
 namespace fgimpact
 {
@@ -66,6 +69,13 @@ namespace fgimpact
       return u;
     }
 
+    /// The state the analyses start from (run()).
+    const InitialStress &
+    initial_stress() const
+    {
+      return *initial;
+    }
+
     /// C (eps(u) - eps_th) (Pa) at a point. Collective.
     SymmetricTensor<2, 3>
     stress_at(const Point<3> &p) const;
@@ -119,6 +129,7 @@ namespace fgimpact
     const TemperatureProfile                profile;
     const EffectiveMatrixSolver::Parameters solver_parameters;
     TrilinosWrappers::MPI::Vector           u;
+    std::unique_ptr<InitialStress>          initial;
     SymmetricTensor<2, 3>                   top, bottom;
     TrilinosWrappers::SparseMatrix          K_sigma;
     BucklingResult                          buckling;

@@ -113,6 +113,13 @@ namespace fgimpact
              (T - parameters.reference_temperature);
     }
 
+    /// alpha(z) at T(z) (1/K).
+    double
+    thermal_expansion(const double z) const
+    {
+      return material.thermal_expansion(z, temperature(z));
+    }
+
     /// Conduction with a temperature-dependent k: the fixed-point
     /// iterations it took (1 for a constant k, 0 for the other fields).
     unsigned int

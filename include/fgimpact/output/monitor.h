@@ -139,6 +139,13 @@ namespace fgimpact
     void
     set_plasticity(const PlasticPlate &plasticity);
 
+    /// A thermal run: the probes' stresses (history.csv, probes.csv and
+    /// their peaks) and, in add_field_output(), the VTU's are the total,
+    /// the initial state's plus the impact's.  Before add_field_output();
+    /// collective.
+    void
+    set_prestress(const InitialStress &initial);
+
     /// Receive every history row (the CSV's columns and units, before
     /// rounding) on every rank.
     void
@@ -291,6 +298,8 @@ namespace fgimpact
     PointProbe mid_probe, top_probe;
     /// The Output/Probe points (owned by their ProbeWriter), or null.
     ProbeSet *probe_set = nullptr;
+    /// set_prestress(); null without a thermal state.
+    const InitialStress *initial_stress = nullptr;
     /// The stepper's fields with the constraints distributed: every
     /// probe, VTU snapshot and peak field reads these.
     PlateFields fields;

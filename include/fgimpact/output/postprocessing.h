@@ -63,6 +63,14 @@ namespace fgimpact
       plastic = &plasticity;
     }
 
+    /// A thermal run: the stress is the total, C (eps + eps0) with the
+    /// initial state's eps0 at each point.
+    void
+    set_prestress(const InitialStress &initial_stress)
+    {
+      initial = &initial_stress;
+    }
+
     /// The ghosted displacement DataOut evaluates, whose cell means give
     /// the dilatation of a plate with B-bar (PlateModel::mean_dilatation()).
     void
@@ -72,13 +80,53 @@ namespace fgimpact
     }
 
   private:
+    /// The initial state's eps0 at the evaluation points of a cell.
+    std::vector<SymmetricTensor<2, 3>>
+    initial_strain(const DoFHandler<3>::active_cell_iterator &cell,
+                   const std::vector<Point<3>>               &points) const;
+
     const PlateModel                    &plate;
     const Mapping<3>                    &mapping;
     const PropertyInterpolator           properties;
     const HookeLaw                       hooke;
     const bool                           with_stress, with_material;
     const PlasticPlate                  *plastic      = nullptr;
+    const InitialStress                 *initial      = nullptr;
     const TrilinosWrappers::MPI::Vector *displacement = nullptr;
+  };
+
+
+
+  /**
+   * The thermal step's fields for DataOut, attached to its displacement
+   * u0: the temperature T(z) (temperature_K, K), the expansion
+   * coefficient alpha(z) at T(z) (thermal_expansion_per_K, 1/K) and the
+   * initial state's per-cell stress C eps0 (thermal_stress_MPa, a tensor
+   * as StressPostprocessor's, MPa) with E, nu as in the assembly.
+   */
+  class ThermalPostprocessor : public DataPostprocessor<3>
+  {
+  public:
+    ThermalPostprocessor(const PlateModel &plate, const InitialStress &initial);
+
+    void
+    evaluate_vector_field(
+      const DataPostprocessorInputs::Vector<3> &inputs,
+      std::vector<Vector<double>> &computed_quantities) const override;
+
+    std::vector<std::string>
+    get_names() const override;
+
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+    get_data_component_interpretation() const override;
+
+    UpdateFlags
+    get_needed_update_flags() const override;
+
+  private:
+    const PlateModel          &plate;
+    const InitialStress       &initial;
+    const PropertyInterpolator properties;
   };
 
 
@@ -99,6 +147,7 @@ namespace fgimpact
     bool cell_stress  = false; // per-cell stress_MPa tensor, von Mises
     bool material     = true;  // youngs_modulus_GPa, density_kg_m3
     bool peak         = true;  // peak_fields.vtu at the end of an impact
+    bool thermal      = true;  // thermal step's fields (temperature field)
     /// Entry "Mirror symmetric part": a half or quarter model's VTU files
     /// show the whole plate (MirroredDataOut).
     bool mirror = true;
@@ -140,6 +189,14 @@ namespace fgimpact
     /// equivalent_plastic_strain_nodal and yield_stress_MPa.
     void
     set_plasticity(const PlasticPlate &plasticity);
+
+    /// A thermal run: every stress written is the total, the analysis's
+    /// plus the initial state's (StressRecovery::set_prestress()), and
+    /// with the field "thermal" every snapshot has the thermal step's
+    /// displacement (thermal_displacement_m) and ThermalPostprocessor's
+    /// fields.
+    void
+    set_prestress(const InitialStress &initial);
 
     VtuWriter(const PlateModel                                 &plate,
               const std::string                                &directory,
@@ -230,6 +287,10 @@ namespace fgimpact
     void
     add_recovered_fields(DataOut<3> &data_out);
 
+    /// set_prestress() and the field "thermal": the thermal step's fields.
+    void
+    add_thermal_fields(DataOut<3> &data_out);
+
     /// Copy the fields of a snapshot into the ghosted vectors and cell
     /// fields that the background writer reads; true if the acceleration
     /// is among them.
@@ -282,6 +343,9 @@ namespace fgimpact
 
     const DataOutBase::VtkFlags::ZlibCompressionLevel compression;
     const PlasticPlate                               *plastic = nullptr;
+    /// set_prestress(): the thermal fields' postprocessor (field thermal).
+    std::unique_ptr<ThermalPostprocessor> thermal;
+    const InitialStress                  *initial = nullptr;
     /// Its cell values at the snapshot being written.
     Vector<double> plastic_strain, yield_utilization;
   };

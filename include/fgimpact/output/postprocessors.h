@@ -257,6 +257,14 @@ namespace fgimpact
       vtu->set_plasticity(plasticity);
     }
 
+    /// A thermal run: the total stress and the thermal fields
+    /// (VtuWriter::set_prestress()).
+    void
+    set_prestress(const InitialStress &initial)
+    {
+      vtu->set_prestress(initial);
+    }
+
     /// impact_point: where the ball first touches the top face; radius:
     /// the ball's (m).
     /// results: for the snapshot at the peak force (nullptr: none).

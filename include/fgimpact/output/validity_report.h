@@ -7,6 +7,7 @@
 #include <fgimpact/material/strength.h>
 #include <fgimpact/output/postprocessor.h>
 #include <fgimpact/output/results.h>
+#include <fgimpact/plate/initial_stress.h>
 #include <fgimpact/plate/strength_check.h>
 
 #include <memory>
@@ -119,10 +120,9 @@ namespace fgimpact
     /// A thermal pre-stress: the stress scanned is the total
     /// (StrengthCheck::set_prestress()).
     void
-    set_prestress(const TrilinosWrappers::MPI::Vector &u_th,
-                  const TemperatureProfile            &temperature)
+    set_prestress(const InitialStress &initial)
     {
-      check->set_prestress(u_th, temperature);
+      check->set_prestress(initial.displacement(), initial.temperature());
     }
 
     std::string

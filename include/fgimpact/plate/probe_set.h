@@ -6,13 +6,17 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <deal.II/fe/fe_values.h>
+
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/plate/initial_stress.h>
 #include <fgimpact/plate/plastic_stress_correction.h>
 #include <fgimpact/plate/plate_model.h>
 #include <fgimpact/plate/probes.h>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -129,6 +133,11 @@ namespace fgimpact
       plastic = &plasticity;
     }
 
+    /// A thermal run: the stresses are the total, the analysis's plus
+    /// the initial state's recovered at each point. Collective.
+    void
+    set_prestress(const PlateModel &plate, const InitialStress &initial);
+
     const std::vector<Point<3>> &
     locations() const
     {
@@ -154,6 +163,26 @@ namespace fgimpact
     /// it), then each cell's share of the nodal averages.
     void
     setup_stress_weights(const PlateModel &plate);
+
+    /// What visit_read_nodes() gives per cell: each scalar node's probe
+    /// factors (c_j / n_j of the probes that read it) and cut planes, and
+    /// E, nu, rho there.
+    struct NodeValues
+    {
+      std::vector<std::vector<std::pair<unsigned int, double>>> factors;
+      std::vector<unsigned int>                                 planes;
+      std::vector<double>                                       E, nu, rho;
+    };
+    using NodeVisitor =
+      std::function<void(const DoFHandler<3>::active_cell_iterator &,
+                         const FEValues<3> &,
+                         const NodeValues &)>;
+
+    /// visit(cell, fe_values, node) on every locally owned cell with a
+    /// scalar node some probe reads, fe_values (gradients and points) at
+    /// its scalar support points. Collective.
+    void
+    visit_read_nodes(const PlateModel &plate, const NodeVisitor &visit) const;
     /**
      * The support reaction's weights (source/plate/support_reaction.cc).
      * z_S is the conforming field that is 1 at the supported z DoFs (the
@@ -196,6 +225,8 @@ namespace fgimpact
 
     PlasticStressCorrection plastic_correction;
     const PlasticPlate     *plastic = nullptr;
+    /// set_prestress(): per point the 6 components (Pa); empty without.
+    std::vector<double> prestress;
   };
 } // namespace fgimpact
 

@@ -7,6 +7,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/plate/initial_stress.h>
 #include <fgimpact/plate/plastic_stress_correction.h>
 #include <fgimpact/plate/plate_model.h>
 
@@ -123,6 +124,16 @@ namespace fgimpact
       plastic_correction.set_plasticity(plasticity);
     }
 
+    /// A thermal run: the stress is the total, the analysis's plus the
+    /// initial state's at the point (InitialStress::stress_at()).
+    /// Collective.
+    void
+    set_prestress(const InitialStress &initial)
+    {
+      prestress     = initial.stress_at(point);
+      has_prestress = true;
+    }
+
   private:
     using Weights = std::vector<std::pair<types::global_dof_index, double>>;
 
@@ -138,6 +149,9 @@ namespace fgimpact
     /// Independent stress components in the order xx, yy, zz, yz, xz, xy.
     std::array<Weights, 6>  stress_weights;
     PlasticStressCorrection plastic_correction;
+    /// set_prestress() (Pa); zero without.
+    SymmetricTensor<2, 3> prestress;
+    bool                  has_prestress = false;
   };
 } // namespace fgimpact
 

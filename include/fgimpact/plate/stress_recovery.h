@@ -8,6 +8,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/plate/initial_stress.h>
 #include <fgimpact/plate/plastic_plate.h>
 #include <fgimpact/plate/plate_model.h>
 
@@ -110,6 +111,15 @@ namespace fgimpact
     void
     set_plasticity(const PlasticPlate &plasticity);
 
+    /// A thermal run: every recovered stress is the total,
+    /// C (eps + eps0) with the initial state's eps0; the strain fields
+    /// stay the strain of the analysis's displacement.
+    void
+    set_prestress(const InitialStress &initial_stress)
+    {
+      initial = &initial_stress;
+    }
+
     /// Whether set_plasticity() was called.
     bool
     plastic() const
@@ -200,10 +210,11 @@ namespace fgimpact
     void
     average_and_derive();
 
-    const PlateModel   &plate;
-    const PlasticPlate *plasticity = nullptr;
-    DoFHandler<3>       dof_handler;
-    IndexSet            owned, relevant;
+    const PlateModel    &plate;
+    const PlasticPlate  *plasticity = nullptr;
+    const InitialStress *initial    = nullptr;
+    DoFHandler<3>        dof_handler;
+    IndexSet             owned, relevant;
     /// 1 / (number of cells sharing each owned scalar DoF).
     TrilinosWrappers::MPI::Vector inverse_count;
     /// Per-cell sums (writable ghosts), 6 stress + 6 strain components.

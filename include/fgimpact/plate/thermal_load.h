@@ -8,6 +8,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <fgimpact/material/thermal.h>
+#include <fgimpact/plate/initial_stress.h>
 #include <fgimpact/plate/plate_model.h>
 
 namespace fgimpact
@@ -30,29 +31,18 @@ namespace fgimpact
                         const TemperatureProfile      &temperature,
                         TrilinosWrappers::MPI::Vector &rhs);
 
-  /**
-   * The stress C (eps(u) - eps_th) (Pa) at a point of the plate, the mean
-   * over the cells that contain it (on a face between cells the Q_p
-   * stress jumps).  u ghosted, constraints distributed. Collective; NaN
-   * if no cell contains the point.
-   */
-  SymmetricTensor<2, 3>
-  thermal_stress_at(const PlateModel                    &plate,
-                    const TemperatureProfile            &temperature,
-                    const TrilinosWrappers::MPI::Vector &u,
-                    const Point<3>                      &location);
+
   /**
    * The initial-stress stiffness K_sigma of the pre-stress
-   * sigma0 = C (eps(u) - eps_th) (add_geometric_cell_matrix()), on K's
+   * sigma0 = C eps0 (add_geometric_cell_matrix()), on K's
    * sparsity; the constrained DoFs' rows and columns are zero (not the
    * diagonal that condensation puts there), so that K + K_sigma keeps K's
-   * constrained rows.  u ghosted, constraints distributed.
+   * constrained rows.
    */
   void
-  assemble_geometric_stiffness(const PlateModel                    &plate,
-                               const TemperatureProfile            &temperature,
-                               const TrilinosWrappers::MPI::Vector &u,
-                               TrilinosWrappers::SparseMatrix      &K_sigma);
+  assemble_geometric_stiffness(const PlateModel               &plate,
+                               const InitialStress            &initial,
+                               TrilinosWrappers::SparseMatrix &K_sigma);
 } // namespace fgimpact
 
 #endif
