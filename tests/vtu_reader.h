@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -121,6 +122,25 @@ namespace fgimpact_tests
     AssertThrow(start != std::string::npos,
                 dealii::ExcMessage("no <Points> in " + file));
     return decode_array(text, text.find("<DataArray", start));
+  }
+
+  /// The piece files DIRECTORY/vtu/PREFIX*.vtu of a run, sorted (one
+  /// rank: "solution_" gives every snapshot, "solution_0" the regular
+  /// ones).
+  inline std::vector<std::string>
+  snapshot_files(const std::string &directory, const std::string &prefix)
+  {
+    std::vector<std::string> files;
+    for (const auto &entry :
+         std::filesystem::directory_iterator(directory + "/vtu"))
+      {
+        const std::string file = entry.path().filename().string();
+        if (file.rfind(prefix, 0) == 0 && file.size() > 4 &&
+            file.substr(file.size() - 4) == ".vtu")
+          files.push_back(directory + "/vtu/" + file);
+      }
+    std::sort(files.begin(), files.end());
+    return files;
   }
 } // namespace fgimpact_tests
 

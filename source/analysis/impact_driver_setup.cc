@@ -154,6 +154,11 @@ namespace fgimpact
         strength   = std::make_unique<GradedStrength>(parameters.strength,
                                                     plate.get_material());
         plasticity = std::make_unique<PlasticPlate>(plate, *strength);
+        if (thermal_state) // plasticity from the thermal pre-stress
+          {
+            plasticity->set_prestress(thermal_state->initial_stress());
+            plasticity->refuse_yielding_prestress();
+          }
         stepper->set_plasticity(*plasticity,
                                 parameters.time_integration.newton.tolerance);
       }

@@ -342,11 +342,27 @@ namespace fgimpact
     for (unsigned int a = 0; a < 3; ++a)
       for (unsigned int d = a; d < 3; ++d)
         strain[a][d] = 0.5 * (G[a][d] + G[d][a]);
-    const double bound =
-      deviator(strain).norm() + std::sqrt(R2) * gradient_bound[t];
+    const double bound = deviator(strain).norm() +
+                         std::sqrt(R2) * gradient_bound[t] +
+                         (prestrain.empty() ? 0. : prestrain_dev[c]);
     // Half the yield strain: max_trial_ratio() is then exact whenever it
     // is above 1/2 (first yield is interpolated from it).
     return bound < 0.5 * skip_strain[c];
+  }
+
+
+
+  double
+  PlasticPlate::utilization_of(const PlasticUpdate &update,
+                               const unsigned int   k) const
+  {
+    // The returned stress over the new yield stress (1 on the yield
+    // surface): kept for the VTU's cell data of plastic points.
+    return update.state.equivalent_plastic_strain > 0. ?
+             std::sqrt(1.5) * deviator(update.stress).norm() /
+               (yield[k] +
+                hardening[k] * update.state.equivalent_plastic_strain) :
+             0.;
   }
 
 
@@ -373,25 +389,20 @@ namespace fgimpact
               for (unsigned int d = a; d < 3; ++d)
                 strain[a][d] += 0.5 * (us[a] * g[d] + us[d] * g[a]);
           }
+        if (!prestrain.empty())
+          strain += prestrain[k]; // the total mechanical strain
         const PlasticState &old    = committed[k];
         const PlasticUpdate update = J2Plasticity::update(
           lambda[k], mu[k], yield[k], hardening[k], strain, old, false);
-        trial[k]      = update.state;
-        trial_work[k] = update.plastic_work * weights[k];
-        // The returned stress over the new yield stress (1 on the yield
-        // surface): kept for the VTU's cell data of plastic points.
-        trial_utilization[k] =
-          update.state.equivalent_plastic_strain > 0. ?
-            std::sqrt(1.5) * deviator(update.stress).norm() /
-              (yield[k] +
-               hardening[k] * update.state.equivalent_plastic_strain) :
-            0.;
-        const double sigma_y =
-          yield[k] + hardening[k] * old.equivalent_plastic_strain;
+        trial[k]             = update.state;
+        trial_work[k]        = update.plastic_work * weights[k];
+        trial_utilization[k] = utilization_of(update, k);
         const double s_trial =
           2. * mu[k] * deviator(strain - old.plastic_strain).norm();
         result.ratio =
-          std::max(result.ratio, std::sqrt(1.5) * s_trial / sigma_y);
+          std::max(result.ratio,
+                   std::sqrt(1.5) * s_trial /
+                     (yield[k] + hardening[k] * old.equivalent_plastic_strain));
         if (update.state.equivalent_plastic_strain == 0.)
           continue;
         result.plastic = true;
@@ -399,6 +410,10 @@ namespace fgimpact
         const SymmetricTensor<2, 3> &eps_p   = update.state.plastic_strain;
         const SymmetricTensor<2, 3>  sigma_p = 2. * mu[k] * eps_p;
         result.energy += 0.5 * (sigma_p * eps_p) * weights[k];
+        // The pre-stress's part, -sigma0 : eps_p = -2 mu eps0 : eps_p
+        // (tr eps_p = 0).
+        if (!prestrain.empty())
+          result.energy -= 2. * mu[k] * (prestrain[k] * eps_p) * weights[k];
         for (unsigned int s = 0; s < n_scalar; ++s)
           {
             const double *const g = grad + (q * n_scalar + s) * 3;

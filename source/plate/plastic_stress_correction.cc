@@ -45,6 +45,7 @@ namespace fgimpact
                   planes,
                   weights,
                   {},
+                  {},
                   {}};
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
     cell->get_dof_indices(dofs);
@@ -77,6 +78,29 @@ namespace fgimpact
 
 
   void
+  PlasticStressCorrection::set_prestress(const InitialStress &initial)
+  {
+    prestressed = true;
+    std::vector<SymmetricTensor<2, 3>> eps0;
+    for (const auto &cell : plate.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (auto &record : records)
+          if (record.active_index == cell->active_cell_index())
+            {
+              FEValues<3> fe_values(plate.get_mapping(),
+                                    plate.get_fe(),
+                                    Quadrature<3>(record.unit_point),
+                                    update_gradients |
+                                      update_quadrature_points);
+              fe_values.reinit(cell);
+              initial.strain(fe_values, cell, eps0);
+              record.eps0 = eps0[0];
+            }
+  }
+
+
+
+  void
   PlasticStressCorrection::add_to(const TrilinosWrappers::MPI::Vector &u,
                                   std::vector<double>                 &local,
                                   const unsigned int                   stride,
@@ -98,6 +122,8 @@ namespace fgimpact
         SymmetricTensor<2, 3> eps;
         for (unsigned int i = 0; i < record.strain.size(); ++i)
           eps += values[record.local_index[i]] * record.strain[i];
+        if (prestressed)
+          eps += record.eps0; // the total mechanical strain
         const PlasticState state =
           plasticity->plastic_state(record.active_index, record.unit_point);
         const SymmetricTensor<2, 3> elastic =

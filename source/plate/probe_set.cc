@@ -304,6 +304,7 @@ namespace fgimpact
                     sigma0[stress_component[s][0]][stress_component[s][1]];
             }
       });
+    plastic_correction.set_prestress(initial);
     prestress.resize(local.size());
     Utilities::MPI::sum(ArrayView<const double>(local),
                         mpi_communicator,

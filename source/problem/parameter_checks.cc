@@ -12,12 +12,6 @@ namespace fgimpact
   {
     if (p.strength.plasticity != GradedStrength::Plasticity::j2)
       return;
-    AssertThrow(!p.thermal.active(),
-                ExcMessage("Material/Plasticity = J2 with a Thermal/"
-                           "Temperature field: the thermal step is elastic "
-                           "and plasticity does not start from its "
-                           "pre-stress yet; set one of them to its default "
-                           "(doc/thermal.md)."));
     const std::string name = "Material/Plasticity = J2";
     AssertThrow(p.strength.metal_yield_strength > 0.,
                 ExcMessage(name + " needs Material/Metal yield strength > "

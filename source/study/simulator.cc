@@ -156,6 +156,8 @@ namespace fgimpact
         if (parameters.strength.plasticity == GradedStrength::Plasticity::j2)
           {
             plasticity = std::make_unique<PlasticPlate>(plate, strength);
+            if (thermal)
+              plasticity->set_prestress(thermal->initial_stress());
             analysis.set_plasticity(
               *plasticity, parameters.time_integration.newton.tolerance);
           }

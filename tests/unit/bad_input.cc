@@ -371,6 +371,18 @@ namespace fgimpact_unit_tests::bad_input
          " set Temperature change = 1200\nend\n",
          1,
          "Material/Metal material"},
+        // Issue 42: the thermal step is elastic; J2 starts from its state
+        // only below the yield strength (-351 MPa here against 275 MPa).
+        {"J2 from a thermal state beyond the yield strength",
+         small + "subsection Contact\n set Model = resolved sphere\nend\n"
+                 "subsection Material\n set Plasticity = J2\n"
+                 " set Power-law index = 0\nend\n"
+                 "subsection Boundary conditions\n set In-plane edges = "
+                 "immovable\nend\n"
+                 "subsection Thermal\n set Temperature field = uniform\n"
+                 " set Temperature change = 150\nend\n",
+         1,
+         "Material/Plasticity = J2: the thermal state"},
         {"a named constituent with an exponential gradation",
          "subsection Material\n set Ceramic material = Si3N4\n"
          " set Gradation = exponential\nend\n",

@@ -61,22 +61,6 @@ namespace fgimpact_unit_tests::plastic_stress_vtu
       return fgimpact_tests::read_summary(directory + "/summary.txt");
     }
 
-    /// The snapshots' piece files (one rank: vtu/solution_*.vtu), sorted.
-    std::vector<std::string>
-    snapshots(const std::string &directory)
-    {
-      std::vector<std::string> files;
-      for (const auto &entry :
-           std::filesystem::directory_iterator(directory + "/vtu"))
-        {
-          const std::string file = entry.path().filename().string();
-          if (file.rfind("solution_", 0) == 0 && file.size() > 4 &&
-              file.substr(file.size() - 4) == ".vtu")
-            files.push_back(directory + "/vtu/" + file);
-        }
-      std::sort(files.begin(), files.end());
-      return files;
-    }
 
     const std::string j2 = "subsection Material\n set Plasticity = J2\nend\n";
   } // namespace
@@ -88,8 +72,8 @@ namespace fgimpact_unit_tests::plastic_stress_vtu
     bool                             ok = true;
 
     // 1.-2. The snapshots of the J2 run.
-    const auto   plastic          = impact("j2", j2);
-    const auto   files            = snapshots("out_j2");
+    const auto   plastic = impact("j2", j2);
+    const auto   files = fgimpact_tests::snapshot_files("out_j2", "solution_");
     unsigned int n_plastic_points = 0;
     bool         below_yield = true, cells_below = true;
     for (const auto &file : files)
@@ -177,7 +161,8 @@ namespace fgimpact_unit_tests::plastic_stress_vtu
       double       W_mid = 0;
       std::vector<std::pair<double, double>> line;
       double                                 depth = 0, radius = 0;
-      for (const auto &file : snapshots("out_crater"))
+      for (const auto &file :
+           fgimpact_tests::snapshot_files("out_crater", "solution_"))
         {
           if (file.find("solution_00200") == std::string::npos)
             continue;
@@ -242,8 +227,9 @@ namespace fgimpact_unit_tests::plastic_stress_vtu
     impact("stiff",
            "subsection Material\n set Plasticity = J2\n"
            " set Metal yield strength = 1e11\nend\n");
-    const auto a = snapshots("out_elastic"), b = snapshots("out_stiff");
-    bool       same = a.size() == b.size() && !a.empty();
+    const auto a = fgimpact_tests::snapshot_files("out_elastic", "solution_"),
+               b = fgimpact_tests::snapshot_files("out_stiff", "solution_");
+    bool same    = a.size() == b.size() && !a.empty();
     for (std::size_t f = 0; same && f < a.size(); ++f)
       for (const std::string field :
            {"sigma_xx_MPa", "sigma_zz_MPa", "sigma_xz_MPa", "von_mises_MPa"})

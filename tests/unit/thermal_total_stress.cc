@@ -100,28 +100,15 @@ namespace fgimpact_unit_tests::thermal_total_stress
       return values;
     }
 
-    /// The snapshots' piece files of a run, sorted.
-    std::vector<std::string>
-    snapshots(const std::string &directory)
-    {
-      std::vector<std::string> files;
-      for (const auto &entry :
-           std::filesystem::directory_iterator(directory + "/vtu"))
-        {
-          const std::string file = entry.path().filename().string();
-          if (file.rfind("solution_0", 0) == 0 &&
-              file.substr(file.size() - 4) == ".vtu")
-            files.push_back(directory + "/vtu/" + file);
-        }
-      std::sort(files.begin(), files.end());
-      return files;
-    }
 
     /// 1. The per-cell and recovered stresses superpose in every snapshot.
     bool
     check_vtu_superposition(double &centre_recovered, double &centre_cell)
     {
-      const auto hot = snapshots("out_thermal"), cold = snapshots("out_cold");
+      const auto hot =
+                   fgimpact_tests::snapshot_files("out_thermal", "solution_0"),
+                 cold =
+                   fgimpact_tests::snapshot_files("out_cold", "solution_0");
       double     worst_cell = 0, worst_recovered = 0, largest = 0;
       const auto first_xx =
         fgimpact_tests::read_array(hot.front(), "sigma_xx_MPa");
@@ -256,8 +243,9 @@ namespace fgimpact_unit_tests::thermal_total_stress
     ok = ok && zz_ok;
 
     // 3. The temperature and the expansion coefficient.
-    const auto first     = snapshots("out_thermal").front();
-    bool       fields_ok = true;
+    const auto first =
+      fgimpact_tests::snapshot_files("out_thermal", "solution_0").front();
+    bool fields_ok = true;
     for (const float T : fgimpact_tests::read_array(first, "temperature_K"))
       fields_ok = fields_ok && std::abs(T - 400.) < 1e-4;
     for (const float a :

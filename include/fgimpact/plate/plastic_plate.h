@@ -11,6 +11,7 @@
 #include <fgimpact/base/checkpoint.h>
 #include <fgimpact/material/plasticity.h>
 #include <fgimpact/material/strength.h>
+#include <fgimpact/plate/initial_stress.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <Epetra_Import.h>
@@ -188,6 +189,27 @@ namespace fgimpact
     double
     yield_stress(const double z, const double equivalent_plastic_strain) const;
 
+    /**
+     * A thermal run (plastic_plate_prestress.cc): plasticity starts from
+     * the initial state.  The return map sees the total mechanical strain
+     * eps(u) + eps0 at every Gauss point, the cell-skipping bound adds the
+     * cell's largest |dev eps0|, and eigenstrain_energy() adds
+     * -int sigma0 : eps_p dV: with int B^T sigma0 dV = 0 (the thermal
+     * step's equilibrium) the total elastic energy changes from the
+     * thermal state's by 1/2 u^T K u - u^T f_p + 1/2 int eps_p : D : eps_p
+     * - int sigma0 : eps_p, so that the energy balance closes with the
+     * plastic work of the total stress.  Before the first update().
+     * Collective.
+     */
+    void
+    set_prestress(const InitialStress &initial);
+
+    /// An impact (after set_prestress()): throws, in one line saying where
+    /// and how far, if the initial state's von Mises stress exceeds the
+    /// yield strength at a Gauss point (the thermal step is elastic).
+    void
+    refuse_yielding_prestress() const;
+
     /// The committed state (this rank's points) and the work.
     void
     save(CheckpointWriter &out) const;
@@ -307,6 +329,17 @@ namespace fgimpact
     /// committed state where plastic (0 elsewhere).
     std::vector<double> trial_utilization, utilization;
     std::vector<bool>   plastic_cell;
+    /// set_prestress(): per point eps0, per cell the largest |dev eps0|
+    /// (empty without).
+    std::vector<SymmetricTensor<2, 3>> prestrain;
+    std::vector<double>                prestrain_dev;
+    /// The returned von Mises stress of point k over its new yield stress
+    /// (0 where elastic).
+    double
+    utilization_of(const PlasticUpdate &update, const unsigned int k) const;
+    /// set_prestress(): the largest von Mises / yield strength of the
+    /// initial state over the ranks, and where (m).
+    std::pair<double, Point<3>> prestress_yield = {0., Point<3>()};
 
     TrilinosWrappers::MPI::Vector  u_distributed, u_ghosted;
     std::unique_ptr<Epetra_Import> importer;

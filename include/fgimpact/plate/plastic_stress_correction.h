@@ -51,6 +51,11 @@ namespace fgimpact
     void
     set_plasticity(const PlasticPlate &plasticity);
 
+    /// A thermal run: the total strain at each point adds the initial
+    /// state's eps0 (the probes' linear part adds its stress).
+    void
+    set_prestress(const InitialStress &initial);
+
     bool
     active() const
     {
@@ -76,11 +81,13 @@ namespace fgimpact
       std::vector<std::pair<unsigned, double>> weights;
       std::vector<int>                         local_index; // per cell DoF
       std::vector<SymmetricTensor<2, 3>>       strain;      // per unit DoF
+      SymmetricTensor<2, 3>                    eps0;        // set_prestress()
     };
 
     const PlateModel                      &plate;
     const PlasticPlate                    *plasticity = nullptr;
     std::vector<Record>                    records;
+    bool                                   prestressed = false;
     mutable TrilinosWrappers::MPI::Vector  u_ghosted;
     mutable std::unique_ptr<Epetra_Import> importer;
   };

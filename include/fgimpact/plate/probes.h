@@ -132,6 +132,7 @@ namespace fgimpact
     {
       prestress     = initial.stress_at(point);
       has_prestress = true;
+      plastic_correction.set_prestress(initial);
     }
 
   private:
