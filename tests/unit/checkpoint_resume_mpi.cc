@@ -5,7 +5,8 @@
 // step and continued with `fgimpact --resume`: history.csv identical byte
 // for byte, summary.txt line for line except the provenance comments and
 // the wall-clock timings.  Hertz node and a resolved sphere whose
-// candidate set grows during the run, elastic and with J2.  With KLU: the
+// candidate set grows during the run, elastic and with J2, and a thermal
+// environment.  With KLU: the
 // distributed MUMPS is not bit-reproducible from run to run (two uninterrupted
 // 2-rank runs of the resolved case differ in max_relative_energy_drift, 1.9e-13
 // against 9.8e-14), so only a deterministic solver can show bit-identity.
@@ -67,6 +68,26 @@ namespace fgimpact_unit_tests::checkpoint_resume_mpi
              "subsection Output\n set Checkpoint interval = 10\nend\n",
            2,
            random.kill_point(40)) &&
+         ok;
+
+    // A thermal environment (issue 42): the immovable sides' columns cross
+    // the ranks' boundary, the thermal step and its buckling solve are
+    // repeated on resume, and the total stress is in every file compared.
+    ok = kill_and_resume(
+           "thermal_mpi",
+           small_plate +
+             "subsection Material\n set Metal material = SUS304\n set "
+             "Ceramic material = Si3N4\nend\n"
+             "subsection Boundary conditions\n set In-plane edges = "
+             "immovable\nend\n"
+             "subsection Thermal\n set Temperature field = conduction\n "
+             "set Bottom temperature = 600\n set Geometric stiffness = "
+             "true\nend\n"
+             "subsection Time integration\n set End time = 150e-6\nend\n"
+             "subsection Linear solver\n set Type = klu\nend\n"
+             "subsection Output\n set Checkpoint interval = 15\nend\n",
+           2,
+           random.kill_point(70)) &&
          ok;
 
     std::printf("%s\n", ok ? "all checks passed" : "SOME CHECKS FAILED");

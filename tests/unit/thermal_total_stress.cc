@@ -26,6 +26,14 @@
 //     thermal_closed_forms).
 //  3. temperature_K is T_ref + Delta T = 400 K and thermal_expansion_per_K
 //     the metal's 23e-6 / K at every point.
+//  4. The validity report scans the total stress: the same scene struck
+//     at 1e-6 m/s (the impact's stress a millionth of the thermal
+//     state's), its von_mises_at_peak_MPa (StrengthCheck's own strain
+//     evaluation with the thermal step's strain added) equals the largest
+//     per-cell von Mises stress of the first VTU snapshot (the
+//     StressPostprocessor's total, another implementation) to 1e-4, and
+//     at the same place (von_mises_peak_x/y/z_mm); it is the sides' edge
+//     layer's, above the interior's 230 MPa.
 
 #include <deal.II/base/mpi.h>
 
@@ -187,6 +195,40 @@ namespace fgimpact_unit_tests::thermal_total_stress
                   pass ? "(within 1 %)" : "(NOT within 1 %)");
       return pass;
     }
+
+    /// 4. The validity report's largest von Mises stress against the VTU's.
+    bool
+    check_validity()
+    {
+      const auto summary =
+        run("validity",
+            thermal +
+              "subsection Impactor\n set Initial velocity = 1e-6\nend\n");
+      const auto file =
+        fgimpact_tests::snapshot_files("out_validity", "solution_0").front();
+      const auto  x  = fgimpact_tests::read_points(file);
+      const auto  vm = fgimpact_tests::read_array(file, "cell_von_mises_MPa");
+      std::size_t at = 0;
+      for (std::size_t i = 0; i < vm.size(); ++i)
+        if (vm[i] > vm[at])
+          at = i;
+      const double reported = std::stod(summary.at("von_mises_at_peak_MPa"));
+      const double distance = std::hypot(
+        x[3 * at] * 1e3 - std::stod(summary.at("von_mises_peak_x_mm")),
+        x[3 * at + 1] * 1e3 - std::stod(summary.at("von_mises_peak_y_mm")),
+        x[3 * at + 2] * 1e3 - std::stod(summary.at("von_mises_peak_z_mm")));
+      const bool value_ok = std::abs(reported / vm[at] - 1.) < 1e-4;
+      const bool place_ok = distance < 1e-3; // mm, the keys' digits
+      const bool above    = reported > std::abs(exact);
+      std::printf("4. validity: von_mises_at_peak_MPa against the VTU's "
+                  "largest cell_von_mises_MPa %s 1e-4, at the same point: "
+                  "%s, above the interior's %.0f MPa: %s\n",
+                  value_ok ? "within" : "NOT within",
+                  place_ok ? "yes" : "NO",
+                  std::abs(exact),
+                  above ? "yes" : "NO");
+      return value_ok && place_ok && above;
+    }
   } // namespace
 
   int
@@ -255,6 +297,7 @@ namespace fgimpact_unit_tests::thermal_total_stress
                 "23e-6 / K at every point: %s\n",
                 fields_ok ? "yes" : "NO");
     ok = ok && fields_ok;
+    ok = check_validity() && ok;
     return ok ? 0 : 1;
   }
 } // namespace fgimpact_unit_tests::thermal_total_stress
