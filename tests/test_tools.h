@@ -67,6 +67,31 @@ namespace fgimpact_tests
     return worst;
   }
 
+  /// A CSV file's column `name` (history.csv, probes.csv), as numbers.
+  inline std::vector<double>
+  csv_column(const std::string &file, const std::string &name)
+  {
+    std::ifstream            in(file);
+    std::string              line, cell;
+    std::vector<std::string> header;
+    std::getline(in, line);
+    std::istringstream head(line);
+    while (std::getline(head, cell, ','))
+      header.push_back(cell);
+    const auto k = std::find(header.begin(), header.end(), name);
+    AssertThrow(k != header.end(),
+                dealii::ExcMessage(name + " not in " + file));
+    std::vector<double> values;
+    while (std::getline(in, line))
+      {
+        std::istringstream row(line);
+        for (long j = 0; j <= k - header.begin(); ++j)
+          std::getline(row, cell, ',');
+        values.push_back(std::stod(cell));
+      }
+    return values;
+  }
+
   /// summary.txt's entries, key -> text (the provenance comments left
   /// out).
   inline std::map<std::string, std::string>

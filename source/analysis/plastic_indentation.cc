@@ -46,7 +46,9 @@ namespace fgimpact
     r.modelled               = true;
     FullMatrix<double> C;
     compute_compliance(solver, plate, contact.contact_dofs(), C);
-    double last_ratio = 0, last_force = 0;
+    // First yield is interpolated from the unloaded state: a thermal
+    // pre-stress's own ratio (0 without; above 1: yield at zero load).
+    double last_ratio = plastic->initial_yield_ratio(), last_force = 0;
     for (unsigned int k = 1; k <= 2 * n; ++k)
       {
         const double delta =

@@ -226,6 +226,8 @@ namespace fgimpact
         PointProbe probe(plate, plate.get_geometry().centre(0.5 * k * h));
         if (initial)
           probe.set_prestress(*initial);
+        if (plastic) // the stress the material carries, as the VTU's
+          probe.set_plasticity(*plastic);
         const SymmetricTensor<2, 3> sigma = probe.stress(u);
         results.deflection[k]             = -probe.displacement(u)[2];
         results.sigma_xx[k]               = sigma[0][0];

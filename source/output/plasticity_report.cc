@@ -32,6 +32,9 @@ namespace fgimpact
     , material(plate.get_material())
     , degree(plate.get_fe().degree)
     , locking(degree == 1 && !plate.uses_mean_dilatation())
+    // First yield is interpolated from the state before the load: a
+    // thermal pre-stress's own ratio (0 without).
+    , last_ratio(plasticity.initial_yield_ratio())
   {
     results.plastic.modelled                    = true;
     const double                      tolerance = 1e-9 * top;

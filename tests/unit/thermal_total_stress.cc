@@ -32,8 +32,10 @@
 //     evaluation with the thermal step's strain added) equals the largest
 //     per-cell von Mises stress of the first VTU snapshot (the
 //     StressPostprocessor's total, another implementation) to 1e-4, and
-//     at the same place (von_mises_peak_x/y/z_mm); it is the sides' edge
-//     layer's, above the interior's 230 MPa.
+//     so does the VTU's largest at the reported place
+//     (von_mises_peak_x/y/z_mm; the scene is symmetric in x and y, so a
+//     twin peak may tie); it is the sides' edge layer's, above the
+//     interior's 230 MPa.
 
 #include <deal.II/base/mpi.h>
 
@@ -83,31 +85,6 @@ namespace fgimpact_unit_tests::thermal_total_stress
           " set Print timing = false\nend\n");
       return fgimpact_tests::read_summary(directory + "/summary.txt");
     }
-
-    /// A CSV file's column `name`.
-    std::vector<double>
-    column(const std::string &file, const std::string &name)
-    {
-      std::ifstream            in(file);
-      std::string              line, cell;
-      std::vector<std::string> header;
-      std::getline(in, line);
-      std::istringstream head(line);
-      while (std::getline(head, cell, ','))
-        header.push_back(cell);
-      const auto k = std::find(header.begin(), header.end(), name);
-      AssertThrow(k != header.end(), ExcMessage(name + " not in " + file));
-      std::vector<double> values;
-      while (std::getline(in, line))
-        {
-          std::istringstream row(line);
-          for (long j = 0; j <= k - header.begin(); ++j)
-            std::getline(row, cell, ',');
-          values.push_back(std::stod(cell));
-        }
-      return values;
-    }
-
 
     /// 1. The per-cell and recovered stresses superpose in every snapshot.
     bool
@@ -175,8 +152,8 @@ namespace fgimpact_unit_tests::thermal_total_stress
                         const double       digits,
                         double            &first)
     {
-      const auto a = column("out_thermal/" + file, name),
-                 b = column("out_cold/" + file, name);
+      const auto a = fgimpact_tests::csv_column("out_thermal/" + file, name),
+                 b = fgimpact_tests::csv_column("out_cold/" + file, name);
       first        = a.empty() ? std::nan("") : a[0] - b[0];
       double worst = 0;
       for (std::size_t i = 0; i < a.size() && a.size() == b.size(); ++i)
@@ -206,27 +183,34 @@ namespace fgimpact_unit_tests::thermal_total_stress
               "subsection Impactor\n set Initial velocity = 1e-6\nend\n");
       const auto file =
         fgimpact_tests::snapshot_files("out_validity", "solution_0").front();
-      const auto  x  = fgimpact_tests::read_points(file);
-      const auto  vm = fgimpact_tests::read_array(file, "cell_von_mises_MPa");
-      std::size_t at = 0;
-      for (std::size_t i = 0; i < vm.size(); ++i)
-        if (vm[i] > vm[at])
-          at = i;
+      const auto x  = fgimpact_tests::read_points(file);
+      const auto vm = fgimpact_tests::read_array(file, "cell_von_mises_MPa");
+      // The largest over the snapshot, and the largest at the reported
+      // point (the scene is symmetric in x and y: a twin peak may tie).
       const double reported = std::stod(summary.at("von_mises_at_peak_MPa"));
-      const double distance = std::hypot(
-        x[3 * at] * 1e3 - std::stod(summary.at("von_mises_peak_x_mm")),
-        x[3 * at + 1] * 1e3 - std::stod(summary.at("von_mises_peak_y_mm")),
-        x[3 * at + 2] * 1e3 - std::stod(summary.at("von_mises_peak_z_mm")));
-      const bool value_ok = std::abs(reported / vm[at] - 1.) < 1e-4;
-      const bool place_ok = distance < 1e-3; // mm, the keys' digits
+      const double px       = std::stod(summary.at("von_mises_peak_x_mm"));
+      const double py       = std::stod(summary.at("von_mises_peak_y_mm"));
+      const double pz       = std::stod(summary.at("von_mises_peak_z_mm"));
+      double       largest = 0, there = 0;
+      for (std::size_t i = 0; i < vm.size(); ++i)
+        {
+          largest = std::max<double>(largest, vm[i]);
+          if (std::hypot(x[3 * i] * 1e3 - px,
+                         x[3 * i + 1] * 1e3 - py,
+                         x[3 * i + 2] * 1e3 - pz) < 1e-3) // mm, the keys'
+            there = std::max<double>(there, vm[i]);
+        }
+      const bool value_ok = std::abs(reported / largest - 1.) < 1e-4;
+      const bool place_ok = std::abs(reported / there - 1.) < 1e-4;
       const bool above    = reported > std::abs(exact);
-      std::printf("4. validity: von_mises_at_peak_MPa against the VTU's "
-                  "largest cell_von_mises_MPa %s 1e-4, at the same point: "
-                  "%s, above the interior's %.0f MPa: %s\n",
-                  value_ok ? "within" : "NOT within",
-                  place_ok ? "yes" : "NO",
-                  std::abs(exact),
-                  above ? "yes" : "NO");
+      std::printf(
+        "4. validity: von_mises_at_peak_MPa against the VTU's "
+        "largest cell_von_mises_MPa %s 1e-4, and against the VTU's at "
+        "the reported point: %s, above the interior's %.0f MPa: %s\n",
+        value_ok ? "within" : "NOT within",
+        place_ok ? "yes" : "NO",
+        std::abs(exact),
+        above ? "yes" : "NO");
       return value_ok && place_ok && above;
     }
   } // namespace

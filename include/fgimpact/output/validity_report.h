@@ -117,12 +117,18 @@ namespace fgimpact
                     const ConditionalOStream &pcout,
                     const PlasticPlate       *plasticity = nullptr);
 
-    /// A thermal pre-stress: the stress scanned is the total
+    /// A thermal pre-stress: the stresses scanned, the carried and a
+    /// plastic run's elastic trial, are the total
     /// (StrengthCheck::set_prestress()).
     void
     set_prestress(const InitialStress &initial)
     {
       check->set_prestress(initial.displacement(), initial.temperature());
+      // A plastic run's elastic trial too: the elastic stress of the
+      // total strain.
+      if (elastic_check)
+        elastic_check->set_prestress(initial.displacement(),
+                                     initial.temperature());
     }
 
     std::string

@@ -210,6 +210,15 @@ namespace fgimpact
     void
     refuse_yielding_prestress() const;
 
+    /// The initial state's largest von Mises stress over the yield
+    /// strength (set_prestress(); 0 without): the trial ratio at zero
+    /// load, from which first yield is interpolated.
+    double
+    initial_yield_ratio() const
+    {
+      return prestress_yield.first;
+    }
+
     /// The committed state (this rank's points) and the work.
     void
     save(CheckpointWriter &out) const;

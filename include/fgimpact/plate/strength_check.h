@@ -81,8 +81,9 @@ namespace fgimpact
      * checked is the total, C (eps(u) + eps0), with the thermal step's
      * mechanical strain eps0 = eps(u_th) - alpha (T - T_ref) I at each
      * point, so that the indices are those of the stress the material
-     * carries (source/plate/strength_check_prestress.cc).  u_th ghosted,
-     * constraints distributed.  Not with plasticity.
+     * carries (source/plate/strength_check_prestress.cc); with
+     * plasticity, C (eps(u) + eps0 - eps_p).  u_th ghosted, constraints
+     * distributed.
      */
     void
     set_prestress(const TrilinosWrappers::MPI::Vector &u_th,
