@@ -215,6 +215,11 @@ namespace fgimpact
              "holds for the average acceleration rule only)";
     if (p.output.vtu_interval > 0)
       return "Output/VTU interval > 0 (VTU needs the fields)";
+    // The unit responses are the bare plate's: neither the thermal state's
+    // stress nor its geometric stiffness (issue 42).
+    if (p.thermal.active())
+      return "Thermal/Temperature field is set (the unit responses know "
+             "neither the thermal pre-stress nor its stiffness)";
     const double bytes =
       16. * ti.n_steps(ti.time_step) * plate.locally_owned_dofs().n_elements();
     if (bytes > memory_limit)

@@ -12,7 +12,9 @@
 // impulse_identity_error and max_relative_energy_drift, already relative,
 // within 1e-9 absolute), and study.csv rows equal the separate summaries;
 // the validity report's ceramic check, which needs the stress fields, is
-// `none` there and its verdict says so (field_check()).
+// `none` there and its verdict says so (field_check()).  (3) A case with
+// a temperature field is not convolved: the unit responses know neither
+// the thermal pre-stress nor its geometric stiffness.
 
 #include <deal.II/base/mpi.h>
 
@@ -152,6 +154,10 @@ namespace fgimpact_unit_tests::study_convolution
         cells.push_back(Utilities::trim(cell));
       return cells;
     }
+    /// Whether the engine refuses a case with a temperature field
+    /// (engine_rows()).
+    bool thermal_refused = false;
+
     /// The history rows of the four cases run by the engine on one plate
     /// (`extra` appended to every case's settings).
     std::vector<std::vector<std::vector<double>>>
@@ -168,6 +174,15 @@ namespace fgimpact_unit_tests::study_convolution
       ImpactStudyEngine engine(plate, timer);
       const bool ready = ImpactStudyEngine::unsupported(first, plate).empty() &&
                          engine.prepare(first);
+      // A temperature field: the time loop (the unit responses know
+      // neither the pre-stress nor its stiffness).
+      const std::string thermal_reason = ImpactStudyEngine::unsupported(
+        parameters_of(case_settings(0, "engine_0") + extra +
+                      "subsection Thermal\n set Temperature field = "
+                      "uniform\n set Temperature change = 50\nend\n"),
+        plate);
+      thermal_refused =
+        thermal_reason.find("Thermal/Temperature field") != std::string::npos;
       unsigned int current = 0;
       engine.add_row_observer(
         [&](const std::vector<double> &row) { rows[current].push_back(row); });
@@ -255,6 +270,10 @@ namespace fgimpact_unit_tests::study_convolution
     std::cout.rdbuf(old);
     const bool convolved =
       study_log.str().find("4 case(s) by convolution") != std::string::npos;
+    std::printf("a case with a temperature field goes to the time loop, "
+                "the reason naming Thermal/Temperature field: %s\n",
+                thermal_refused ? "yes" : "NO");
+    ok = ok && thermal_refused;
     std::printf("study: exit code %d, all 4 cases by convolution: %s\n",
                 code,
                 convolved ? "yes" : "NO");
