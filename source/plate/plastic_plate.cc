@@ -277,16 +277,7 @@ namespace fgimpact
   {
     copy_owned(u, u_distributed);
     plate.get_constraints().distribute(u_distributed);
-    if (!importer)
-      importer =
-        std::make_unique<Epetra_Import>(u_ghosted.trilinos_vector().Map(),
-                                        u.trilinos_vector().Map());
-    const int error =
-      u_ghosted.trilinos_vector().Import(u_distributed.trilinos_vector(),
-                                         *importer,
-                                         Insert);
-    AssertThrow(error == 0, ExcTrilinosError(error));
-    return u_ghosted.trilinos_vector()[0];
+    return importer.import(u_distributed, u_ghosted);
   }
 
 

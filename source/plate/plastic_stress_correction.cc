@@ -108,15 +108,7 @@ namespace fgimpact
   {
     if (!plasticity)
       return;
-    if (!importer)
-      importer =
-        std::make_unique<Epetra_Import>(u_ghosted.trilinos_vector().Map(),
-                                        u.trilinos_vector().Map());
-    const int error = u_ghosted.trilinos_vector().Import(u.trilinos_vector(),
-                                                         *importer,
-                                                         Insert);
-    AssertThrow(error == 0, ExcTrilinosError(error));
-    const double *const values = u_ghosted.trilinos_vector()[0];
+    const double *const values = importer.import(u, u_ghosted);
     for (const auto &record : records)
       {
         SymmetricTensor<2, 3> eps;

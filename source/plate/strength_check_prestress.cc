@@ -8,15 +8,7 @@ namespace fgimpact
   const double *
   StrengthCheck::gather(const TrilinosWrappers::MPI::Vector &u)
   {
-    if (!importer)
-      importer =
-        std::make_unique<Epetra_Import>(u_ghosted.trilinos_vector().Map(),
-                                        u.trilinos_vector().Map());
-    const int error = u_ghosted.trilinos_vector().Import(u.trilinos_vector(),
-                                                         *importer,
-                                                         Insert);
-    AssertThrow(error == 0, ExcTrilinosError(error));
-    return u_ghosted.trilinos_vector()[0];
+    return importer.import(u, u_ghosted);
   }
 
 

@@ -11,10 +11,10 @@
 #include <fgimpact/base/checkpoint.h>
 #include <fgimpact/material/plasticity.h>
 #include <fgimpact/material/strength.h>
+#include <fgimpact/plate/ghost_import.h>
 #include <fgimpact/plate/initial_stress.h>
 #include <fgimpact/plate/plate_model.h>
 
-#include <Epetra_Import.h>
 #include <array>
 #include <memory>
 #include <vector>
@@ -350,8 +350,8 @@ namespace fgimpact
     /// initial state over the ranks, and where (m).
     std::pair<double, Point<3>> prestress_yield = {0., Point<3>()};
 
-    TrilinosWrappers::MPI::Vector  u_distributed, u_ghosted;
-    std::unique_ptr<Epetra_Import> importer;
+    TrilinosWrappers::MPI::Vector u_distributed, u_ghosted;
+    GhostImporter                 importer;
     /// f_p to solve with, the last update's unrelaxed f_p(u), the last
     /// residual (for Aitken), the committed f_p.
     TrilinosWrappers::MPI::Vector force, new_force, residual, last_residual,

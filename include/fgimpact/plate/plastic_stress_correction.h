@@ -8,10 +8,10 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <fgimpact/plate/ghost_import.h>
 #include <fgimpact/plate/plastic_plate.h>
 #include <fgimpact/plate/plate_model.h>
 
-#include <Epetra_Import.h>
 #include <memory>
 #include <utility>
 #include <vector>
@@ -84,12 +84,12 @@ namespace fgimpact
       SymmetricTensor<2, 3>                    eps0;        // set_prestress()
     };
 
-    const PlateModel                      &plate;
-    const PlasticPlate                    *plasticity = nullptr;
-    std::vector<Record>                    records;
-    bool                                   prestressed = false;
-    mutable TrilinosWrappers::MPI::Vector  u_ghosted;
-    mutable std::unique_ptr<Epetra_Import> importer;
+    const PlateModel                     &plate;
+    const PlasticPlate                   *plasticity = nullptr;
+    std::vector<Record>                   records;
+    bool                                  prestressed = false;
+    mutable TrilinosWrappers::MPI::Vector u_ghosted;
+    mutable GhostImporter                 importer;
   };
 } // namespace fgimpact
 

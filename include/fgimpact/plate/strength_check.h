@@ -12,10 +12,10 @@
 
 #include <fgimpact/material/strength.h>
 #include <fgimpact/material/thermal.h>
+#include <fgimpact/plate/ghost_import.h>
 #include <fgimpact/plate/plastic_plate.h>
 #include <fgimpact/plate/plate_model.h>
 
-#include <Epetra_Import.h>
 #include <array>
 #include <memory>
 #include <vector>
@@ -202,8 +202,8 @@ namespace fgimpact
     TrilinosWrappers::MPI::Vector u_ghosted;
     /// The owned-to-ghosted import, built once (deal.II's assignment
     /// builds one per call, which cost more than the check itself).
-    std::unique_ptr<Epetra_Import> importer;
-    StrengthPeak                   metal_local, ceramic_local;
+    GhostImporter importer;
+    StrengthPeak  metal_local, ceramic_local;
     /// The points checked on this rank, per part.
     unsigned int n_metal = 0, n_ceramic = 0;
   };
