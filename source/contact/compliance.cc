@@ -14,7 +14,7 @@ namespace fgimpact
                          const unsigned int                          first,
                          const unsigned int                          last,
                          FullMatrix<double>                         &C,
-                         std::vector<TrilinosWrappers::MPI::Vector> *responses)
+                         std::vector<StoredResponse>                *responses)
     {
       const unsigned int m     = dofs.size();
       const std::size_t  n     = plate.locally_owned_dofs().n_elements();
@@ -38,11 +38,7 @@ namespace fgimpact
               for (unsigned int i = 0; i < m; ++i)
                 C(i, j0 + c) = column[dofs[i]];
               if (responses != nullptr)
-                {
-                  auto &r = (*responses)[j0 + c];
-                  plate.initialize_vector(r);
-                  std::copy(column, column + n, r.trilinos_vector()[0]);
-                }
+                (*responses)[j0 + c].assign(column, column + n);
             }
         }
     }
@@ -63,14 +59,13 @@ namespace fgimpact
 
 
   void
-  compute_compliance_columns(
-    EffectiveMatrixSolver                      &solver,
-    const PlateModel                           &plate,
-    const std::vector<types::global_dof_index> &dofs,
-    const unsigned int                          first,
-    const unsigned int                          last,
-    FullMatrix<double>                         &C,
-    std::vector<TrilinosWrappers::MPI::Vector> *responses)
+  compute_compliance_columns(EffectiveMatrixSolver                      &solver,
+                             const PlateModel                           &plate,
+                             const std::vector<types::global_dof_index> &dofs,
+                             const unsigned int                          first,
+                             const unsigned int                          last,
+                             FullMatrix<double>                         &C,
+                             std::vector<StoredResponse> *responses)
   {
     const unsigned int m = dofs.size();
     AssertDimension(C.m(), m);
@@ -92,7 +87,7 @@ namespace fgimpact
         for (unsigned int i = 0; i < m; ++i)
           C(i, j) = column[i];
         if (responses != nullptr)
-          (*responses)[j].swap(c);
+          (*responses)[j].assign(c.begin(), c.end());
       }
   }
 
@@ -116,43 +111,74 @@ namespace fgimpact
 
 
 
-  void
-  add_weighted_responses(
-    TrilinosWrappers::MPI::Vector                            &x,
-    const std::vector<double>                                &w,
-    const std::vector<const TrilinosWrappers::MPI::Vector *> &y)
+  namespace
   {
-    constexpr std::size_t block = 32768; // rows: 256 KB of x
-    const std::size_t     n     = x.locally_owned_size();
-    const std::size_t     m     = w.size();
-    double *const         to    = x.begin();
-    for (std::size_t i0 = 0; i0 < n; i0 += block)
+    /// add_weighted_responses() on responses of one precision T.
+    template <typename T>
+    void
+    add_weighted(double *const                 to,
+                 const std::size_t             n,
+                 const std::vector<double>    &w,
+                 const std::vector<const T *> &y)
+    {
+      constexpr std::size_t block = 32768; // rows: 256 KB of x
+      const std::size_t     m     = w.size();
+      for (std::size_t i0 = 0; i0 < n; i0 += block)
+        {
+          const std::size_t i1 = std::min(n, i0 + block);
+          std::size_t       k  = 0;
+          for (; k + 4 <= m; k += 4)
+            {
+              const double w0 = w[k], w1 = w[k + 1], w2 = w[k + 2],
+                           w3 = w[k + 3];
+              const T *y0 = y[k], *y1 = y[k + 1], *y2 = y[k + 2],
+                      *y3 = y[k + 3];
+              for (std::size_t i = i0; i < i1; ++i)
+                {
+                  double sum = to[i];
+                  sum        = sum + w0 * y0[i];
+                  sum        = sum + w1 * y1[i];
+                  sum        = sum + w2 * y2[i];
+                  sum        = sum + w3 * y3[i];
+                  to[i]      = sum;
+                }
+            }
+          for (; k < m; ++k)
+            {
+              const double weight = w[k];
+              const T     *from   = y[k];
+              for (std::size_t i = i0; i < i1; ++i)
+                to[i] = to[i] + weight * from[i];
+            }
+        }
+    }
+  } // namespace
+
+
+
+  void
+  add_weighted_responses(TrilinosWrappers::MPI::Vector             &x,
+                         const std::vector<double>                 &w,
+                         const std::vector<const StoredResponse *> &y)
+  {
+    const std::size_t n = x.locally_owned_size();
+    // One stepper stores every response alike.
+    std::vector<const float *>  narrow;
+    std::vector<const double *> wide;
+    for (const StoredResponse *r : y)
       {
-        const std::size_t i1 = std::min(n, i0 + block);
-        std::size_t       k  = 0;
-        for (; k + 4 <= m; k += 4)
-          {
-            const double w0 = w[k], w1 = w[k + 1], w2 = w[k + 2], w3 = w[k + 3];
-            const double *y0 = y[k]->begin(), *y1 = y[k + 1]->begin(),
-                         *y2 = y[k + 2]->begin(), *y3 = y[k + 3]->begin();
-            for (std::size_t i = i0; i < i1; ++i)
-              {
-                double sum = to[i];
-                sum        = sum + w0 * y0[i];
-                sum        = sum + w1 * y1[i];
-                sum        = sum + w2 * y2[i];
-                sum        = sum + w3 * y3[i];
-                to[i]      = sum;
-              }
-          }
-        for (; k < m; ++k)
-          {
-            const double  weight = w[k];
-            const double *from   = y[k]->begin();
-            for (std::size_t i = i0; i < i1; ++i)
-              to[i] = to[i] + weight * from[i];
-          }
+        AssertDimension(r->size(), n);
+        if (r->single())
+          narrow.push_back(r->single_data());
+        else
+          wide.push_back(r->double_data());
       }
+    Assert(narrow.empty() || wide.empty(),
+           ExcMessage("responses of both precisions"));
+    if (narrow.empty())
+      add_weighted(x.begin(), n, w, wide);
+    else
+      add_weighted(x.begin(), n, w, narrow);
   }
 
 

@@ -99,8 +99,8 @@ namespace fgimpact
     /// top nodes within the candidate radius (ContactModelParameters: 1.5 times
     /// the expected contact radius plus two elements), each a column of the
     /// dense compliance (an elastic ball adds its own); the implicit stepper
-    /// computes the columns and stores the unit responses, a vector of
-    /// n_dofs each, of the candidates the contact reaches, counted as those
+    /// computes the columns and stores the unit responses, n_dofs floats
+    /// each, of the candidates the contact reaches, counted as those
     /// within 2/3 of that radius (ContactModel::n_likely_active(); level 7
     /// of the default scene: 386 counted, 384 computed).
     /// n_candidates: set to the whole plate's count.
@@ -127,7 +127,9 @@ namespace fgimpact
       const double part   = share * n_candidates + 1.;
       const double stored = part / (factor * factor) + 1.;
       const double balls  = parameters.impactor.elastic ? 2. : 1.;
-      return 8. * (balls * part * part + stored * n_dofs);
+      // The compliance in double, the stored responses in single
+      // precision (StoredResponse).
+      return 8. * balls * part * part + 4. * stored * n_dofs;
     }
 
     /// Cells: the brick grid's `grid_cells` plus, per contact refinement

@@ -138,9 +138,9 @@ namespace fgimpact
       {
         // Back-substitute: the plate at t_{n+1}; most candidates are
         // inactive (a zero force adds nothing: skipped).
-        std::vector<unsigned int>                          pressed;
-        std::vector<double>                                weights;
-        std::vector<const TrilinosWrappers::MPI::Vector *> responses;
+        std::vector<unsigned int>           pressed;
+        std::vector<double>                 weights;
+        std::vector<const StoredResponse *> responses;
         for (unsigned int j = 0; j < dofs.size(); ++j)
           if (contact.forces[j] != 0.)
             {
@@ -221,7 +221,7 @@ namespace fgimpact
             // As a coupled step with F_1 = 1 N and F_j = 0 after.
             solve_contact_free(step, step * newmark.time_step(), no_force);
             if (step == 1)
-              u_new.add(-1., response(0));
+              add_weighted_responses(u_new, {-1.}, {&response(0)});
             mass.vmult(Mu_new, u_new);
             newmark.update(u_new, u, v, a);
             newmark.update(Mu_new, Mu, Mv, Ma);
@@ -292,8 +292,10 @@ namespace fgimpact
       compute_compliance()
       {
         contact_compliance.reinit(dofs.size(), dofs.size());
-        c.clear();
-        c.resize(dofs.size());
+        // A resolved contact (its columns on demand) stores hundreds of
+        // responses: single precision (StoredResponse).
+        c.assign(dofs.size(),
+                 StoredResponse(contact_model.compliance_on_demand()));
         n_columns = 0;
         if (!contact_model.compliance_on_demand())
           require_compliance(dofs.size());
@@ -301,11 +303,15 @@ namespace fgimpact
 
       /// c_j, computed now if it was not stored (one solve, on every rank:
       /// the forces that ask for it are the same everywhere).
-      const TrilinosWrappers::MPI::Vector &
+      const StoredResponse &
       response(const unsigned int j)
       {
-        if (c[j].size() == 0)
-          fgimpact::compute_response(solver, plate, dofs[j], c[j]);
+        if (c[j].empty())
+          {
+            TrilinosWrappers::MPI::Vector column;
+            fgimpact::compute_response(solver, plate, dofs[j], column);
+            c[j].assign(column.begin(), column.end());
+          }
         return c[j];
       }
 
@@ -326,9 +332,15 @@ namespace fgimpact
             const double dt = newmark.time_step();
             u_new           = u;
             u_new.add(dt, v, 0.5 * dt * dt, a);
+            std::vector<double>                 weights;
+            std::vector<const StoredResponse *> responses;
             for (unsigned int j = 0; j < contact.forces.size(); ++j)
               if (contact.forces[j] != 0.)
-                u_new.add(contact.forces[j], response(j));
+                {
+                  weights.push_back(contact.forces[j]);
+                  responses.push_back(&response(j));
+                }
+            add_weighted_responses(u_new, weights, responses);
           }
         try
           {
@@ -395,14 +407,14 @@ namespace fgimpact
       ModifiedMass            mass;
       // Declared before the solver, which refers to it: members are
       // destroyed in reverse order (Amesos_Mumps crashed otherwise).
-      TrilinosWrappers::SparseMatrix             effective;
-      EffectiveMatrixSolver                      solver;
-      const PlateModel                          &plate;
-      const ContactModel                        &contact_model;
-      std::vector<types::global_dof_index>       dofs, massless;
-      TrilinosWrappers::MPI::Vector              Mu, Mv, Ma, u_new, Mu_new, rhs;
-      std::vector<TrilinosWrappers::MPI::Vector> c;
-      FullMatrix<double>                         contact_compliance;
+      TrilinosWrappers::SparseMatrix       effective;
+      EffectiveMatrixSolver                solver;
+      const PlateModel                    &plate;
+      const ContactModel                  &contact_model;
+      std::vector<types::global_dof_index> dofs, massless;
+      TrilinosWrappers::MPI::Vector        Mu, Mv, Ma, u_new, Mu_new, rhs;
+      std::vector<StoredResponse>          c;
+      FullMatrix<double>                   contact_compliance;
       /// The compliance's first n_columns columns (and their responses)
       /// are computed.
       unsigned int   n_columns = 0;
