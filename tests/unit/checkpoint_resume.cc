@@ -332,18 +332,10 @@ namespace fgimpact_unit_tests::checkpoint_resume
     // thermal step (temperature-dependent constituents, immovable sides,
     // the geometric stiffness in K, the total stress in the validity
     // scan), which must give the same state.
-    ok = kill_and_resume(
-           "thermal",
-           hertz +
-             "subsection Material\n set Metal material = SUS304\n set "
-             "Ceramic material = Si3N4\nend\n"
-             "subsection Boundary conditions\n set In-plane edges = "
-             "immovable\nend\n"
-             "subsection Thermal\n set Temperature field = conduction\n "
-             "set Bottom temperature = 600\n set Geometric stiffness = "
-             "true\nend\n",
-           1,
-           random.kill_point(100)) &&
+    ok = kill_and_resume("thermal",
+                         hertz + thermal_environment(),
+                         1,
+                         random.kill_point(100)) &&
          ok;
 
     // Refusals, on the killed Hertz node run's directory.

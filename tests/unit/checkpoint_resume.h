@@ -108,6 +108,23 @@ namespace checkpoint_test
   }
 
   /// Rows of history.csv on disk (without the header).
+  /// The thermal environment both resume tests run (issue 42):
+  /// temperature-dependent constituents, immovable sides, a conduction
+  /// field 300-600 K and the geometric stiffness in K.
+  inline std::string
+  thermal_environment()
+  {
+    return "subsection Material\n set Metal material = SUS304\n set "
+           "Ceramic material = Si3N4\nend\n"
+           "subsection Boundary conditions\n set In-plane edges = "
+           "immovable\nend\n"
+           "subsection Thermal\n set Temperature field = conduction\n "
+           "set Bottom temperature = 600\n set Geometric stiffness = "
+           "true\nend\n";
+  }
+
+
+
   inline unsigned int
   history_rows(const std::string &directory)
   {

@@ -75,14 +75,7 @@ namespace fgimpact_unit_tests::checkpoint_resume_mpi
     // repeated on resume, and the total stress is in every file compared.
     ok = kill_and_resume(
            "thermal_mpi",
-           small_plate +
-             "subsection Material\n set Metal material = SUS304\n set "
-             "Ceramic material = Si3N4\nend\n"
-             "subsection Boundary conditions\n set In-plane edges = "
-             "immovable\nend\n"
-             "subsection Thermal\n set Temperature field = conduction\n "
-             "set Bottom temperature = 600\n set Geometric stiffness = "
-             "true\nend\n"
+           small_plate + thermal_environment() +
              "subsection Time integration\n set End time = 150e-6\nend\n"
              "subsection Linear solver\n set Type = klu\nend\n"
              "subsection Output\n set Checkpoint interval = 15\nend\n",

@@ -32,11 +32,12 @@ namespace fgimpact
 
   /**
    * A stored unit response c_j: its locally owned entries (m/N, in the
-   * order of the plate's distributed vectors), in double or, where many
-   * are stored, in single precision.  It only corrects the plate's
-   * displacement, u -= sum lambda_j c_j; the contact solve uses the
-   * compliance C, kept in double.  At level 7 of the default scene a
-   * resolved contact's 384 stored responses took 291 MB in double, 24 %
+   * order of the plate's distributed vectors), in double or, for a
+   * contact whose columns are computed on demand (the resolved one, with
+   * hundreds of candidates; ImplicitNewmarkStepper), in single precision.  It
+   * only corrects the plate's displacement, u -= sum lambda_j c_j; the contact
+   * solve uses the compliance C, kept in double.  At level 7 of the default
+   * scene a resolved contact's 384 stored responses took 291 MB in double, 24 %
    * over the plate's own peak; a float's relative round-off, 6e-8, is
    * far below the contact's Newton tolerance (1e-3 of the indentation)
    * and the discretization errors.  The point contacts (one or two
