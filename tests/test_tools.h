@@ -213,7 +213,8 @@ namespace fgimpact_tests
              const MPI_Comm               communicator    = MPI_COMM_WORLD,
              const double                 poissons_ratio  = 0.3,
              const bool                   mean_dilatation = false,
-             const fgimpact::SideSupport  bottom = fgimpact::SideSupport::free)
+             const fgimpact::SideSupport  bottom = fgimpact::SideSupport::free,
+             const bool                   incompatible_modes = false)
   {
     fgimpact::PlateGeometry::Parameters gp;
     gp.thickness      = thickness;
@@ -226,8 +227,9 @@ namespace fgimpact_tests
     mp.property_mode   = mode;
     mp.poissons_ratio  = poissons_ratio;
     fgimpact::PlateModel::Parameters fp;
-    fp.degree          = degree;
-    fp.mean_dilatation = mean_dilatation;
+    fp.degree             = degree;
+    fp.mean_dilatation    = mean_dilatation;
+    fp.incompatible_modes = incompatible_modes;
 
     PlateCase c;
     c.geometry = std::make_unique<fgimpact::PlateGeometry>(gp);

@@ -96,6 +96,8 @@ namespace fgimpact
     const std::vector<SymmetricTensor<2, 3>> eps0 =
       with_stress && initial ? initial_strain(cell, inputs.evaluation_points) :
                                std::vector<SymmetricTensor<2, 3>>();
+    const std::vector<SymmetricTensor<2, 3>> eps_modes =
+      mode_strains(cell, inputs.evaluation_points);
     for (unsigned int p = 0; p < inputs.solution_gradients.size(); ++p)
       {
         const auto [E, nu, rho] =
@@ -110,6 +112,7 @@ namespace fgimpact
                                    inputs.solution_gradients[p][b][a]);
             if (bbar)
               eps = PlateModel::with_dilatation(eps, theta);
+            eps += eps_modes[p];
             if (initial)
               eps += eps0[p]; // the total stress
             SymmetricTensor<2, 3> sigma = hooke.stress(E, nu, eps);
@@ -139,6 +142,24 @@ namespace fgimpact
             computed_quantities[p][k++] = rho;
           }
       }
+  }
+
+
+
+  std::vector<SymmetricTensor<2, 3>>
+  StressPostprocessor::mode_strains(
+    const DoFHandler<3>::active_cell_iterator &cell,
+    const std::vector<Point<3>>               &points) const
+  {
+    std::vector<SymmetricTensor<2, 3>> eps(points.size());
+    if (with_stress && plate.uses_incompatible_modes())
+      {
+        std::vector<Point<3>> unit_points;
+        for (const auto &p : points)
+          unit_points.push_back(mapping.transform_real_to_unit_cell(cell, p));
+        plate.add_mode_strains(cell, unit_points, *displacement, eps);
+      }
+    return eps;
   }
 
 

@@ -9,9 +9,8 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <fgimpact/base/parameter_table.h>
-#include <fgimpact/base/selection.h>
 #include <fgimpact/plate/cell_matrices.h>
+#include <fgimpact/plate/incompatible_modes.h>
 #include <fgimpact/plate/plate_model.h>
 
 #include <algorithm>
@@ -20,72 +19,6 @@
 
 namespace fgimpact
 {
-  namespace
-  {
-    /// Finite element/Volumetric strain: true for the cell's mean.
-    const SelectionTable<bool> volumetric_strain_names = {{"pointwise", false},
-                                                          {"cell mean", true}};
-  } // namespace
-
-
-
-  namespace
-  {
-    /// The entries of PlateModel::Parameters that set a member as they stand.
-    const ParameterTable<PlateModel::Parameters> &
-    finite_element_table()
-    {
-      using P                              = PlateModel::Parameters;
-      static const ParameterTable<P> table = [] {
-        ParameterTable<P> t;
-        t.add("Degree",
-              &P::degree,
-              Patterns::Integer(1, 2),
-              "Polynomial degree p of the FE_Q(p)^3 displacement "
-              "element: 1 = the paper's 8-node graded brick, 2 = "
-              "27-node brick.");
-        t.add(
-          "Volumetric strain",
-          &P::mean_dilatation,
-          volumetric_strain_names,
-          "The element's volumetric strain div u, in the stiffness and in every "
-          "strain and stress written: pointwise (the paper's fully integrated "
-          "brick), or the cell's mean (B-bar: Simo and Hughes' mean "
-          "dilatation, Abaqus' C3D8 with selectively reduced integration), "
-          "which does not lock when the material is nearly incompressible "
-          "(Poisson's ratio near 1/2, or J2 plastic flow: a pressure that "
-          "jumps sign between nodes). With Degree = 2 one constant per cell "
-          "is a poor pressure (Q2-P0): use it with Degree = 1.");
-        return t;
-      }();
-      return table;
-    }
-  } // namespace
-
-
-
-  void
-  PlateModel::Parameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Finite element");
-    {
-      finite_element_table().declare(prm);
-    }
-    prm.leave_subsection();
-  }
-
-
-
-  void
-  PlateModel::Parameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Finite element");
-    finite_element_table().parse(prm, *this);
-    prm.leave_subsection();
-  }
-
-
-
   PlateModel::PlateModel(const Parameters                 &parameters,
                          const PlateGeometry              &geometry,
                          const FunctionallyGradedMaterial &material,
@@ -356,6 +289,14 @@ namespace fgimpact
           add_elastic_cell_matrices(fe_values, E, nu, rho, cell_K, cell_M);
           if (parameters.mean_dilatation)
             replace_dilatation(fe_values, E, nu, cell, cell_K);
+          if (parameters.incompatible_modes)
+            IncompatibleModes::condense(
+              fe_values,
+              E,
+              nu,
+              IncompatibleModes::centre_inverse_jacobian(cell),
+              cell_K,
+              nullptr);
           cell->get_dof_indices(local_dofs);
           constraints.distribute_local_to_global(cell_K, local_dofs, stiffness);
           constraints.distribute_local_to_global(cell_M, local_dofs, mass);

@@ -254,6 +254,9 @@ namespace fgimpact
           const NodeValues  &node) {
         cell->get_dof_indices(dofs);
         const auto mean_div = plate.mean_divergence(cell);
+        const auto modes =
+          plate.mode_shape_strains(cell,
+                                   fe_values.get_quadrature().get_points());
         for (unsigned int q = 0; q < node.factors.size(); ++q)
           if (!node.factors[q].empty())
             {
@@ -266,7 +269,8 @@ namespace fgimpact
                 add_stress_weights(hooke.stress(node.E[q],
                                                 node.nu[q],
                                                 PlateModel::shape_strain(
-                                                  fe_values, i, q, mean_div)),
+                                                  fe_values, i, q, mean_div) +
+                                                  modes[q][i]),
                                    node.factors[q],
                                    node.planes[q],
                                    dofs[i],

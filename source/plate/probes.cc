@@ -121,20 +121,22 @@ namespace fgimpact
         fe_values.reinit(cell);
         cell->get_dof_indices(local_dofs);
         plastic_correction.add_point(cell, unit_point, {{0u, w}});
-
         std::vector<double>  E, nu, rho;
         PropertyInterpolator properties(fe.base_element(0),
                                         quadrature.get_points(),
                                         plate.get_material());
         properties.values(cell, E, nu, rho);
         const auto mean_div = plate.mean_divergence(cell);
-
+        const auto modes    = plate.mode_shape_strains(cell, {unit_point});
         for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
           {
-            // The stress of this shape function: the weights of the 6
-            // independent components.
+            // The stress of this shape function (with its incompatible
+            // modes' strain): the weights of the 6 independent components.
             const SymmetricTensor<2, 3> sigma = HookeLaw::stress(
-              E[0], nu[0], PlateModel::shape_strain(fe_values, i, 0, mean_div));
+              E[0],
+              nu[0],
+              PlateModel::shape_strain(fe_values, i, 0, mean_div) +
+                modes[0][i]);
             for (unsigned int s = 0; s < 6; ++s)
               {
                 const double value = sigma[voigt[s][0]][voigt[s][1]];

@@ -71,6 +71,8 @@ namespace fgimpact
           const auto [it, added] = tables.emplace(extent, gradients.size());
           if (added)
             add_table(cell, fe_values, extent);
+          if (plate.uses_incompatible_modes())
+            add_mode_table(cell, extent);
           cell->get_dof_indices(dofs);
           for (unsigned int i = 0; i < n_dofs; ++i)
             {
@@ -194,7 +196,9 @@ namespace fgimpact
         // A cell with plastic strain is not bounded by its elastic strain.
         const bool plastic_cell =
           plasticity && plasticity->holds_plastic_strain(active_index[c]);
-        if (!plastic_cell && can_skip(c, cell_u))
+        std::array<double, 9> alpha{};
+        const bool            modes = mode_amplitudes(c, cell_u, alpha);
+        if (!plastic_cell && can_skip(c, cell_u, modes ? &alpha : nullptr))
           continue;
         const auto &m     = mean_divergences[table[c]];
         double      theta = 0; // B-bar: the cell's mean dilatation
@@ -208,6 +212,8 @@ namespace fgimpact
             double G[3][3];
             displacement_gradient(
               c, q, cell_u, m.empty() ? nullptr : &theta, G);
+            if (modes)
+              add_mode_gradient(c, q, alpha, G);
             double yield_stress = 0.;
             if (plasticity && metal[k])
               yield_stress = plasticity->yield_stress(points[k][2], 0.);
@@ -293,6 +299,7 @@ namespace fgimpact
     void
     q1_centre_gradient(const std::vector<double>   &cell_u,
                        const std::array<double, 3> &h,
+                       const std::array<double, 9> *alpha,
                        double                       G[3][3],
                        double                      &variation2)
     {
@@ -318,7 +325,10 @@ namespace fgimpact
           for (unsigned int d = 0; d < 3; ++d)
             {
               G[a][d] = 2. / h[d] * m[d];
-              variation2 += std::pow(2. / h[d] * var[d], 2);
+              // Incompatible mode (a, d): gradient -4 xi_d alpha / h_d.
+              const double modes =
+                alpha ? 4. * std::abs((*alpha)[3 * a + d]) : 0.;
+              variation2 += std::pow((2. * var[d] + modes) / h[d], 2);
             }
         }
     }
@@ -327,8 +337,9 @@ namespace fgimpact
 
 
   bool
-  StrengthCheck::can_skip(const unsigned int         c,
-                          const std::vector<double> &cell_u) const
+  StrengthCheck::can_skip(const unsigned int           c,
+                          const std::vector<double>   &cell_u,
+                          const std::array<double, 9> *alpha) const
   {
     const CellFactors &f = factors[c];
     if (n_scalar != 8)
@@ -340,7 +351,7 @@ namespace fgimpact
                bound * f.ceramic_norm <= ceramic_local.ratio;
       }
     double G[3][3], variation2 = 0;
-    q1_centre_gradient(cell_u, extents[table[c]], G, variation2);
+    q1_centre_gradient(cell_u, extents[table[c]], alpha, G, variation2);
     const double tr   = G[0][0] + G[1][1] + G[2][2];
     double       dev2 = 0;
     for (unsigned int a = 0; a < 3; ++a)

@@ -224,7 +224,6 @@ namespace fgimpact
     std::vector<SymmetricTensor<2, 3>> eps(points.size()), eps0(points.size());
     std::vector<double>                E, nu, rho;
     std::vector<types::global_dof_index> dofs(scalar_fe.n_dofs_per_cell());
-
     for (auto &v : sums)
       v = 0.;
     if (plasticity)
@@ -236,6 +235,7 @@ namespace fgimpact
           fe_values[displacement].get_function_symmetric_gradients(u_ghosted,
                                                                    eps);
           plate.apply_mean_dilatation(cell, u_ghosted, eps); // B-bar
+          plate.add_mode_strains(cell, points.get_points(), u_ghosted, eps);
           if (initial) // the total stress; the strain stays the analysis's
             initial->strain(fe_values, cell, eps0);
           properties.values(cell, E, nu, rho);

@@ -57,12 +57,16 @@ namespace fgimpact
     /// z_S (the supports' conforming field, `supported` its nodal values)
     /// and its strain at quadrature point q; B-bar (mean_div not empty:
     /// the shape functions' cell means of div) with the cell's mean
-    /// dilatation, as the stiffness a(z_S, u) has it.
+    /// dilatation, and the incompatible modes' strain (modes: each DoF's
+    /// at q, zero without), as the stiffness a(z_S, u) has it: the
+    /// condensed a(z, u) is a(eps(z) + eps_modes(z), eps(u)), since the
+    /// modes of u are orthogonal to every mode in the energy.
     std::pair<double, SymmetricTensor<2, 3>>
-    supported_field(const FEValues<3>             &fe_values,
-                    const unsigned int             q,
-                    const std::vector<double>     &supported,
-                    const ArrayView<const double> &mean_div)
+    supported_field(const FEValues<3>                        &fe_values,
+                    const unsigned int                        q,
+                    const std::vector<double>                &supported,
+                    const ArrayView<const double>            &mean_div,
+                    const std::vector<SymmetricTensor<2, 3>> &modes)
     {
       double                z_value = 0;
       SymmetricTensor<2, 3> eps_s;
@@ -81,6 +85,8 @@ namespace fgimpact
             theta_s += supported[i] * mean_div[i];
           eps_s = PlateModel::with_dilatation(eps_s, theta_s);
         }
+      for (unsigned int i = 0; i < supported.size(); ++i)
+        eps_s += supported[i] * modes[i];
       return {z_value, eps_s};
     }
 
@@ -147,10 +153,12 @@ namespace fgimpact
           // B-bar: the strains of z_S and of phi_j take the cell's mean
           // dilatation, as the stiffness a(z_S, u) does.
           const auto mean_div = plate.mean_divergence(cell);
+          const auto modes =
+            plate.mode_shape_strains(cell, quadrature.get_points());
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               const auto [z_value, eps_s] =
-                supported_field(fe_values, q, supported, mean_div);
+                supported_field(fe_values, q, supported, mean_div, modes[q]);
               const SymmetricTensor<2, 3> sigma_s =
                 hooke.stress(E[q], nu[q], eps_s);
               const double JxW = fe_values.JxW(q);

@@ -92,6 +92,34 @@ namespace fgimpact
 
 
   void
+  check_incompatible_modes(const Parameters &p)
+  {
+    // The modes are condensed out of the elastic stiffness of a Q1 brick;
+    // the plastic return, the thermal load and the pre-stress paths take
+    // the brick's strain without them, so those are refused rather than
+    // written with a strain the stiffness does not have.
+    if (!p.finite_element.incompatible_modes)
+      return;
+    const std::string name = "Finite element/Incompatible modes = true";
+    AssertThrow(p.finite_element.degree == 1,
+                ExcMessage(name + " is for the 8-node brick: set Degree = 1 "
+                                  "(Degree = 2 does not lock in bending)."));
+    AssertThrow(!p.finite_element.mean_dilatation,
+                ExcMessage(name + " with Volumetric strain = cell mean is "
+                                  "not offered; use one of the two."));
+    AssertThrow(p.strength.plasticity == GradedStrength::Plasticity::none,
+                ExcMessage(name + " is for elastic plates: set "
+                                  "Material/Plasticity = none, or the modes "
+                                  "false."));
+    AssertThrow(!p.thermal.active(),
+                ExcMessage(name + " with a Thermal/Temperature field is not "
+                                  "offered (its thermal strain has no share "
+                                  "in the modes); set the modes false."));
+  }
+
+
+
+  void
   check_named_materials(const Parameters &p)
   {
     // Touloukian's laws are cubic fits: SUS304's E turns negative near

@@ -436,6 +436,7 @@ namespace fgimpact
     check_time_integration(*this);
     check_plasticity(*this);
     check_resolved_contact_degree(*this);
+    check_incompatible_modes(*this);
     check_named_materials(*this);
     check_paths(*this);
     AssertThrow(2. * impactor.radius <= std::min(a, b),

@@ -364,6 +364,24 @@ namespace fgimpact_unit_tests::bad_input
          "subsection Contact\n set Model = resolved sphere\nend\n",
          1,
          "Finite element/Degree"},
+        // Issue 38: the modes are condensed from the elastic Q1 stiffness.
+        {"incompatible modes on the 27-node brick",
+         "subsection Finite element\n set Degree = 2\n"
+         " set Incompatible modes = true\nend\n",
+         1,
+         "Finite element/Incompatible modes"},
+        {"incompatible modes on a plastic plate",
+         "subsection Finite element\n set Incompatible modes = true\nend\n"
+         "subsection Material\n set Plasticity = J2\nend\n"
+         "subsection Contact\n set Model = resolved sphere\nend\n",
+         1,
+         "Finite element/Incompatible modes"},
+        {"incompatible modes with a temperature field",
+         "subsection Finite element\n set Incompatible modes = true\nend\n"
+         "subsection Thermal\n set Temperature field = uniform\n"
+         " set Temperature change = 100\nend\n",
+         1,
+         "Finite element/Incompatible modes"},
         // Issue 42: SUS304's cubic law for E turns negative near 1490 K.
         {"a named constituent beyond its temperature law",
          "subsection Material\n set Metal material = SUS304\nend\n"

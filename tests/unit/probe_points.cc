@@ -289,9 +289,11 @@ namespace fgimpact_unit_tests::probe_points
     /// thickness (its divergence is not 0, as on the side faces alone) and
     /// kappa of the graded plate within a cell, so that every term of the
     /// weights counts (without (m_j - div phi_j) tr sigma / 3 the balance
-    /// is off by far more than the tolerance).
+    /// is off by far more than the tolerance).  modes: the brick with
+    /// incompatible modes (bottom clamped as well), whose reaction weights
+    /// take the modes' strain of z_S.
     bool
-    momentum_balance(const bool bbar)
+    momentum_balance(const bool bbar, const bool modes = false)
     {
       auto                    c     = fgimpact_tests::make_plate(8,
                                           4,
@@ -303,8 +305,9 @@ namespace fgimpact_unit_tests::probe_points
                                           MPI_COMM_WORLD,
                                           0.3,
                                           bbar,
-                                          bbar ? SideSupport::clamped :
-                                                                        SideSupport::free);
+                                          bbar || modes ? SideSupport::clamped :
+                                                                                 SideSupport::free,
+                                          modes);
       const auto             &plate = *c.plate;
       Impactor::Parameters    ip;
       const Impactor          impactor(ip);
@@ -354,7 +357,9 @@ namespace fgimpact_unit_tests::probe_points
         "4. implicit impact%s, 60 steps: peak contact force %.1f N, "
         "max |support reaction| %.1f N, max |int rho a_z dV| %.1f N;\n"
         "   max |R - (F + int rho a_z dV)| / peak F < 1e-10: %s\n",
-        bbar ? " (B-bar, bottom clamped)" : "",
+        bbar  ? " (B-bar, bottom clamped)" :
+        modes ? " (incompatible modes, bottom clamped)" :
+                "",
         peak_force,
         max_reaction,
         max_inertia,
@@ -376,6 +381,7 @@ namespace fgimpact_unit_tests::probe_points
     ok &= converge_to_exact();
     ok &= momentum_balance(false);
     ok &= momentum_balance(true);
+    ok &= momentum_balance(false, true);
     std::printf("%s\n", ok ? "OK" : "FAILED");
     return ok ? 0 : 1;
   }

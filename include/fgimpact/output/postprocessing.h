@@ -72,7 +72,8 @@ namespace fgimpact
     }
 
     /// The ghosted displacement DataOut evaluates, whose cell means give
-    /// the dilatation of a plate with B-bar (PlateModel::mean_dilatation()).
+    /// the dilatation of a plate with B-bar (PlateModel::mean_dilatation())
+    /// and its incompatible modes (PlateModel::add_mode_strains()).
     void
     set_displacement(const TrilinosWrappers::MPI::Vector &u_ghosted)
     {
@@ -80,6 +81,13 @@ namespace fgimpact
     }
 
   private:
+    /// Incompatible modes: their strain of the displacement at the
+    /// evaluation points of a cell, so that the stress is the one the
+    /// brick's stiffness has (zero without modes or stress).
+    std::vector<SymmetricTensor<2, 3>>
+    mode_strains(const DoFHandler<3>::active_cell_iterator &cell,
+                 const std::vector<Point<3>>               &points) const;
+
     /// The initial state's eps0 at the evaluation points of a cell.
     std::vector<SymmetricTensor<2, 3>>
     initial_strain(const DoFHandler<3>::active_cell_iterator &cell,

@@ -51,6 +51,11 @@ namespace fgimpact
       /// dilatation, Abaqus' selectively reduced C3D8).
       bool mean_dilatation = false;
 
+      /// Finite element/Incompatible modes: Wilson-Taylor bubbles
+      /// condensed out of each Q1 cell (incompatible_modes.h; Abaqus'
+      /// C3D8I), so the brick bends without parasitic shear.
+      bool incompatible_modes = false;
+
       static void
       declare_parameters(ParameterHandler &prm);
       void
@@ -197,6 +202,39 @@ namespace fgimpact
     apply_mean_dilatation(const DoFHandler<3>::active_cell_iterator &cell,
                           const TrilinosWrappers::MPI::Vector       &u,
                           std::vector<SymmetricTensor<2, 3>>        &eps) const;
+
+    /// True if the plate's bricks have incompatible modes
+    /// (Parameters::incompatible_modes).
+    bool
+    uses_incompatible_modes() const
+    {
+      return parameters.incompatible_modes;
+    }
+
+    /**
+     * Incompatible modes (incompatible_modes.h): H = -K_aa^{-1} K_au of a
+     * locally owned cell, the modes' amplitudes per unit value of each of
+     * its DoFs (n_modes x DoFs per cell), recomputed from the cell's graded
+     * material as assemble() condensed it; empty without modes.
+     */
+    FullMatrix<double>
+    mode_amplitudes(const DoFHandler<3>::active_cell_iterator &cell) const;
+
+    /// Incompatible modes: eps[k] += the modes' strain of the ghosted u at
+    /// unit_points[k] of a locally owned cell, so that eps is the strain
+    /// the stiffness has; nothing without modes.
+    void
+    add_mode_strains(const DoFHandler<3>::active_cell_iterator &cell,
+                     const std::vector<Point<3>>               &unit_points,
+                     const TrilinosWrappers::MPI::Vector       &u,
+                     std::vector<SymmetricTensor<2, 3>>        &eps) const;
+
+    /// The modes' strain of each DoF of a locally owned cell at each unit
+    /// point, [k][i] (1/m per unit DoF value), to add to shape_strain();
+    /// zero without incompatible modes.
+    std::vector<std::vector<SymmetricTensor<2, 3>>>
+    mode_shape_strains(const DoFHandler<3>::active_cell_iterator &cell,
+                       const std::vector<Point<3>> &unit_points) const;
 
     /// eps with its trace replaced by theta: eps + (theta - tr eps)/3 1.
     static SymmetricTensor<2, 3>

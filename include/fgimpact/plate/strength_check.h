@@ -8,6 +8,7 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <fgimpact/material/strength.h>
@@ -17,6 +18,7 @@
 #include <fgimpact/plate/plate_model.h>
 
 #include <array>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -113,12 +115,40 @@ namespace fgimpact
     void
     set_gradient_bounds();
 
+    /// Incompatible modes (source/plate/strength_check_modes.cc): cell
+    /// c's H (PlateModel::mode_amplitudes(), columns in the order s * 3 +
+    /// component), one per extent and height of its centre (the material
+    /// depends on z only).
+    void
+    add_mode_table(const DoFHandler<3>::active_cell_iterator &cell,
+                   const std::array<double, 3>               &extent);
+
+    /// Incompatible modes: cell c's mode amplitudes alpha = H cell_u (m);
+    /// false (alpha untouched) without modes.
+    bool
+    mode_amplitudes(const unsigned int         c,
+                    const std::vector<double> &cell_u,
+                    std::array<double, 9>     &alpha) const;
+
+    /// Incompatible modes: G += the modes' displacement gradient at point
+    /// q of cell c, alpha_(3 a + d) dN_d/dx_d in G[a][d] (boxes).
+    void
+    add_mode_gradient(const unsigned int           c,
+                      const unsigned int           q,
+                      const std::array<double, 9> &alpha,
+                      double                       G[3][3]) const;
+
     /// Whether cell c (its displacements cell_u, [s * 3 + component])
     /// cannot beat the peaks: for Q1, its strain at the centre (exact, the
     /// rigid rotation removed) plus a bound of the trilinear variation;
     /// otherwise |grad u| <= |D| gradient_bound.
+    /// With incompatible modes (alpha not null) each entry's variation
+    /// grows by its mode's largest gradient 4 |alpha| / h (their centre
+    /// gradient is 0).
     bool
-    can_skip(const unsigned int c, const std::vector<double> &cell_u) const;
+    can_skip(const unsigned int           c,
+             const std::vector<double>   &cell_u,
+             const std::array<double, 9> *alpha) const;
 
     /// One checked point (Lame constants and strength from E (Pa), nu).
     void
@@ -168,6 +198,11 @@ namespace fgimpact
     /// Per table, with B-bar (PlateModel::mean_divergence()): the weights
     /// of the cell's mean dilatation over its DoFs, in the order s * 3 + c.
     std::vector<std::vector<double>> mean_divergences;
+    /// Incompatible modes: the H tables (add_mode_table()) and each
+    /// checked cell's.
+    std::vector<FullMatrix<double>> mode_tables;
+    std::map<std::pair<std::array<double, 3>, double>, unsigned int> mode_keys;
+    std::vector<unsigned int>                                        mode_table;
     /// Per checked cell, over its points (strength included, so the
     /// factors bound ratios): the von Mises stress per |dev eps| of the
     /// metal-rich points; of the ceramic-rich points sigma_1 per

@@ -22,6 +22,11 @@ namespace fgimpact
   void
   check_resolved_contact_degree(const Parameters &p);
 
+  /// Finite element/Incompatible modes = true: Degree 1, elastic, no
+  /// B-bar, no thermal field.
+  void
+  check_incompatible_modes(const Parameters &p);
+
   /// Named constituents: their temperature laws physical (E > 0, k > 0,
   /// -1 < nu < 1/2) over the field's temperatures.
   void
