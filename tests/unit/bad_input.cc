@@ -376,6 +376,12 @@ namespace fgimpact_unit_tests::bad_input
          "subsection Contact\n set Model = resolved sphere\nend\n",
          1,
          "Finite element/Incompatible modes"},
+        {"incompatible modes converged under hertz midplane's point force",
+         "set Accuracy = converged\n"
+         "subsection Finite element\n set Incompatible modes = true\nend\n"
+         "subsection Contact\n set Model = hertz midplane\nend\n",
+         1,
+         "Finite element/Incompatible modes"},
         {"incompatible modes with a temperature field",
          "subsection Finite element\n set Incompatible modes = true\nend\n"
          "subsection Thermal\n set Temperature field = uniform\n"

@@ -50,6 +50,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exact/plate_exact.h>
+#include <postprocessor_tools.h>
 #include <test_tools.h>
 
 namespace fgimpact_unit_tests::incompatible_modes
@@ -341,23 +342,9 @@ namespace fgimpact_unit_tests::incompatible_modes
         GridTools::find_active_cell_around_point(plate.get_mapping(),
                                                  plate.get_dof_handler(),
                                                  p);
-      FEValues<3> fe_values(plate.get_mapping(),
-                            plate.get_fe(),
-                            Quadrature<3>(std::vector<Point<3>>{unit}),
-                            update_gradients | update_quadrature_points);
-      fe_values.reinit(cell);
-      DataPostprocessorInputs::Vector<3> inputs;
-      inputs.solution_gradients.resize(1, std::vector<Tensor<1, 3>>(3));
-      fe_values.get_function_gradients(u_ghosted, inputs.solution_gradients);
-      inputs.evaluation_points = {fe_values.quadrature_point(0)};
-      inputs.template set_cell<3>(cell);
-      std::vector<Vector<double>> out(1, Vector<double>(12));
-      postprocessor.evaluate_vector_field(inputs, out);
-      SymmetricTensor<2, 3> sigma;
-      for (unsigned int a = 0; a < 3; ++a)
-        for (unsigned int b = a; b < 3; ++b)
-          sigma[a][b] = out[0][3 * a + b] * 1e6;
-      return sigma;
+      return fgimpact_tests::postprocessed_stress(
+               plate, postprocessor, u_ghosted, cell, unit) *
+             1e6;
     }
 
     /// Every stress path on the nodal values of the exact bending field of

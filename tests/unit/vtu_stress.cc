@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <postprocessor_tools.h>
 #include <test_tools.h>
 
 namespace fgimpact_unit_tests::vtu_stress
@@ -73,22 +74,8 @@ namespace fgimpact_unit_tests::vtu_stress
             continue;
           const Point<3> unit = GeometryInfo<3>::project_to_unit_cell(
             plate.get_mapping().transform_real_to_unit_cell(cell, p));
-          FEValues<3> fe_values(plate.get_mapping(),
-                                plate.get_fe(),
-                                Quadrature<3>(std::vector<Point<3>>{unit}),
-                                update_gradients | update_quadrature_points);
-          fe_values.reinit(cell);
-          DataPostprocessorInputs::Vector<3> inputs;
-          inputs.solution_gradients.resize(1, std::vector<Tensor<1, 3>>(3));
-          fe_values.get_function_gradients(u_ghosted,
-                                           inputs.solution_gradients);
-          inputs.evaluation_points = {fe_values.quadrature_point(0)};
-          inputs.template set_cell<3>(cell);
-          std::vector<Vector<double>> out(1, Vector<double>(12));
-          postprocessor.evaluate_vector_field(inputs, out);
-          for (unsigned int a = 0; a < 3; ++a)
-            for (unsigned int b = a; b < 3; ++b)
-              sum[a][b] += out[0][3 * a + b];
+          sum += fgimpact_tests::postprocessed_stress(
+            plate, postprocessor, u_ghosted, cell, unit);
           ++n_cells;
         }
       return sum / static_cast<double>(n_cells);
