@@ -7,6 +7,8 @@
 #include <fgimpact/plate/incompatible_modes.h>
 #include <fgimpact/plate/plate_model.h>
 
+#include <array>
+
 namespace fgimpact
 {
   namespace IncompatibleModes
@@ -27,6 +29,20 @@ namespace fgimpact
               for (unsigned int k = 0; k < 3; ++k)
                 J[k][l] += 0.25 * edge[k];
             }
+      // Taylor's centre Jacobian passes the patch test on parallelepipeds
+      // only: every vertex is vertex 0 plus its unit coordinates times J.
+      for (unsigned int v = 0; v < 8; ++v)
+        {
+          Tensor<1, 3> expected;
+          for (unsigned int l = 0; l < 3; ++l)
+            if ((v & (1u << l)) != 0)
+              for (unsigned int k = 0; k < 3; ++k)
+                expected[k] += J[k][l];
+          (void)expected;
+          Assert((cell->vertex(v) - cell->vertex(0) - expected).norm() <=
+                   1e-10 * cell->diameter(),
+                 ExcMessage("Incompatible modes need parallelepiped cells."));
+        }
       return invert(J);
     }
 
