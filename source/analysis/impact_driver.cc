@@ -14,6 +14,7 @@
 #include <fgimpact/output/validity_report.h>
 #include <fgimpact/problem/scene.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -91,6 +92,7 @@ namespace fgimpact
     // monitor reads its part when it reopens the output files).
     const std::unique_ptr<CheckpointReader> resume = load_checkpoint();
     open_monitor(resume.get());
+    add_refinement_indicator();
     // Plain timers (not TimerOutput, whose destructor writes to the screen
     // when an exception such as a Newton failure is on its way out).  The
     // loop timer includes the initial state's output, which the monitor

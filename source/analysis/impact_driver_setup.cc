@@ -14,6 +14,7 @@
 #include <fgimpact/output/validity_report.h>
 #include <fgimpact/problem/scene.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -283,5 +284,50 @@ namespace fgimpact
                       d.contact_refinement_levels);
         pcout << text;
       }
+  }
+  namespace
+  {
+    /// Accumulates the plate's refinement indicator (the pilot run of an
+    /// adaptive mesh) every `stride` steps: eta^2 times stride dt, the
+    /// rectangle rule of its time integral.  Kelly's estimate costs about
+    /// a time step (default scene, 25,000 DoFs: 50 ms against 30 ms), so
+    /// it samples the contact some 16 times rather than at every step.
+    class IndicatorRecorder : public Postprocessor
+    {
+    public:
+      IndicatorRecorder(RefinementIndicator &indicator,
+                        const double         dt,
+                        const unsigned int   stride)
+        : indicator(indicator)
+        , dt(dt)
+        , stride(stride)
+      {}
+
+      void
+      execute(const StepRecord &record) override
+      {
+        if (record.step > 0 && record.step % stride == 0 && record.fields)
+          indicator.add(record.fields->displacement(), stride * dt);
+      }
+
+    private:
+      RefinementIndicator &indicator;
+      const double         dt; // s
+      const unsigned int   stride;
+    };
+  } // namespace
+
+
+
+  void
+  ImpactDriver::add_refinement_indicator()
+  {
+    if (refinement_indicator)
+      monitor->add(std::make_unique<IndicatorRecorder>(
+        *refinement_indicator,
+        dt,
+        std::max(1u,
+                 static_cast<unsigned int>(hertz_contact_duration() /
+                                           (16. * dt)))));
   }
 } // namespace fgimpact

@@ -327,6 +327,11 @@ namespace fgimpact
                   ExcMessage("--resume: an Accuracy = converged run is a "
                              "sequence of runs and cannot be resumed; "
                              "run it again."));
+      AssertThrow(options.resume_directory.empty() ||
+                    parameters.geometry.adaptive_cycles == 0,
+                  ExcMessage("--resume: a run with Geometry/Adaptive "
+                             "refinement cycles > 0 is a sequence of runs "
+                             "and cannot be resumed; run it again."));
       CheckpointSettings checkpoint = checkpoint_settings(options, prm);
       checkpoint.on_resume_accepted = [&prm, &parameters]() {
         run_on_root(MPI_COMM_WORLD,

@@ -81,8 +81,8 @@ namespace fgimpact
           name == "log.txt" || name == "input.prm" || name == "sphere.pvd" ||
           name == "contact.pvd" || name == "contact_pressure.csv" ||
           name == "peak_fields.pvtu" || name == "study.csv" ||
-          name == "convergence.csv" || name == "summary.json" ||
-          name == "report.html")
+          name == "convergence.csv" || name == "adaptation.csv" ||
+          name == "summary.json" || name == "report.html")
         return true;
       // peak_fields.R.vtu
       if (name.rfind("peak_fields.", 0) == 0 && ends_with(name, ".vtu") &&
@@ -166,7 +166,8 @@ namespace fgimpact
     }
 
     /// Whether name is one of Accuracy = converged's run directories:
-    /// level_N (the input's mesh) or base_NXxNYxNZ_level_N.
+    /// level_N (the input's mesh) or base_NXxNYxNZ_level_N; or an adaptive
+    /// mesh's pilot run: adaptive_cycle_N.
     bool
     is_convergence_run(const std::string &name)
     {
@@ -177,6 +178,11 @@ namespace fgimpact
         return at > from;
       };
       std::size_t at = 0;
+      if (name.rfind("adaptive_cycle_", 0) == 0)
+        {
+          at = 15;
+          return number(at) && at == name.size();
+        }
       if (name.rfind("base_", 0) == 0)
         {
           at = 5;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 namespace fgimpact
 {
@@ -186,12 +187,49 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// The adaptive mesh's entries of Geometry.
+    const ParameterTable<PlateGeometry::Parameters> &
+    adaptive_table()
+    {
+      using P                              = PlateGeometry::Parameters;
+      static const ParameterTable<P> table = [] {
+        ParameterTable<P> t;
+        t.add("Adaptive refinement cycles",
+              &P::adaptive_cycles,
+              Patterns::Integer(0, 6),
+              "Pilot runs that adapt the mesh before the run whose "
+              "outputs are written (Contact/Model = resolved sphere, "
+              "Problem type = impact): each runs the whole impact on the "
+              "mesh so far and integrates over time Kelly's indicator (the "
+              "jump of E(z) du/dn across the cells' faces); the Adaptive "
+              "refinement fraction of the cells with the largest value are "
+              "split in eight (hanging nodes) for the next run. The pilot "
+              "runs write history.csv and summary.txt into "
+              "Output/Directory/adaptive/cycle_K, and adaptation.csv lists "
+              "every run. 0 = none.");
+        t.add("Adaptive refinement fraction",
+              &P::adaptive_fraction,
+              Patterns::Double(0.01, 1.),
+              "The fraction of the cells (by count) each adaptive cycle "
+              "refines: each cycle adds about 7 times this fraction of the "
+              "cells. 1 = uniform refinement.");
+        return t;
+      }();
+      return table;
+    }
+  } // namespace
+
+
+
   void
   PlateGeometry::Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
     {
       geometry_table().declare(prm);
+      adaptive_table().declare(prm);
       declare_refinement_levels(prm);
     }
     prm.leave_subsection();
@@ -207,6 +245,7 @@ namespace fgimpact
     prm.enter_subsection("Geometry");
     {
       geometry_table().parse(prm, *this);
+      adaptive_table().parse(prm, *this);
       const std::string levels = prm.get("Contact refinement levels");
       contact_refinement_auto  = (levels == "auto");
       contact_refinement_levels =
@@ -291,6 +330,24 @@ namespace fgimpact
               if (std::sqrt(d2) < refinement.radius + 2. * h)
                 cell->set_refine_flag();
             }
+        triangulation.execute_coarsening_and_refinement();
+      }
+  }
+
+
+
+  void
+  PlateGeometry::refine_cells(
+    Triangulation<3>                            &triangulation,
+    const std::vector<std::vector<std::string>> &cycles)
+  {
+    for (const auto &ids : cycles)
+      {
+        const std::set<std::string> refine(ids.begin(), ids.end());
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              refine.count(cell->id().to_string()) > 0)
+            cell->set_refine_flag();
         triangulation.execute_coarsening_and_refinement();
       }
   }

@@ -78,11 +78,14 @@ namespace fgimpact
 
 
   void
-  PlateModel::setup(const LocalRefinement &refinement)
+  PlateModel::setup(
+    const LocalRefinement                       &refinement,
+    const std::vector<std::vector<std::string>> &adaptive_cycles)
   {
     this->refinement = refinement;
     geometry.create_triangulation(triangulation);
     PlateGeometry::refine_locally(triangulation, refinement);
+    PlateGeometry::refine_cells(triangulation, adaptive_cycles);
     dof_handler.distribute_dofs(fe);
     locally_owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);

@@ -66,6 +66,30 @@ namespace fgimpact
 
 
   void
+  check_adaptive_mesh(const Parameters &p)
+  {
+    if (p.geometry.adaptive_cycles == 0)
+      return;
+    const std::string name = "Geometry/Adaptive refinement cycles > 0";
+    AssertThrow(p.problem_type == ProblemType::impact,
+                ExcMessage(name + " is for Problem type = impact; set it "
+                                  "to 0."));
+    // Kelly's indicator is largest under a point force, whose displacement
+    // has no converged value there (u ~ 1/r): the cycles would refine the
+    // singularity, not the plate.
+    AssertThrow(p.contact_model.model ==
+                  ContactModelParameters::Model::resolved_sphere,
+                ExcMessage(name + " needs Contact/Model = resolved sphere "
+                                  "(under a point force the indicator "
+                                  "refines the singularity); set it to 0."));
+    AssertThrow(p.accuracy.preset != AccuracyPreset::Preset::converged,
+                ExcMessage(name + " with Accuracy = converged is not "
+                                  "offered yet; use one of the two."));
+  }
+
+
+
+  void
   check_resolved_contact_degree(const Parameters &p)
   {
     // The resolved contact is node to surface: each top-face node carries

@@ -448,6 +448,7 @@ namespace fgimpact
     validate_supports(*this);
     output.probe_points.validate(a, b, geometry.thickness);
     check_converged_accuracy(*this);
+    check_adaptive_mesh(*this);
   }
 
   std::vector<std::string>

@@ -9,6 +9,7 @@
 #include <fgimpact/output/output_files.h>
 #include <fgimpact/output/postprocessing.h>
 #include <fgimpact/problem/symmetry.h>
+#include <fgimpact/study/adaptive_run.h>
 #include <fgimpact/study/converged_run.h>
 #include <fgimpact/study/simulator.h>
 
@@ -267,6 +268,15 @@ namespace fgimpact
         converged->setup();
         return;
       }
+    if (parameters.geometry.adaptive_cycles > 0)
+      {
+        adaptive = std::make_unique<AdaptiveRun>(parameters,
+                                                 mpi_communicator,
+                                                 summary_file,
+                                                 observers);
+        adaptive->setup();
+        return;
+      }
     if (plate)
       total_timer.restart(); // the plate taken over: the driver's set-up
     else
@@ -280,6 +290,11 @@ namespace fgimpact
               parameters, *scene, *plate, total_timer, summary_file);
             for (const auto &observer : observers)
               impact->add_row_observer(observer);
+            if (indicator_wanted)
+              {
+                indicator = std::make_unique<RefinementIndicator>(*plate);
+                impact->set_refinement_indicator(*indicator);
+              }
             impact->set_checkpointing(checkpoint_settings);
             if (thermal)
               impact->set_thermal_state(*thermal);
@@ -317,7 +332,7 @@ namespace fgimpact
                                          *geometry,
                                          *material,
                                          mpi_communicator);
-    plate->setup(refinement);
+    plate->setup(refinement, adaptive_mesh);
 
     const PropertyMode mode = parameters.material.property_mode;
     pcout << "fgimpact: FGM plate " << geometry->length() << " x "
@@ -391,20 +406,24 @@ namespace fgimpact
   void
   Simulator::run()
   {
-    if (!driver && !converged)
+    if (!driver && !converged && !adaptive)
       setup();
     try
       {
         if (converged)
           converged->run();
+        else if (adaptive)
+          adaptive->run();
         else
           driver->run();
       }
     catch (const RunInterrupted &)
       {
         // Its summary.txt says interrupted already, unless a level of
-        // Accuracy = converged was running (its own directory's does).
-        if (converged && !converged->final_run_started())
+        // Accuracy = converged or a pilot run of the adaptive mesh was
+        // running (its own directory's does).
+        if ((converged && !converged->final_run_started()) ||
+            (adaptive && !adaptive->final_run_started()))
           write_failed_summary("interrupted");
         throw;
       }
@@ -430,7 +449,8 @@ namespace fgimpact
       }
     catch (...)
       {}
-    if (!driver && !(converged && converged->final_run_started()))
+    if (!driver && !(converged && converged->final_run_started()) &&
+        !(adaptive && adaptive->final_run_started()))
       {
         // Only the status: nothing else is known.
         SummaryWriter out;
@@ -446,6 +466,8 @@ namespace fgimpact
   {
     if (converged)
       return converged->results();
+    if (adaptive)
+      return adaptive->results();
     const auto *impact = dynamic_cast<const ImpactDriver *>(driver.get());
     AssertThrow(impact != nullptr,
                 ExcMessage("Simulator::get_results(): not an impact run."));

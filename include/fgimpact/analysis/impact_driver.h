@@ -11,6 +11,7 @@
 #include <fgimpact/contact/impactor.h>
 #include <fgimpact/output/monitor.h>
 #include <fgimpact/plate/plate_model.h>
+#include <fgimpact/plate/refinement_indicator.h>
 #include <fgimpact/problem/parameters.h>
 #include <fgimpact/problem/scene.h>
 #include <fgimpact/time/auto_end_time.h>
@@ -93,6 +94,14 @@ namespace fgimpact
       thermal_state = &thermal;
     }
 
+    /// Accumulate `indicator` (RefinementIndicator::add() with the step's
+    /// length) at every step of run(); before run(), it must outlive it.
+    void
+    set_refinement_indicator(RefinementIndicator &indicator)
+    {
+      refinement_indicator = &indicator;
+    }
+
     /// Checkpoints: the parameters' text to store, and whether to resume
     /// (before run()).
     void
@@ -107,6 +116,8 @@ namespace fgimpact
   private:
     /// set_thermal_state(); null without a temperature field.
     const ThermalStep *thermal_state = nullptr;
+    /// set_refinement_indicator(); null if none.
+    RefinementIndicator *refinement_indicator = nullptr;
     /// One step, recorded; true if End time = auto and the ball has left
     /// for good (the run stops after it).
     bool
@@ -181,6 +192,10 @@ namespace fgimpact
     /// value (0: none), the periodic checkpoints written.
     int
     run_steps(unsigned int &steps_done);
+
+    /// set_refinement_indicator(): its recorder into the monitor.
+    void
+    add_refinement_indicator();
 
     /// Create the monitor (it opens the output files; on resume it
     /// continues them) with its observers and contact output; every rank

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 namespace fgimpact
 {
@@ -105,6 +106,11 @@ namespace fgimpact
       bool         contact_refinement_auto   = true;
       unsigned int contact_refinement_levels = 0;
       double       contact_refinement_radius = 0;
+      /// Geometry/Adaptive refinement cycles: pilot runs whose time
+      /// integrated error indicator refines the mesh for the next run
+      /// (0: none); the fraction of the cells each cycle refines.
+      unsigned int adaptive_cycles   = 0;
+      double       adaptive_fraction = 0.2;
       /// Geometry/Symmetry as requested (resolve_symmetry(), symmetry.cc,
       /// decides the planes to cut once the whole scene is known).
       Symmetry symmetry = Symmetry::automatic;
@@ -142,6 +148,17 @@ namespace fgimpact
     static void
     refine_locally(Triangulation<3>      &triangulation,
                    const LocalRefinement &refinement);
+
+    /**
+     * Refine the active cells whose CellId strings are in each list, one
+     * list after the other (the cycles of an adaptive run: each list names
+     * cells of the mesh the lists before it made).  p4est keeps the mesh
+     * 2:1 balanced, which may refine a neighbour too; that is the same on
+     * every rebuild, so the lists remake the same mesh.
+     */
+    static void
+    refine_cells(Triangulation<3>                            &triangulation,
+                 const std::vector<std::vector<std::string>> &cycles);
 
     double
     length() const

@@ -67,10 +67,12 @@ namespace fgimpact
                const FunctionallyGradedMaterial &material,
                const MPI_Comm                    mpi_communicator);
 
-    /// Make the mesh (refined near the impact point as asked),
+    /// Make the mesh (refined near the impact point as asked, then the
+    /// cells of each adaptive cycle: PlateGeometry::refine_cells()),
     /// distribute DoFs, build constraints and assemble K, M.
     void
-    setup(const LocalRefinement &refinement = LocalRefinement());
+    setup(const LocalRefinement                       &refinement      = {},
+          const std::vector<std::vector<std::string>> &adaptive_cycles = {});
 
     /// The smallest cell edge along x (m), over all ranks.
     double

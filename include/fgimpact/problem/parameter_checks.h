@@ -11,6 +11,11 @@ namespace fgimpact
   void
   check_plasticity(const Parameters &p);
 
+  /// Geometry/Adaptive refinement cycles > 0: an impact with the resolved
+  /// sphere, without Accuracy = converged.
+  void
+  check_adaptive_mesh(const Parameters &p);
+
   /// Accuracy = converged refines the contact: it needs an impact whose
   /// contact converges under refinement, and the implicit scheme.
   void

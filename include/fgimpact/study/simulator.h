@@ -11,6 +11,7 @@
 #include <fgimpact/output/results.h>
 #include <fgimpact/plate/geometry.h>
 #include <fgimpact/plate/plate_model.h>
+#include <fgimpact/plate/refinement_indicator.h>
 #include <fgimpact/problem/parameters.h>
 #include <fgimpact/problem/resources.h>
 #include <fgimpact/problem/scene.h>
@@ -21,6 +22,7 @@ namespace fgimpact
 {
   using namespace dealii;
 
+  class AdaptiveRun;
   class ConvergedRun;
   class ThermalStep;
 
@@ -82,6 +84,37 @@ namespace fgimpact
     void
     set_checkpointing(const CheckpointSettings &settings);
 
+    /// Build the mesh with the cells of each adaptive cycle refined
+    /// (PlateGeometry::refine_cells()); before setup().
+    void
+    set_adaptive_mesh(const std::vector<std::vector<std::string>> &cycles)
+    {
+      adaptive_mesh = cycles;
+    }
+
+    /// An impact run accumulates the plate's RefinementIndicator; before
+    /// setup().
+    void
+    record_refinement_indicator()
+    {
+      indicator_wanted = true;
+    }
+
+    /// After run() with record_refinement_indicator(): the indicator
+    /// accumulated over the impact.
+    const RefinementIndicator &
+    refinement_indicator() const
+    {
+      return *indicator;
+    }
+
+    /// The plate's active cells (after setup()).
+    unsigned int
+    n_active_cells() const
+    {
+      return plate->n_active_cells();
+    }
+
     /// summary.txt as last written (every rank; empty before).
     const SummaryFile &
     summary() const
@@ -129,7 +162,13 @@ namespace fgimpact
     /// Accuracy = converged: the sequence of runs that replaces the
     /// driver.
     std::unique_ptr<ConvergedRun> converged;
-    mutable SummaryFile           summary_file;
+    /// Geometry/Adaptive refinement cycles > 0: the pilot runs and the
+    /// final one, which replace the driver.
+    std::unique_ptr<AdaptiveRun>          adaptive;
+    std::vector<std::vector<std::string>> adaptive_mesh;
+    bool                                  indicator_wanted = false;
+    std::unique_ptr<RefinementIndicator>  indicator;
+    mutable SummaryFile                   summary_file;
   };
 } // namespace fgimpact
 

@@ -1,0 +1,218 @@
+// Geometry/Adaptive refinement cycles: the pilot runs whose indicator
+// refines the mesh, the final run, adaptation.csv and the summary's keys.
+
+#include <deal.II/base/timer.h>
+
+#include <fgimpact/base/exceptions.h>
+#include <fgimpact/base/files.h>
+#include <fgimpact/output/output_directory.h>
+#include <fgimpact/study/adaptive_run.h>
+#include <fgimpact/study/converged_run.h>
+#include <fgimpact/study/simulator.h>
+
+#include <cmath>
+#include <cstdio>
+#include <malloc.h>
+#include <sstream>
+
+namespace fgimpact
+{
+  AdaptiveRun::AdaptiveRun(
+    const Parameters                              &parameters,
+    const MPI_Comm                                 communicator,
+    SummaryFile                                   &summary,
+    const std::vector<ImpactMonitor::RowObserver> &observers)
+    : parameters(parameters)
+    , communicator(communicator)
+    , summary(summary)
+    , observers(observers)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(communicator) == 0)
+  {}
+
+
+
+  AdaptiveRun::~AdaptiveRun() = default;
+
+
+
+  Parameters
+  AdaptiveRun::parameters_of(const unsigned int cycle, const bool final) const
+  {
+    Parameters p               = parameters;
+    p.geometry.adaptive_cycles = 0; // the runs themselves are plain ones
+    // No checkpoints: the sequence cannot be resumed (--resume refuses it).
+    p.output.checkpoint_interval = 0;
+    if (final)
+      return p;
+    p.output.directory = parameters.output.directory +
+                         "/convergence/adaptive_cycle_" + std::to_string(cycle);
+    p.output.vtu_interval   = 0;
+    p.output.snapshot_times = {};
+    p.output.peak_snapshot  = false;
+    return p;
+  }
+
+
+
+  void
+  AdaptiveRun::setup()
+  {
+    // The first pilot run's set-up checks the input (the mesh included)
+    // before anything is written.
+    first = std::make_unique<Simulator>(parameters_of(0, false), communicator);
+    first->record_refinement_indicator();
+    first->setup();
+  }
+
+
+
+  void
+  AdaptiveRun::run_pilot(const unsigned int cycle)
+  {
+    const Parameters           p = parameters_of(cycle, false);
+    Timer                      timer;
+    std::unique_ptr<Simulator> simulator = std::move(first);
+    if (!simulator)
+      {
+        simulator = std::make_unique<Simulator>(p, communicator);
+        simulator->set_adaptive_mesh(refined);
+        simulator->record_refinement_indicator();
+        simulator->setup();
+      }
+    run_on_root(communicator, [&]() { prepare_output_directory(p.output); });
+    simulator->run();
+    Run run;
+    run.results = simulator->get_results();
+    run.n_cells = simulator->n_active_cells();
+    refined.push_back(simulator->refinement_indicator().cells_to_refine(
+      parameters.geometry.adaptive_fraction));
+    run.n_refined = refined.back().size();
+    simulator.reset();
+    malloc_trim(0); // the freed heap back to the system before the next run
+    run.wall_time = timer.wall_time();
+    pcout << "Adaptive mesh: cycle " << cycle + 1 << " of "
+          << parameters.geometry.adaptive_cycles << " on " << run.n_cells
+          << " cells, " << run.results.n_dofs << " DoFs (" << p.output.directory
+          << "): peak force " << run.results.peak_contact_force
+          << " N; refining the " << run.n_refined
+          << " cells of largest indicator\n";
+    runs.push_back(run);
+  }
+
+
+
+  void
+  AdaptiveRun::run_final()
+  {
+    const Parameters p = parameters_of(0, true);
+    Timer            timer;
+    Simulator        simulator(p, communicator);
+    simulator.set_adaptive_mesh(refined);
+    for (const auto &observer : observers)
+      simulator.add_history_observer(observer);
+    simulator.setup();
+    pcout << "Adaptive mesh: the final run on " << simulator.n_active_cells()
+          << " cells, into " << parameters.output.directory << '\n';
+    final_started = true;
+    simulator.run();
+    Run run;
+    run.results     = simulator.get_results();
+    run.n_cells     = simulator.n_active_cells();
+    run.wall_time   = timer.wall_time();
+    summary_entries = simulator.summary().entries();
+    runs.push_back(run);
+  }
+
+
+
+  void
+  AdaptiveRun::run()
+  {
+    const unsigned int cycles = parameters.geometry.adaptive_cycles;
+    try
+      {
+        for (unsigned int cycle = 0; cycle < cycles; ++cycle)
+          run_pilot(cycle);
+        run_final();
+      }
+    catch (const RunInterrupted &e)
+      {
+        // A pilot's own message offers --resume of its directory, which
+        // would finish that one run, not the sequence.
+        throw RunInterrupted(
+          e.signal,
+          "Adaptive mesh interrupted by signal " + std::to_string(e.signal) +
+            (final_started ?
+               " in the final run" :
+               " in pilot cycle " + std::to_string(runs.size() + 1) + " of " +
+                 std::to_string(cycles)) +
+            ": the sequence cannot be resumed (--resume refuses it); run "
+            "the same command again.");
+      }
+    write_outputs();
+  }
+
+
+
+  void
+  AdaptiveRun::write_outputs() const
+  {
+    const auto   &quantities = ConvergedRun::quantities();
+    SummaryWriter out;
+    for (const auto &[key, value] : summary_entries)
+      out.add_text(key, value);
+    out.add_text("adaptive_refinement_cycles",
+                 std::to_string(parameters.geometry.adaptive_cycles));
+    out.add("adaptive_refinement_fraction",
+            parameters.geometry.adaptive_fraction,
+            3);
+    std::ostringstream log;
+    log << "Adaptive mesh: change from the last pilot run to the final one";
+    const ImpactResults &a = runs[runs.size() - 2].results,
+                        &b = runs.back().results;
+    for (const auto &q : quantities)
+      {
+        const double change =
+          std::abs(q.value(b) - q.value(a)) / std::abs(q.value(b));
+        out.add_scientific(q.key + "_change_last_adaptive_cycle", change);
+        log << (&q == &quantities.front() ? ": " : ", ") << q.key << ' '
+            << ConvergedRun::percent(change);
+      }
+    pcout << log.str() << '\n';
+    summary.write(out);
+
+    std::ostringstream csv;
+    csv << "run,n_cells,n_dofs,element_size_under_ball_mm";
+    for (const auto &q : quantities)
+      csv << ',' << q.column;
+    csv << ",refined_cells,wall_time_s\n";
+    for (std::size_t i = 0; i < runs.size(); ++i)
+      {
+        const Run &r = runs[i];
+        char       line[200];
+        std::snprintf(line,
+                      sizeof(line),
+                      "%zu,%u,%u,%.6f",
+                      i + 1,
+                      r.n_cells,
+                      r.results.n_dofs,
+                      r.results.model.element_size_under_ball * 1e3);
+        csv << line;
+        for (const auto &q : quantities)
+          {
+            std::snprintf(line,
+                          sizeof(line),
+                          ",%.10g",
+                          q.scale * q.value(r.results));
+            csv << line;
+          }
+        std::snprintf(
+          line, sizeof(line), ",%u,%.3f\n", r.n_refined, r.wall_time);
+        csv << line;
+      }
+    run_on_root(communicator, [&]() {
+      write_file_atomically(parameters.output.directory + "/adaptation.csv",
+                            csv.str());
+    });
+  }
+} // namespace fgimpact
