@@ -92,6 +92,26 @@ namespace fgimpact_tests
     return values;
   }
 
+  /// A numeric CSV file (convergence.csv, adaptation.csv): the header's
+  /// names and the rows.
+  inline std::pair<std::vector<std::string>, std::vector<std::vector<double>>>
+  read_csv_rows(const std::string &file)
+  {
+    std::ifstream in(file);
+    std::string   line;
+    std::getline(in, line);
+    const auto header = dealii::Utilities::split_string_list(line, ',');
+    std::vector<std::vector<double>> rows;
+    while (std::getline(in, line))
+      {
+        std::vector<double> row;
+        for (const auto &item : dealii::Utilities::split_string_list(line, ','))
+          row.push_back(std::stod(item));
+        rows.push_back(row);
+      }
+    return {header, rows};
+  }
+
   /// summary.txt's entries, key -> text (the provenance comments left
   /// out).
   inline std::map<std::string, std::string>

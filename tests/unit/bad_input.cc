@@ -388,6 +388,27 @@ namespace fgimpact_unit_tests::bad_input
          " set Temperature change = 100\nend\n",
          1,
          "Finite element/Incompatible modes"},
+        {"adaptive mesh under a point force (hertz node)",
+         "subsection Geometry\n set Adaptive refinement cycles = 1\nend\n",
+         1,
+         "Geometry/Adaptive refinement cycles > 0 needs Contact/Model = "
+         "resolved sphere"},
+        {"adaptive mesh with Accuracy = converged",
+         "set Accuracy = converged\nsubsection Contact\n set Model = resolved "
+         "sphere\nend\nsubsection Geometry\n set Adaptive refinement cycles "
+         "= 1\nend\n",
+         1,
+         "Geometry/Adaptive refinement cycles > 0 with Accuracy = converged"},
+        {"adaptive mesh in a modal analysis",
+         "set Problem type = modal\nsubsection Geometry\n set Adaptive "
+         "refinement cycles = 1\nend\n",
+         1,
+         "Geometry/Adaptive refinement cycles > 0 is for Problem type = "
+         "impact"},
+        {"adaptive refinement fraction 0",
+         "subsection Geometry\n set Adaptive refinement fraction = 0\nend\n",
+         1,
+         "Adaptive refinement fraction"},
         // Issue 42: SUS304's cubic law for E turns negative near 1490 K.
         {"a named constituent beyond its temperature law",
          "subsection Material\n set Metal material = SUS304\nend\n"

@@ -54,25 +54,6 @@ namespace fgimpact_unit_tests::converged_accuracy
   namespace
   {
 
-    /// convergence.csv: the header's names and the rows.
-    std::pair<std::vector<std::string>, std::vector<std::vector<double>>>
-    read_csv(const std::string &file)
-    {
-      std::ifstream in(file);
-      std::string   line;
-      std::getline(in, line);
-      const auto header = Utilities::split_string_list(line, ',');
-      std::vector<std::vector<double>> rows;
-      while (std::getline(in, line))
-        {
-          std::vector<double> row;
-          for (const auto &item : Utilities::split_string_list(line, ','))
-            row.push_back(std::stod(item));
-          rows.push_back(row);
-        }
-      return {header, rows};
-    }
-
     bool
     part_one()
     {
@@ -300,8 +281,9 @@ namespace fgimpact_unit_tests::converged_accuracy
     fgimpact_tests::run_quietly("",
                                 scene + "set Accuracy = converged\n"
                                         "set Accuracy tolerance = 0.04\n");
-    const auto [header, rows] = read_csv("out/convergence.csv");
-    const auto column         = [&](const std::string &name) {
+    const auto [header, rows] =
+      fgimpact_tests::read_csv_rows("out/convergence.csv");
+    const auto column = [&](const std::string &name) {
       return std::find(header.begin(), header.end(), name) - header.begin();
     };
     const auto level_of = [&](const std::vector<double> &row) {
