@@ -14,6 +14,9 @@
 //      rows against each run's summary.txt (convergence/adaptive_cycle_K
 //      and the final one), each cycle refining ceil(fraction N) cells, the
 //      summary's *_change_last_adaptive_cycle recomputed from the CSV;
+//      the final run's VTU snapshot: one cell per cell of its mesh, and
+//      at every hanging vertex (found from the cells' boxes in the file)
+//      each field the interpolation of its coarse cell's corners;
 //      and its accuracy against a run on a mesh no run used (the base
 //      mesh refined twice in every direction, one contact level more):
 //      the final run's largest error over the five headline numbers is
@@ -35,6 +38,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <hanging_check.h>
 #include <set>
 #include <test_tools.h>
 
@@ -218,7 +222,10 @@ namespace fgimpact_unit_tests::adaptive_mesh
         scene(nx, levels) +
           "subsection Geometry\n set Adaptive refinement cycles = 2\n"
           " set Adaptive refinement fraction = 0.2\nend\n"
-          "subsection Output\n set Directory = out_adaptive\nend\n");
+          "subsection Output\n set Directory = out_adaptive\n"
+          " set VTU interval = 50\n set VTU compression = none\n"
+          " set Mirror symmetric part = false\n"
+          " set Fields = displacement, velocity, acceleration, stress\nend\n");
       // The CSV against each run's summary.txt (to the CSV's 10 digits and
       // the summary's decimals: 1e-6 relative).
       const auto [header, rows] =
@@ -270,6 +277,25 @@ namespace fgimpact_unit_tests::adaptive_mesh
                   "files, the cells refined and the summary's changes: %s\n",
                   rows.size(),
                   files ? "yes" : "NO");
+
+      // The final run's VTU at 50 us (near the peak force): one cell per
+      // cell of its mesh, and every hanging vertex the adaptive cycles
+      // made (inside the plate, on the supported sides and the cuts)
+      // carries the interpolation of its coarse cell's corners.
+      using namespace fgimpact_tests::hanging;
+      const auto   cells = read_snapshot("out_adaptive", 50, 1);
+      HangingCheck check;
+      check_hanging(cells, 0.02, check);
+      bool vtu = cells.size() == csv(2, "n_cells") && !check.vertices.empty();
+      for (unsigned int f = 0; f < n_fields; ++f)
+        vtu = vtu && check.largest[f] < 1e-6 * check.scale[f];
+      std::printf("(3) the final run's VTU: one cell per cell (%zu), %zu "
+                  "hanging vertices, each field the interpolation of the "
+                  "coarse cell to 1e-6: %s\n",
+                  cells.size(),
+                  check.vertices.size(),
+                  vtu ? "yes" : "NO");
+      files = files && vtu;
 
       fgimpact_tests::run_quietly(
         "",
