@@ -6,6 +6,8 @@
 #include <fgimpact/base/exceptions.h>
 #include <fgimpact/base/files.h>
 #include <fgimpact/output/output_directory.h>
+#include <fgimpact/problem/resources.h>
+#include <fgimpact/problem/scene.h>
 #include <fgimpact/study/adaptive_run.h>
 #include <fgimpact/study/converged_run.h>
 #include <fgimpact/study/simulator.h>
@@ -62,6 +64,55 @@ namespace fgimpact
     first = std::make_unique<Simulator>(parameters_of(0, false), communicator);
     first->record_refinement_indicator();
     first->setup();
+    // Each cycle splits ceil(fraction n) cells into eight: the final mesh
+    // has about (1 + 7 fraction)^N times the input's cells (p4est's
+    // balance adds a few: 14,828 for 14,808 on the default scene).
+    const auto &g = parameters.geometry;
+    check_fits(first->n_active_cells() *
+                 std::pow(1. + 7. * g.adaptive_fraction, g.adaptive_cycles),
+               "the final mesh, expected");
+  }
+
+
+
+  void
+  AdaptiveRun::check_fits(const double n_cells, const std::string &what) const
+  {
+    const Parameters p = parameters_of(0, true);
+    ResourceEstimate e =
+      estimate_resources(p, contact_refinement_of(p, scene_without_mesh(p)));
+    const double ratio = n_cells / e.n_cells;
+    for (double *linear : {&e.n_cells,
+                           &e.n_dofs,
+                           &e.matrix_nnz,
+                           &e.mesh,
+                           &e.matrices,
+                           &e.vectors,
+                           &e.output})
+      *linear *= ratio;
+    e.factor_nnz *= std::pow(ratio, 4. / 3.);
+    e.factor *= std::pow(ratio, 4. / 3.);
+    try
+      {
+        check_memory(p, e, communicator);
+      }
+    catch (const ExceptionBase &error)
+      {
+        char fraction[32];
+        std::snprintf(fraction,
+                      sizeof(fraction),
+                      "%g",
+                      parameters.geometry.adaptive_fraction);
+        AssertThrow(false,
+                    ExcMessage(
+                      "Geometry/Adaptive refinement cycles = " +
+                      std::to_string(parameters.geometry.adaptive_cycles) +
+                      " with fraction " + fraction + ": " + what + " (" +
+                      std::to_string(std::llround(n_cells)) +
+                      " cells) does not fit; lower the cycles or "
+                      "the fraction: " +
+                      message_of(error)));
+      }
   }
 
 
@@ -74,6 +125,8 @@ namespace fgimpact
     std::unique_ptr<Simulator> simulator = std::move(first);
     if (!simulator)
       {
+        check_fits(runs.back().n_cells + 7. * runs.back().n_refined,
+                   "the mesh of cycle " + std::to_string(cycle + 1));
         simulator = std::make_unique<Simulator>(p, communicator);
         simulator->set_adaptive_mesh(refined);
         simulator->record_refinement_indicator();
@@ -104,6 +157,8 @@ namespace fgimpact
   void
   AdaptiveRun::run_final()
   {
+    check_fits(runs.back().n_cells + 7. * runs.back().n_refined,
+               "the final mesh");
     const Parameters p = parameters_of(0, true);
     Timer            timer;
     Simulator        simulator(p, communicator);

@@ -405,6 +405,13 @@ namespace fgimpact_unit_tests::bad_input
          1,
          "Geometry/Adaptive refinement cycles > 0 is for Problem type = "
          "impact"},
+        {"adaptive mesh beyond the memory (6 cycles splitting every cell)",
+         "subsection Contact\n set Model = resolved sphere\nend\n"
+         "subsection Geometry\n set Adaptive refinement cycles = 6\n"
+         " set Adaptive refinement fraction = 1\nend\n",
+         1,
+         "Geometry/Adaptive refinement cycles = 6 with fraction 1: the final "
+         "mesh, expected"},
         {"adaptive refinement fraction 0",
          "subsection Geometry\n set Adaptive refinement fraction = 0\nend\n",
          1,

@@ -81,6 +81,13 @@ namespace fgimpact
     Parameters
     parameters_of(const unsigned int cycle, const bool final) const;
 
+    /// Refuse in one line (naming the adaptive entries) a mesh of
+    /// `n_cells` cells that does not fit the memory: the input's
+    /// ResourceEstimate scaled to that many cells (the factor as n^{4/3},
+    /// nested dissection in 3D).  `what` names the mesh.
+    void
+    check_fits(const double n_cells, const std::string &what) const;
+
     /// Pilot cycle k: its run and the cells it refines (appended to
     /// `refined`).
     void
