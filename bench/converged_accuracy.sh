@@ -6,6 +6,9 @@
 #   converged-1%     resolved sphere, Accuracy = converged, tolerance 0.01;
 #   converged-0.2%   the same at 0.002;
 #   modes-1%         converged-1% with Finite element/Incompatible modes;
+#   adaptive-1, -2   resolved sphere, Geometry/Adaptive refinement cycles
+#                    = 1 and 2 (no estimate: doc/performance.md, section 30);
+#   modes-adaptive-1 adaptive-1 with the incompatible modes;
 # the converged runs without probes, as doc/performance.md's tables (the
 # probes' peak stresses would steer them: section 29);
 #   level7-resolved  resolved sphere at 7 contact refinement levels;
@@ -27,12 +30,16 @@ need_gnu_time
 n=${1:-1}
 root=$(mktemp -d)
 trap 'rm -rf "$root"' EXIT
-labels=(hertz-node converged-1% converged-0.2% modes-1% level7-resolved level7-node)
+labels=(hertz-node converged-1% converged-0.2% modes-1% adaptive-1 adaptive-2
+  modes-adaptive-1 level7-resolved level7-node)
 options=(
   ""
   "-s Contact/Model=resolved?sphere -s Accuracy=converged -s Accuracy?tolerance=0.01 -s Output/Probe?points="
   "-s Contact/Model=resolved?sphere -s Accuracy=converged -s Accuracy?tolerance=0.002 -s Output/Probe?points="
   "-s Contact/Model=resolved?sphere -s Accuracy=converged -s Accuracy?tolerance=0.01 -s Finite?element/Incompatible?modes=true -s Output/Probe?points="
+  "-s Contact/Model=resolved?sphere -s Geometry/Adaptive?refinement?cycles=1 -s Output/Probe?points="
+  "-s Contact/Model=resolved?sphere -s Geometry/Adaptive?refinement?cycles=2 -s Output/Probe?points="
+  "-s Contact/Model=resolved?sphere -s Geometry/Adaptive?refinement?cycles=1 -s Finite?element/Incompatible?modes=true -s Output/Probe?points="
   "-s Contact/Model=resolved?sphere -s Geometry/Contact?refinement?levels=7 -s Time?integration/End?time=400e-6"
   "-s Geometry/Contact?refinement?levels=7 -s Time?integration/End?time=400e-6"
 )
@@ -45,6 +52,12 @@ for ((run = 0; run < n; ++run)); do
       echo "${labels[$k]}: peak force $(summary_value "$dir" peak_contact_force_N) N," \
         "estimate $(summary_value "$dir" peak_contact_force_error_estimate)," \
         "levels $(cut -d, -f2 "$dir/convergence.csv" | tail -n +2 | tr '\n' ' ')"
+    fi
+    if [ -f "$dir/adaptation.csv" ]; then
+      echo "${labels[$k]}: peak force $(summary_value "$dir" peak_contact_force_N) N," \
+        "departure $(summary_value "$dir" departure_velocity_m_s) m/s," \
+        "mid-plane $(summary_value "$dir" max_midplane_deflection_um) um," \
+        "DoFs $(cut -d, -f3 "$dir/adaptation.csv" | tail -n +2 | tr '\n' ' ')"
     fi
   done
 done
