@@ -3,7 +3,8 @@
 # --help exits 0 and names every figure it writes; a bad command line
 # exits 2 with one error line; with matplotlib installed, it draws a small
 # run's figures in svg and pdf (file signatures checked) for a time window,
-# and scripts/plot_convergence.py an Accuracy = converged run's figure.
+# and scripts/plot_convergence.py an Accuracy = converged run's figure and
+# an adaptive run's.
 # Skips cleanly (exit 0, a note) without python3 or matplotlib (a machine that does not
 # install python3-matplotlib (CI does).  Usage: scripts/check_plot_histories.sh [BUILD_DIR]
 set -euo pipefail
@@ -214,9 +215,43 @@ check "energy's data: the stacked areas are history.csv's energies, the top the 
 figure=$("$python" scripts/plot_convergence.py --format svg "$work/conv")
 check "plot_convergence.py draws convergence.svg" grep -q "<svg" "$figure"
 
+# scripts/plot_convergence.py on an adaptive run (one cycle on the small
+# scene with the resolved sphere): the points drawn are adaptation.csv's,
+# each number against the DoFs, the pilot runs and the final run apart.
+"$build/fgimpact" tests/run/default_small.prm -s "Output/Directory=$work/adapt" \
+  -s "Contact/Model=resolved sphere" -s "Geometry/Contact refinement levels=3" \
+  -s "Geometry/Adaptive refinement cycles=1" -s "Output/Probe points=" \
+  -s "Output/VTU interval=0" -s "Output/Log interval=0" \
+  -s "Output/Print timing=false" >/dev/null
+"$python" scripts/plot_convergence.py --format svg --data "$work/adapt" >/dev/null
+adaptation_data_matches() { # RUN_DIR
+  "$python" - "$1" <<'PY'
+import csv, sys
+run = sys.argv[1]
+rows = list(csv.DictReader(open(run + "/adaptation.csv", newline="")))
+drawn = {}
+for r in csv.DictReader(open(run + "/figures/adaptation.data.csv", newline="")):
+    drawn.setdefault((int(r["axes"]), r["curve"]), []).append(
+        (float(r["x"]), float(r["y"])))
+columns = ["peak_contact_force_N", "contact_duration_us", "departure_velocity_m_s",
+           "max_midplane_deflection_um", "max_approach_um"]
+ok = len(rows) == 2
+for k, c in enumerate(columns):
+    want = [(float(r["n_dofs"]), float(r[c])) for r in rows]
+    ok = ok and drawn.get((k, "pilot runs")) == want[:-1] and \
+        drawn.get((k, "final run")) == want[-1:]
+print("  adaptation: %d runs, 5 numbers against the DoFs: equal to "
+      "adaptation.csv: %s" % (len(rows), "yes" if ok else "NO"))
+sys.exit(0 if ok else 1)
+PY
+}
+check "plot_convergence.py draws adaptation.svg" grep -q "<svg" "$work/adapt/figures/adaptation.svg"
+check "adaptation's data: adaptation.csv's runs" adaptation_data_matches "$work/adapt"
+
 # Plain CSV (issue 25): Python's csv.DictReader, without options, gives the
 # documented column names (no space after the separator) in every CSV the
-# program writes: history.csv, probes.csv, convergence.csv, study.csv.
+# program writes: history.csv, probes.csv, convergence.csv, adaptation.csv,
+# study.csv.
 "$build/fgimpact" tests/run/default_small.prm -s "Output/Directory=$work/study" \
   -s "Output/VTU interval=0" -s "Output/Log interval=0" \
   -s "Output/Print timing=false" --study "Impactor/Initial velocity=1,2" >/dev/null
@@ -236,6 +271,8 @@ check "csv.DictReader reads probes.csv's keys" \
   dict_reader "$work/run/probes.csv" t_us
 check "csv.DictReader reads convergence.csv's keys" \
   dict_reader "$work/conv/convergence.csv" contact_refinement_levels peak_contact_force_N
+check "csv.DictReader reads adaptation.csv's keys" \
+  dict_reader "$work/adapt/adaptation.csv" n_cells n_dofs refined_cells peak_contact_force_N
 check "csv.DictReader reads study.csv's keys" \
   dict_reader "$work/study/study.csv" "Impactor/Initial velocity" peak_contact_force_N
 # study.csv's number columns hold numbers or nothing (issue 41): a column

@@ -6,10 +6,17 @@ on refined base meshes as points, the final run at half the step marked
 apart), with the final value and its estimated error band from
 summary.txt.
 
+An adaptive run's directory (Geometry/Adaptive refinement cycles, its
+adaptation.csv) gives instead each headline number against the DoFs of
+its runs: the pilot runs and the final one (no error band: the run
+prints no estimate), figures/adaptation.<format>.
+
 Usage: /usr/bin/python3 scripts/plot_convergence.py OUTPUT_DIR
-           [--format png|pdf|svg]
-Writes OUTPUT_DIR/figures/convergence.<format>.  Needs matplotlib
-(Debian's /usr/bin/python3 with python3-matplotlib)."""
+           [--format png|pdf|svg] [--data]
+Writes OUTPUT_DIR/figures/convergence.<format> (or adaptation.<format>;
+with --data also adaptation.data.csv, the points drawn: columns
+figure,axes,curve,x,y).  Needs matplotlib (Debian's /usr/bin/python3
+with python3-matplotlib)."""
 
 import argparse
 import csv
@@ -37,10 +44,56 @@ def summary(directory):
     return values
 
 
+def save(fig, directory, name, fmt, points):
+    """figures/NAME.FMT and, with points, NAME.data.csv."""
+    out = os.path.join(directory, "figures")
+    os.makedirs(out, exist_ok=True)
+    path = os.path.join(out, f"{name}.{fmt}")
+    fig.savefig(path, dpi=150)
+    if points is not None:
+        with open(os.path.join(out, f"{name}.data.csv"), "w", newline="") as f:
+            w = csv.writer(f)
+            w.writerow(["figure", "axes", "curve", "x", "y"])
+            for row in points:
+                w.writerow([name] + [repr(v) if isinstance(v, float) else v
+                                     for v in row])
+    print(path)
+
+
+def plot_adaptation(args, plt):
+    """Each headline number against the DoFs of the adaptive runs."""
+    with open(os.path.join(args.directory, "adaptation.csv"), newline="") as f:
+        rows = list(csv.DictReader(f))
+    s = summary(args.directory)
+    pilots, final = rows[:-1], rows[-1]
+    points = []
+    fig, axes = plt.subplots(1, len(QUANTITIES), figsize=(3.6 * len(QUANTITIES), 3.4))
+    for k, (ax, (column, label, key)) in enumerate(zip(axes, QUANTITIES)):
+        for curve, runs, style in (("pilot runs", pilots, "o-"),
+                                   ("final run", [final], "s")):
+            x = [float(r["n_dofs"]) for r in runs]
+            y = [float(r[column]) for r in runs]
+            ax.plot(x, y, style, label=curve)
+            points += [(k, curve, a, b) for a, b in zip(x, y)]
+        ax.set_xscale("log")
+        ax.set_xlabel("DoFs")
+        ax.set_ylabel(label)
+        ax.grid(True, alpha=0.3)
+    axes[0].legend(fontsize=6)
+    fig.suptitle(f"adaptive mesh, {s.get('adaptive_refinement_cycles', '?')} cycles "
+                 f"of fraction {s.get('adaptive_refinement_fraction', '?')}: "
+                 f"{args.directory}", fontsize=9)
+    fig.tight_layout()
+    save(fig, args.directory, "adaptation", args.format,
+         points if args.data else None)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("directory", help="Output/Directory of the run")
     parser.add_argument("--format", default="png", choices=["png", "pdf", "svg"])
+    parser.add_argument("--data", action="store_true",
+                        help="also write the points drawn, NAME.data.csv")
     args = parser.parse_args()
     try:
         import matplotlib
@@ -48,6 +101,9 @@ def main():
         import matplotlib.pyplot as plt
     except ImportError:
         sys.exit("plot_convergence.py: matplotlib is missing (use /usr/bin/python3)")
+    if os.path.exists(os.path.join(args.directory, "adaptation.csv")):
+        plot_adaptation(args, plt)
+        return
     with open(os.path.join(args.directory, "convergence.csv"), newline="") as f:
         rows = list(csv.DictReader(f))
     final = rows[-1]
@@ -81,11 +137,7 @@ def main():
     fig.suptitle(f"Accuracy = converged, tolerance {float(s['accuracy_tolerance']):.2%}: "
                  f"{args.directory}", fontsize=9)
     fig.tight_layout()
-    out = os.path.join(args.directory, "figures")
-    os.makedirs(out, exist_ok=True)
-    name = os.path.join(out, f"convergence.{args.format}")
-    fig.savefig(name, dpi=150)
-    print(name)
+    save(fig, args.directory, "convergence", args.format, None)
 
 
 if __name__ == "__main__":
