@@ -24,8 +24,9 @@
 //      refined three times in every direction with the same contact level
 //      as the reference, which has more DoFs (0.20 % on 14,403 DoFs
 //      against 0.37 % on 23,328, and 6.3 % on the input mesh).
-// The same output on 1 and 2 MPI ranks (the cells to refine gathered from
-// every rank by id; each rank writes its VTU piece).
+// On 2 MPI ranks (1), (2) and (3) up to the VTU, with the same output (the
+// cells to refine gathered from every rank by id; each rank writes its VTU
+// piece); the accuracy against the reference is the one-rank run's.
 // Set FGIMPACT_VERBOSE=1 to print the numbers.
 
 #include <deal.II/base/function.h>
@@ -308,6 +309,11 @@ namespace fgimpact_unit_tests::adaptive_mesh
                   check.vertices.size(),
                   vtu ? "yes" : "NO");
       files = files && vtu;
+      // On several ranks the distribution is what is checked: the
+      // accuracy is the one-rank run's (and two reference runs on two
+      // ranks would double the test's share of a loaded CI machine).
+      if (n_ranks > 1)
+        return files;
 
       const auto   reference    = numbers_of("out_reference/summary.txt");
       const auto   uniform      = numbers_of("out_uniform/summary.txt");
@@ -368,14 +374,17 @@ namespace fgimpact_unit_tests::adaptive_mesh
           " set VTU interval = 50\n set VTU compression = none\n"
           " set Mirror symmetric part = false\n"
           " set Fields = displacement, velocity, acceleration, stress\nend\n");
-      fgimpact_tests::run_quietly(
-        "",
-        scene(4 * nx, levels + 1) +
-          "subsection Output\n set Directory = out_reference\nend\n");
-      fgimpact_tests::run_quietly(
-        "",
-        scene(3 * nx, levels + 1) +
-          "subsection Output\n set Directory = out_uniform\nend\n");
+      if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1)
+        {
+          fgimpact_tests::run_quietly(
+            "",
+            scene(4 * nx, levels + 1) +
+              "subsection Output\n set Directory = out_reference\nend\n");
+          fgimpact_tests::run_quietly(
+            "",
+            scene(3 * nx, levels + 1) +
+              "subsection Output\n set Directory = out_uniform\nend\n");
+        }
       const bool ok = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0 ||
                       check_three(nx, levels, fraction);
       return Utilities::MPI::broadcast(MPI_COMM_WORLD, ok, 0);
