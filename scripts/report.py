@@ -17,7 +17,8 @@ SVG, the pictures embedded as data URIs) that holds
     the deflections against time, from history.csv;
   * the pictures of scripts/render.sh (OUTPUT_DIR/pictures/*.png), when
     they were made;
-  * the convergence table (convergence.csv) of a converged run;
+  * the convergence table (convergence.csv) of a converged run, the
+    runs of an adaptive one (adaptation.csv);
   * for a study (study.csv): one row per case, linked to its directory.
 
 fgimpact writes it at the end of every run (Output/Report); this script
@@ -503,6 +504,13 @@ def page(directory):
     if convergence:
         parts.append("<h2>Convergence (Accuracy = converged)</h2>")
         parts.append(csv_table(convergence))
+    adaptation = read_csv(os.path.join(directory, "adaptation.csv"))
+    if adaptation:
+        parts.append("<h2>Adaptive mesh (Geometry/Adaptive refinement "
+                     "cycles)</h2><p>The pilot runs, then the final run (the "
+                     "numbers above). The change over the last cycle is no "
+                     "error bound: this run has no estimate.</p>")
+        parts.append(csv_table(adaptation))
     parts.append("<h2>Pictures</h2>" + pictures(directory))
     parts.append("</body></html>\n")
     return "".join(parts)

@@ -14,6 +14,8 @@
 //      rows against each run's summary.txt (convergence/adaptive_cycle_K
 //      and the final one), each cycle refining ceil(fraction N) cells, the
 //      summary's *_change_last_adaptive_cycle recomputed from the CSV;
+//      report.html's table of the runs, and no error bar on a headline
+//      number (the run has no estimate);
 //      the final run's VTU snapshot: one cell per cell of its mesh, and
 //      at every hanging vertex (found from the cells' boxes in the file)
 //      each field the interpolation of its coarse cell's corners;
@@ -232,6 +234,38 @@ namespace fgimpact_unit_tests::adaptive_mesh
       return e;
     }
 
+    /// (3) The run's report.html (scripts/report.py, which Output/Report
+    /// runs at the end of the executable's run): the adaptive runs' table
+    /// with every run's DoFs, and no headline number with an error bar
+    /// (the run has no estimate).
+    bool
+    check_report(const std::vector<std::vector<double>> &rows)
+    {
+      const std::string command = std::string("python3 ") +
+                                  FGIMPACT_SOURCE_DIR "/scripts/report.py " +
+                                  "out_adaptive > /dev/null 2>&1";
+      const bool        written = std::system(command.c_str()) == 0;
+      const std::string html =
+        fgimpact_tests::read_text("out_adaptive/report.html");
+      const std::size_t table = html.find("<h2>Adaptive mesh");
+      bool              ok    = written && table != std::string::npos;
+      for (const auto &row : rows)
+        ok =
+          ok && html.find(">" + std::to_string(static_cast<long>(row[2])) + "<",
+                          table) != std::string::npos;
+      for (const auto &[column, key] : headline())
+        {
+          const std::size_t at = html.find("<code>" + column + "</code>");
+          ok                   = ok && at != std::string::npos &&
+               html.substr(html.rfind("<tr>", at), at - html.rfind("<tr>", at))
+                   .find("±") == std::string::npos;
+        }
+      std::printf("(3) report.html: the adaptive runs' table with each run's "
+                  "DoFs, and no error bar on a headline number: %s\n",
+                  ok ? "yes" : "NO");
+      return ok;
+    }
+
     /// (3) read back on rank 0: the files, the VTU (one piece per rank),
     /// the errors against the reference.
     bool
@@ -308,7 +342,7 @@ namespace fgimpact_unit_tests::adaptive_mesh
                   cells.size(),
                   check.vertices.size(),
                   vtu ? "yes" : "NO");
-      files = files && vtu;
+      files = files && vtu && check_report(rows);
       // On several ranks the distribution is what is checked: the
       // accuracy is the one-rank run's (and two reference runs on two
       // ranks would double the test's share of a loaded CI machine).
