@@ -221,6 +221,11 @@ namespace fgimpact
     out.add("adaptive_refinement_fraction",
             parameters.geometry.adaptive_fraction,
             3);
+    // wall_time_s above is the final run's; the pilots' come on top.
+    double sequence = 0;
+    for (const Run &run : runs)
+      sequence += run.wall_time;
+    out.add("adaptive_sequence_wall_time_s", sequence, 3);
     std::ostringstream log;
     log << "Adaptive mesh: change from the last pilot run to the final one";
     const ImpactResults &a = runs[runs.size() - 2].results,

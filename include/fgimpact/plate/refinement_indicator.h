@@ -16,7 +16,8 @@ namespace fgimpact
    * Where the plate's mesh is too coarse over a whole impact: per active
    * cell, the time integral of Kelly's indicator squared,
    *
-   *   eta_K^2 = int_0^T sum_{F in dK} h_F / 24 int_F |[E(z) du/dn]|^2 dt,
+   *   eta_K^2 = int_0^T sum_{F in dK} h_K / 24 int_F |[E(z) du/dn]|^2 dt,
+   *   (h_K the cell's diagonal: deal.II's cell_diameter_over_24)
    *
    * the jump of the displacement gradient across the cell's faces weighted
    * by the graded modulus E(z) (GPa), a traction jump for a constant
