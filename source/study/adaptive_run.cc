@@ -240,7 +240,15 @@ namespace fgimpact
       }
     pcout << log.str() << '\n';
     summary.write(out);
+    write_csv();
+  }
 
+
+
+  void
+  AdaptiveRun::write_csv() const
+  {
+    const auto        &quantities = ConvergedRun::quantities();
     std::ostringstream csv;
     csv << "run,n_cells,n_dofs,element_size_under_ball_mm";
     for (const auto &q : quantities)

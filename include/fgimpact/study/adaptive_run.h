@@ -96,8 +96,13 @@ namespace fgimpact
     void
     run_final();
 
+    /// The keys appended to summary.txt, the log's line, adaptation.csv.
     void
     write_outputs() const;
+
+    /// adaptation.csv: one row per run, the final run last.
+    void
+    write_csv() const;
 
     const Parameters                              parameters;
     const MPI_Comm                                communicator;
