@@ -18,7 +18,8 @@ SVG, the pictures embedded as data URIs) that holds
   * the pictures of scripts/render.sh (OUTPUT_DIR/pictures/*.png), when
     they were made;
   * the convergence table (convergence.csv) of a converged run, the
-    runs of an adaptive one (adaptation.csv);
+    runs of an adaptive one (adaptation.csv) and its estimate's checks
+    (adaptive_estimate.csv);
   * for a study (study.csv): one row per case, linked to its directory.
 
 fgimpact writes it at the end of every run (Output/Report); this script
@@ -506,11 +507,20 @@ def page(directory):
         parts.append(csv_table(convergence))
     adaptation = read_csv(os.path.join(directory, "adaptation.csv"))
     if adaptation:
+        checks = read_csv(os.path.join(directory, "adaptive_estimate.csv"))
         parts.append("<h2>Adaptive mesh (Geometry/Adaptive refinement "
                      "cycles)</h2><p>The pilot runs, then the final run (the "
                      "numbers above). The change over the last cycle is no "
-                     "error bound: this run has no estimate.</p>")
+                     "error bound%s</p>" % (
+                         ": the error estimates above come from the check "
+                         "runs below, one source each." if checks else
+                         ": this run has no estimate (Geometry/Adaptive "
+                         "refinement estimate)."))
         parts.append(csv_table(adaptation))
+        if checks:
+            parts.append("<h3>Error estimate: the final run and its check "
+                         "runs (adaptive_estimate.csv)</h3>")
+            parts.append(csv_table(checks))
     parts.append("<h2>Pictures</h2>" + pictures(directory))
     parts.append("</body></html>\n")
     return "".join(parts)

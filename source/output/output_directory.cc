@@ -82,7 +82,8 @@ namespace fgimpact
           name == "contact.pvd" || name == "contact_pressure.csv" ||
           name == "peak_fields.pvtu" || name == "study.csv" ||
           name == "convergence.csv" || name == "adaptation.csv" ||
-          name == "summary.json" || name == "report.html")
+          name == "adaptive_estimate.csv" || name == "summary.json" ||
+          name == "report.html")
         return true;
       // peak_fields.R.vtu
       if (name.rfind("peak_fields.", 0) == 0 && ends_with(name, ".vtu") &&
@@ -167,7 +168,8 @@ namespace fgimpact
 
     /// Whether name is one of Accuracy = converged's run directories:
     /// level_N (the input's mesh) or base_NXxNYxNZ_level_N; or an adaptive
-    /// mesh's pilot run: adaptive_cycle_N.
+    /// mesh's pilot run, adaptive_cycle_N, or its estimate's check,
+    /// adaptive_check_NAME.
     bool
     is_convergence_run(const std::string &name)
     {
@@ -178,6 +180,10 @@ namespace fgimpact
         return at > from;
       };
       std::size_t at = 0;
+      if (name == "adaptive_check_contact_zone" ||
+          name == "adaptive_check_rest_of_plate" ||
+          name == "adaptive_check_time_step")
+        return true;
       if (name.rfind("adaptive_cycle_", 0) == 0)
         {
           at = 15;

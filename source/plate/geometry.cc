@@ -207,7 +207,8 @@ namespace fgimpact
               "refinement fraction of the cells with the largest value are "
               "split in eight (hanging nodes) for the next run. The pilot "
               "runs write history.csv and summary.txt into "
-              "Output/Directory/adaptive/cycle_K, and adaptation.csv lists "
+              "Output/Directory/convergence/adaptive_cycle_K, and "
+              "adaptation.csv lists "
               "every run. 0 = none.");
         t.add("Adaptive refinement fraction",
               &P::adaptive_fraction,
@@ -215,6 +216,21 @@ namespace fgimpact
               "The fraction of the cells (by count) each adaptive cycle "
               "refines: each cycle adds about 7 times this fraction of the "
               "cells. 1 = uniform refinement.");
+        t.add("Adaptive refinement estimate",
+              &P::adaptive_estimate,
+              Patterns::Bool(),
+              "With Adaptive refinement cycles > 0: bound the final run's "
+              "error by three more runs into Output/Directory/convergence, "
+              "one per source: adaptive_check_contact_zone (the final mesh "
+              "with the cells one more contact level would split split), "
+              "adaptive_check_rest_of_plate (every other cell split: about "
+              "8 times the DoFs, the costliest), adaptive_check_time_step "
+              "(half the time step). Each source's relative estimate is a "
+              "two-grid grid convergence index of the coarser run, "
+              "3 |q_check - q| r^p / (r^p - 1) / |q| (p = 1 for the mesh, 2 "
+              "for Newmark's time step); summary.txt gets each headline "
+              "number's KEY_error_estimate (their sum) and its three parts, "
+              "adaptive_estimate.csv the check runs.");
         return t;
       }();
       return table;
@@ -305,6 +321,35 @@ namespace fgimpact
 
 
 
+  namespace
+  {
+    /// Whether refine_locally() splits cell in a pass whose finest level
+    /// is `finest`: a cell of that level whose distance from the centre is
+    /// below radius + 2 h_cell.
+    bool
+    in_contact_core(const Triangulation<3>::active_cell_iterator &cell,
+                    const LocalRefinement                        &refinement,
+                    const unsigned int                            finest)
+    {
+      if (static_cast<unsigned int>(cell->level()) != finest)
+        return false;
+      // Distance from the centre to the brick (axis-aligned).
+      const BoundingBox<3> box = cell->bounding_box();
+      double               d2  = 0;
+      for (unsigned int d = 0; d < 3; ++d)
+        {
+          const double c = refinement.centre[d];
+          const double dd =
+            std::max({box.lower_bound(d) - c, 0., c - box.upper_bound(d)});
+          d2 += dd * dd;
+        }
+      const double h = cell->extent_in_direction(0);
+      return std::sqrt(d2) < refinement.radius + 2. * h;
+    }
+  } // namespace
+
+
+
   void
   PlateGeometry::refine_locally(Triangulation<3>      &triangulation,
                                 const LocalRefinement &refinement)
@@ -314,24 +359,28 @@ namespace fgimpact
         const unsigned int finest = triangulation.n_global_levels() - 1;
         for (const auto &cell : triangulation.active_cell_iterators())
           if (cell->is_locally_owned() &&
-              static_cast<unsigned int>(cell->level()) == finest)
-            {
-              // Distance from the centre to the brick (axis-aligned).
-              const BoundingBox<3> box = cell->bounding_box();
-              double               d2  = 0;
-              for (unsigned int d = 0; d < 3; ++d)
-                {
-                  const double c  = refinement.centre[d];
-                  const double dd = std::max(
-                    {box.lower_bound(d) - c, 0., c - box.upper_bound(d)});
-                  d2 += dd * dd;
-                }
-              const double h = cell->extent_in_direction(0);
-              if (std::sqrt(d2) < refinement.radius + 2. * h)
-                cell->set_refine_flag();
-            }
+              in_contact_core(cell, refinement, finest))
+            cell->set_refine_flag();
         triangulation.execute_coarsening_and_refinement();
       }
+  }
+
+
+
+  void
+  PlateGeometry::split_cells(Triangulation<3>      &triangulation,
+                             const LocalRefinement &refinement,
+                             const MeshSplit        split)
+  {
+    if (split == MeshSplit::none)
+      return;
+    const unsigned int finest = triangulation.n_global_levels() - 1;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          in_contact_core(cell, refinement, finest) ==
+            (split == MeshSplit::contact_zone))
+        cell->set_refine_flag();
+    triangulation.execute_coarsening_and_refinement();
   }
 
 

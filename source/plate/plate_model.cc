@@ -80,12 +80,14 @@ namespace fgimpact
   void
   PlateModel::setup(
     const LocalRefinement                       &refinement,
-    const std::vector<std::vector<std::string>> &adaptive_cycles)
+    const std::vector<std::vector<std::string>> &adaptive_cycles,
+    const MeshSplit                              split)
   {
     this->refinement = refinement;
     geometry.create_triangulation(triangulation);
     PlateGeometry::refine_locally(triangulation, refinement);
     PlateGeometry::refine_cells(triangulation, adaptive_cycles);
+    PlateGeometry::split_cells(triangulation, refinement, split);
     dof_handler.distribute_dofs(fe);
     locally_owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant);

@@ -68,6 +68,10 @@ namespace fgimpact
   void
   check_adaptive_mesh(const Parameters &p)
   {
+    AssertThrow(!p.geometry.adaptive_estimate || p.geometry.adaptive_cycles > 0,
+                ExcMessage("Geometry/Adaptive refinement estimate = true "
+                           "needs Adaptive refinement cycles > 0; set it to "
+                           "false or give the cycles."));
     if (p.geometry.adaptive_cycles == 0)
       return;
     const std::string name = "Geometry/Adaptive refinement cycles > 0";

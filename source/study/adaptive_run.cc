@@ -38,16 +38,15 @@ namespace fgimpact
 
 
   Parameters
-  AdaptiveRun::parameters_of(const unsigned int cycle, const bool final) const
+  AdaptiveRun::parameters_of(const std::string &name) const
   {
     Parameters p               = parameters;
     p.geometry.adaptive_cycles = 0; // the runs themselves are plain ones
     // No checkpoints: the sequence cannot be resumed (--resume refuses it).
     p.output.checkpoint_interval = 0;
-    if (final)
+    if (name.empty())
       return p;
-    p.output.directory = parameters.output.directory +
-                         "/convergence/adaptive_cycle_" + std::to_string(cycle);
+    p.output.directory = parameters.output.directory + "/convergence/" + name;
     p.output.vtu_interval   = 0;
     p.output.snapshot_times = {};
     p.output.peak_snapshot  = false;
@@ -61,16 +60,21 @@ namespace fgimpact
   {
     // The first pilot run's set-up checks the input (the mesh included)
     // before anything is written.
-    first = std::make_unique<Simulator>(parameters_of(0, false), communicator);
+    first = std::make_unique<Simulator>(parameters_of("adaptive_cycle_0"),
+                                        communicator);
     first->record_refinement_indicator();
     first->setup();
     // Each cycle splits ceil(fraction n) cells into eight: the final mesh
     // has about (1 + 7 fraction)^N times the input's cells (p4est's
     // balance adds a few: 14,828 for 14,808 on the default scene).
-    const auto &g = parameters.geometry;
-    check_fits(first->n_active_cells() *
-                 std::pow(1. + 7. * g.adaptive_fraction, g.adaptive_cycles),
-               "the final mesh, expected");
+    const auto  &g = parameters.geometry;
+    const double final_cells =
+      first->n_active_cells() *
+      std::pow(1. + 7. * g.adaptive_fraction, g.adaptive_cycles);
+    check_fits(final_cells, "the final mesh, expected");
+    // The rest_of_plate check splits nearly every cell of it.
+    if (g.adaptive_estimate)
+      check_fits(8. * final_cells, "its estimate's rest_of_plate check");
   }
 
 
@@ -78,7 +82,7 @@ namespace fgimpact
   void
   AdaptiveRun::check_fits(const double n_cells, const std::string &what) const
   {
-    const Parameters p = parameters_of(0, true);
+    const Parameters p = parameters_of("");
     ResourceEstimate e =
       estimate_resources(p, contact_refinement_of(p, scene_without_mesh(p)));
     const double ratio = n_cells / e.n_cells;
@@ -120,7 +124,8 @@ namespace fgimpact
   void
   AdaptiveRun::run_pilot(const unsigned int cycle)
   {
-    const Parameters           p = parameters_of(cycle, false);
+    const Parameters p =
+      parameters_of("adaptive_cycle_" + std::to_string(cycle));
     Timer                      timer;
     std::unique_ptr<Simulator> simulator = std::move(first);
     if (!simulator)
@@ -135,8 +140,9 @@ namespace fgimpact
     run_on_root(communicator, [&]() { prepare_output_directory(p.output); });
     simulator->run();
     Run run;
-    run.results = simulator->get_results();
-    run.n_cells = simulator->n_active_cells();
+    run.results   = simulator->get_results();
+    run.n_cells   = simulator->n_active_cells();
+    run.time_step = p.time_integration.time_step;
     refined.push_back(simulator->refinement_indicator().cells_to_refine(
       parameters.geometry.adaptive_fraction));
     run.n_refined = refined.back().size();
@@ -159,7 +165,7 @@ namespace fgimpact
   {
     check_fits(runs.back().n_cells + 7. * runs.back().n_refined,
                "the final mesh");
-    const Parameters p = parameters_of(0, true);
+    const Parameters p = parameters_of("");
     Timer            timer;
     Simulator        simulator(p, communicator);
     simulator.set_adaptive_mesh(refined);
@@ -173,6 +179,7 @@ namespace fgimpact
     Run run;
     run.results     = simulator.get_results();
     run.n_cells     = simulator.n_active_cells();
+    run.time_step   = p.time_integration.time_step;
     run.wall_time   = timer.wall_time();
     summary_entries = simulator.summary().entries();
     runs.push_back(run);
@@ -189,6 +196,9 @@ namespace fgimpact
         for (unsigned int cycle = 0; cycle < cycles; ++cycle)
           run_pilot(cycle);
         run_final();
+        if (parameters.geometry.adaptive_estimate)
+          for (unsigned int check = 0; check < n_checks; ++check)
+            checks.push_back(run_check(check));
       }
     catch (const RunInterrupted &e)
       {
@@ -197,7 +207,9 @@ namespace fgimpact
         throw RunInterrupted(
           e.signal,
           "Adaptive mesh interrupted by signal " + std::to_string(e.signal) +
-            (final_started ?
+            (runs.size() > cycles ?
+               " in the error estimate's check " + check_name(checks.size()) :
+             final_started ?
                " in the final run" :
                " in pilot cycle " + std::to_string(runs.size() + 1) + " of " +
                  std::to_string(cycles)) +
@@ -239,8 +251,12 @@ namespace fgimpact
             << ConvergedRun::percent(change);
       }
     pcout << log.str() << '\n';
+    if (!checks.empty())
+      write_estimates(out);
     summary.write(out);
     write_csv();
+    if (!checks.empty())
+      write_checks_csv();
   }
 
 

@@ -332,7 +332,7 @@ namespace fgimpact
                                          *geometry,
                                          *material,
                                          mpi_communicator);
-    plate->setup(refinement, adaptive_mesh);
+    plate->setup(refinement, adaptive_mesh, mesh_split);
 
     const PropertyMode mode = parameters.material.property_mode;
     pcout << "fgimpact: FGM plate " << geometry->length() << " x "

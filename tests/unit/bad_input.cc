@@ -416,6 +416,12 @@ namespace fgimpact_unit_tests::bad_input
          "subsection Geometry\n set Adaptive refinement fraction = 0\nend\n",
          1,
          "Adaptive refinement fraction"},
+        {"adaptive estimate without adaptive cycles",
+         "subsection Contact\n set Model = resolved sphere\nend\n"
+         "subsection Geometry\n set Adaptive refinement estimate = true\nend\n",
+         1,
+         "Geometry/Adaptive refinement estimate = true needs Adaptive "
+         "refinement cycles > 0"},
         // Issue 42: SUS304's cubic law for E turns negative near 1490 K.
         {"a named constituent beyond its temperature law",
          "subsection Material\n set Metal material = SUS304\nend\n"

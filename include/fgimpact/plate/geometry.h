@@ -53,6 +53,21 @@ namespace fgimpact
     double contact_radius = 0;
   };
 
+  /// One more refinement of an adaptive run's final mesh, for its error
+  /// estimate (Geometry/Adaptive refinement estimate): every cell is split
+  /// by exactly one of contact_zone and rest_of_plate.
+  enum class MeshSplit
+  {
+    /// None: the mesh as the refinements made it.
+    none,
+    /// The cells one more contact refinement level would split (the finest
+    /// cells within the core radius plus two of their edges).
+    contact_zone,
+    /// Every other cell: the plate's mesh in plane and through the
+    /// thickness, away from the contact.
+    rest_of_plate
+  };
+
   /// The share of the whole plate that a part cut at x = a/2 (cut[0])
   /// and y = b/2 (cut[1]) models: 1, 1/2 or 1/4.
   inline double
@@ -111,6 +126,10 @@ namespace fgimpact
       /// (0: none); the fraction of the cells each cycle refines.
       unsigned int adaptive_cycles   = 0;
       double       adaptive_fraction = 0.2;
+      /// Geometry/Adaptive refinement estimate: three more runs (the final
+      /// mesh's contact zone split, the rest of it split, half the time
+      /// step) bound the final run's error, one source each.
+      bool adaptive_estimate = false;
       /// Geometry/Symmetry as requested (resolve_symmetry(), symmetry.cc,
       /// decides the planes to cut once the whole scene is known).
       Symmetry symmetry = Symmetry::automatic;
@@ -159,6 +178,17 @@ namespace fgimpact
     static void
     refine_cells(Triangulation<3>                            &triangulation,
                  const std::vector<std::vector<std::string>> &cycles);
+
+    /**
+     * Split the cells of `split` once (nothing for MeshSplit::none): the
+     * contact zone is what one more pass of refine_locally() with
+     * refinement's centre and radius splits, the rest of the plate every
+     * other active cell.
+     */
+    static void
+    split_cells(Triangulation<3>      &triangulation,
+                const LocalRefinement &refinement,
+                const MeshSplit        split);
 
     double
     length() const

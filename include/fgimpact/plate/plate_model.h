@@ -68,11 +68,13 @@ namespace fgimpact
                const MPI_Comm                    mpi_communicator);
 
     /// Make the mesh (refined near the impact point as asked, then the
-    /// cells of each adaptive cycle: PlateGeometry::refine_cells()),
-    /// distribute DoFs, build constraints and assemble K, M.
+    /// cells of each adaptive cycle: PlateGeometry::refine_cells(), then
+    /// `split`: PlateGeometry::split_cells()), distribute DoFs, build
+    /// constraints and assemble K, M.
     void
     setup(const LocalRefinement                       &refinement      = {},
-          const std::vector<std::vector<std::string>> &adaptive_cycles = {});
+          const std::vector<std::vector<std::string>> &adaptive_cycles = {},
+          const MeshSplit                              split = MeshSplit::none);
 
     /// The smallest cell edge along x (m), over all ranks.
     double

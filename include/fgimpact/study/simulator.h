@@ -85,11 +85,14 @@ namespace fgimpact
     set_checkpointing(const CheckpointSettings &settings);
 
     /// Build the mesh with the cells of each adaptive cycle refined
-    /// (PlateGeometry::refine_cells()); before setup().
+    /// (PlateGeometry::refine_cells()), then the cells of `split`
+    /// (PlateGeometry::split_cells()); before setup().
     void
-    set_adaptive_mesh(const std::vector<std::vector<std::string>> &cycles)
+    set_adaptive_mesh(const std::vector<std::vector<std::string>> &cycles,
+                      const MeshSplit split = MeshSplit::none)
     {
       adaptive_mesh = cycles;
+      mesh_split    = split;
     }
 
     /// An impact run accumulates the plate's RefinementIndicator; before
@@ -166,6 +169,7 @@ namespace fgimpact
     /// final one, which replace the driver.
     std::unique_ptr<AdaptiveRun>          adaptive;
     std::vector<std::vector<std::string>> adaptive_mesh;
+    MeshSplit                             mesh_split       = MeshSplit::none;
     bool                                  indicator_wanted = false;
     std::unique_ptr<RefinementIndicator>  indicator;
     mutable SummaryFile                   summary_file;
