@@ -9,6 +9,9 @@
 #   adaptive-1, -2   resolved sphere, Geometry/Adaptive refinement cycles
 #                    = 1 and 2 (no estimate: doc/performance.md, section 30);
 #   modes-adaptive-1 adaptive-1 with the incompatible modes;
+#   adaptive-1-estimate, modes-adaptive-1-estimate  the two with Geometry/
+#                    Adaptive refinement estimate (section 31: its three
+#                    check runs cost 11-12 times the sequence);
 # the converged runs without probes, as doc/performance.md's tables (the
 # probes' peak stresses would steer them: section 29);
 #   level7-resolved  resolved sphere at 7 contact refinement levels;
@@ -31,7 +34,8 @@ n=${1:-1}
 root=$(mktemp -d)
 trap 'rm -rf "$root"' EXIT
 labels=(hertz-node converged-1% converged-0.2% modes-1% adaptive-1 adaptive-2
-  modes-adaptive-1 level7-resolved level7-node)
+  modes-adaptive-1 adaptive-1-estimate modes-adaptive-1-estimate
+  level7-resolved level7-node)
 options=(
   ""
   "-s Contact/Model=resolved?sphere -s Accuracy=converged -s Accuracy?tolerance=0.01 -s Output/Probe?points="
@@ -40,6 +44,8 @@ options=(
   "-s Contact/Model=resolved?sphere -s Geometry/Adaptive?refinement?cycles=1 -s Output/Probe?points="
   "-s Contact/Model=resolved?sphere -s Geometry/Adaptive?refinement?cycles=2 -s Output/Probe?points="
   "-s Contact/Model=resolved?sphere -s Geometry/Adaptive?refinement?cycles=1 -s Finite?element/Incompatible?modes=true -s Output/Probe?points="
+  "-s Contact/Model=resolved?sphere -s Geometry/Adaptive?refinement?cycles=1 -s Geometry/Adaptive?refinement?estimate=true -s Output/Probe?points="
+  "-s Contact/Model=resolved?sphere -s Geometry/Adaptive?refinement?cycles=1 -s Geometry/Adaptive?refinement?estimate=true -s Finite?element/Incompatible?modes=true -s Output/Probe?points="
   "-s Contact/Model=resolved?sphere -s Geometry/Contact?refinement?levels=7 -s Time?integration/End?time=400e-6"
   "-s Geometry/Contact?refinement?levels=7 -s Time?integration/End?time=400e-6"
 )
@@ -58,6 +64,10 @@ for ((run = 0; run < n; ++run)); do
         "departure $(summary_value "$dir" departure_velocity_m_s) m/s," \
         "mid-plane $(summary_value "$dir" max_midplane_deflection_um) um," \
         "DoFs $(cut -d, -f3 "$dir/adaptation.csv" | tail -n +2 | tr '\n' ' ')"
+    fi
+    if [ -f "$dir/adaptive_estimate.csv" ]; then
+      echo "${labels[$k]}: largest estimate $(summary_value "$dir" largest_error_estimate)," \
+        "checks $(summary_value "$dir" adaptive_estimate_wall_time_s) s"
     fi
   done
 done

@@ -10,8 +10,8 @@ SVG, the pictures embedded as data URIs) that holds
     picture: the section through the impact point to scale, the plate's
     metal/ceramic gradation and the ball;
   * the headline numbers (summary.json) with their error estimates where
-    the run has them (Accuracy = converged: KEY_error_estimate, and its
-    sources);
+    the run has them (Accuracy = converged, or Geometry/Adaptive
+    refinement estimate: KEY_error_estimate, and its sources);
   * the validity verdicts with their numbers;
   * the contact force, the energies (stacked, with the balance error) and
     the deflections against time, from history.csv;
@@ -348,14 +348,16 @@ def scene_paragraph(prm, s):
 
 
 def headline_table(s):
-    """The headline numbers, with the converged run's error estimates."""
+    """The headline numbers, with the run's error estimates (converged or
+    adaptive)."""
     rows = []
     for key, label, unit in HEADLINE:
         value = number(s.get(key))
         if value is None:
             continue
-        # Accuracy = converged names its estimates by the quantity, without
-        # the unit: peak_contact_force_error_estimate for ..._N.
+        # The estimates (Accuracy = converged, Adaptive refinement
+        # estimate) are named by the quantity, without the unit:
+        # peak_contact_force_error_estimate for ..._N.
         stem = next((key[:-len(u)] for u in UNIT_SUFFIXES if key.endswith(u)),
                     key)
         estimate = number(s.get(stem + "_error_estimate"))
