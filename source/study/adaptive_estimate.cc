@@ -153,15 +153,8 @@ namespace fgimpact
                       r.n_cells,
                       r.results.n_dofs,
                       r.time_step * 1e6);
-        csv << line;
-        for (const auto &q : ConvergedRun::quantities())
-          {
-            std::snprintf(line,
-                          sizeof(line),
-                          ",%.10g",
-                          q.scale * q.value(r.results));
-            csv << line;
-          }
+        csv << line
+            << ConvergedRun::csv_values(ConvergedRun::quantities(), r.results);
         std::snprintf(line, sizeof(line), ",%.3f\n", r.wall_time);
         csv << line;
       }

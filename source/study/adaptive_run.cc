@@ -281,15 +281,7 @@ namespace fgimpact
                       r.n_cells,
                       r.results.n_dofs,
                       r.results.model.element_size_under_ball * 1e3);
-        csv << line;
-        for (const auto &q : quantities)
-          {
-            std::snprintf(line,
-                          sizeof(line),
-                          ",%.10g",
-                          q.scale * q.value(r.results));
-            csv << line;
-          }
+        csv << line << ConvergedRun::csv_values(quantities, r.results);
         std::snprintf(
           line, sizeof(line), ",%u,%.3f\n", r.n_refined, r.wall_time);
         csv << line;

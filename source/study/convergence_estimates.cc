@@ -87,6 +87,22 @@ namespace fgimpact
 
 
 
+  std::string
+  ConvergedRun::csv_values(const std::vector<Quantity> &quantities,
+                           const ImpactResults         &r)
+  {
+    std::string text;
+    for (const Quantity &q : quantities)
+      {
+        char value[40];
+        std::snprintf(value, sizeof(value), ",%.10g", q.scale * q.value(r));
+        text += value;
+      }
+    return text;
+  }
+
+
+
   std::pair<double, std::string>
   ConvergedRun::refinement_error(const std::vector<double> &q)
   {
@@ -328,15 +344,7 @@ namespace fgimpact
                       r.time_step * 1e6,
                       r.results.n_dofs,
                       r.results.model.element_size_under_ball * 1e3);
-        csv << line;
-        for (const Quantity &q : all)
-          {
-            std::snprintf(line,
-                          sizeof(line),
-                          ",%.10g",
-                          q.scale * q.value(r.results));
-            csv << line;
-          }
+        csv << line << csv_values(all, r.results);
         std::snprintf(line, sizeof(line), ",%.3f\n", r.wall_time);
         csv << line;
       }

@@ -25,6 +25,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
+#include <adaptive_scene.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -39,38 +40,13 @@ namespace fgimpact_unit_tests::adaptive_estimate
 
   namespace
   {
-    /// The five headline numbers: CSV column, summary key stem.
-    const std::vector<std::pair<std::string, std::string>> &
-    headline()
-    {
-      static const std::vector<std::pair<std::string, std::string>> h = {
-        {"peak_contact_force_N", "peak_contact_force"},
-        {"contact_duration_us", "contact_duration"},
-        {"departure_velocity_m_s", "departure_velocity"},
-        {"max_midplane_deflection_um", "max_midplane_deflection"},
-        {"max_approach_um", "max_approach"}};
-      return h;
-    }
+    using fgimpact_tests::adaptive::headline;
+    using fgimpact_tests::adaptive::scene;
 
+    /// The check runs, in AdaptiveRun::Check's order.
     const std::array<std::string, 3> checks = {
       {"contact_zone", "rest_of_plate", "time_step"}};
 
-    /// The quarter of the default plate, resolved sphere: base
-    /// NX x NX/2 x NX/10 (whole plate), `levels` under the ball.
-    std::string
-    scene(const unsigned int nx, const unsigned int levels)
-    {
-      return "subsection Geometry\n set Symmetry = quarter\n"
-             " set Subdivisions x = " +
-             std::to_string(nx) +
-             "\n set Subdivisions y = " + std::to_string(nx / 2) +
-             "\n set Subdivisions z = " + std::to_string(nx / 10) +
-             "\n set Contact refinement levels = " + std::to_string(levels) +
-             "\nend\nsubsection Contact\n set Model = resolved sphere\nend\n"
-             "subsection Time integration\n set End time = auto\nend\n"
-             "subsection Output\n set VTU interval = 0\n set Log interval = 0\n"
-             " set Print timing = false\n set Probe points =\nend\n";
-    }
 
     /// A CSV with a text first column: each row's label and numbers by
     /// column name.

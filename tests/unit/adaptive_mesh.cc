@@ -38,6 +38,7 @@
 
 #include <fgimpact/plate/refinement_indicator.h>
 
+#include <adaptive_scene.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -53,6 +54,9 @@ namespace fgimpact_unit_tests::adaptive_mesh
 
   namespace
   {
+    using fgimpact_tests::adaptive::headline;
+    using fgimpact_tests::adaptive::scene;
+
     bool
     verbose()
     {
@@ -183,35 +187,7 @@ namespace fgimpact_unit_tests::adaptive_mesh
       return one && two;
     }
 
-    /// The five headline numbers of a summary.txt, by their CSV column.
-    const std::vector<std::pair<std::string, std::string>> &
-    headline()
-    {
-      static const std::vector<std::pair<std::string, std::string>> h = {
-        {"peak_contact_force_N", "peak_contact_force"},
-        {"contact_duration_us", "contact_duration"},
-        {"departure_velocity_m_s", "departure_velocity"},
-        {"max_midplane_deflection_um", "max_midplane_deflection"},
-        {"max_approach_um", "max_approach"}};
-      return h;
-    }
 
-    /// The quarter of the default plate, resolved sphere: base
-    /// SUBxSUB/2xSUB/10 (whole plate), `levels` under the ball.
-    std::string
-    scene(const unsigned int nx, const unsigned int levels)
-    {
-      return "subsection Geometry\n set Symmetry = quarter\n"
-             " set Subdivisions x = " +
-             std::to_string(nx) +
-             "\n set Subdivisions y = " + std::to_string(nx / 2) +
-             "\n set Subdivisions z = " + std::to_string(nx / 10) +
-             "\n set Contact refinement levels = " + std::to_string(levels) +
-             "\nend\nsubsection Contact\n set Model = resolved sphere\nend\n"
-             "subsection Time integration\n set End time = auto\nend\n"
-             "subsection Output\n set VTU interval = 0\n set Log interval = 0\n"
-             " set Print timing = false\n set Probe points =\nend\n";
-    }
 
     /// The five numbers of a run's summary.txt.
     std::vector<double>

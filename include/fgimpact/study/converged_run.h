@@ -165,6 +165,12 @@ namespace fgimpact
     static std::string
     percent(const double relative);
 
+    /// ",v1,v2,...": each quantity's value of r in its column's unit, 10
+    /// significant digits (convergence.csv, adaptation.csv,
+    /// adaptive_estimate.csv).
+    static std::string
+    csv_values(const std::vector<Quantity> &quantities, const ImpactResults &r);
+
     /// The least observed order Richardson extrapolates with.
     static constexpr double min_order = 0.5;
 
