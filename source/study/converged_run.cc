@@ -44,8 +44,16 @@ namespace fgimpact
   std::vector<ConvergedRun::Quantity>
   ConvergedRun::quantities_of(const ImpactResults &r) const
   {
+    return quantities_of(parameters, r);
+  }
+
+
+
+  std::vector<ConvergedRun::Quantity>
+  ConvergedRun::quantities_of(const Parameters &p, const ImpactResults &r)
+  {
     std::vector<Quantity> all   = quantities();
-    const Point<3>        point = scene_without_mesh(parameters).impact_point();
+    const Point<3>        point = scene_without_mesh(p).impact_point();
     const double reach = r.max_contact_radius + r.model.element_size_under_ball;
     for (std::size_t i = 0; i < r.probe_peaks.size(); ++i)
       {

@@ -13,14 +13,23 @@
 //      the final's step on its mesh;
 //  (3) summary.txt's KEY_error_estimate_NAME recomputed from the CSV's
 //      10 digits (3 |q_check - q| 2^p / (2^p - 1) / |q|, p = 1 for the
-//      mesh, 2 for the time step) and KEY_error_estimate their sum;
-//  (4) every headline number's estimate bounds its error against a run
-//      on a mesh no run used: base 80 x 40 x 8, 5 contact levels;
+//      mesh, 2 for the time step), KEY_error_estimate their sum, for the
+//      headline numbers and the three probes' peak von Mises stresses, and
+//      largest_error_estimate the largest but the top probe's (on the
+//      contact surface);
+//  (4) every estimate bounds its error against a run on a mesh no run
+//      used: base 80 x 40 x 16, 5 contact levels, with the incompatible
+//      modes (the 8-node brick's 80 x 40 x 8 is 8 % low in the bottom
+//      probe's stress, which the modes converge through the thickness:
+//      24.926 MPa on 8 layers, 24.954 on 16; the headline numbers of the
+//      two elements on 80 x 40 x 16 agree within 0.3 %);
 //  (5) report.html (scripts/report.py) gives every headline number an
 //      error bar and shows the checks' table.
-// Measured when written: the smallest ratio of estimate to error is 4.5
-// (modes, approach: 1.48 % error, 6.6 % estimate), the largest error
-// 1.5 %.  Set FGIMPACT_VERBOSE=1 to print the errors and estimates.
+// Measured when written: the smallest ratio of estimate to error is 4.3
+// (brick, bottom probe: 6.86 % error, 29.7 % estimate), 2.0 for the top
+// probe on the contact surface (42.6 %, 83.2 %); the largest headline
+// error 1.36 % (modes, approach; estimate 6.6 %).  Set FGIMPACT_VERBOSE=1
+// to print the errors and estimates.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -42,6 +51,24 @@ namespace fgimpact_unit_tests::adaptive_estimate
   {
     using fgimpact_tests::adaptive::headline;
     using fgimpact_tests::adaptive::scene;
+
+    /// The probes: mid-plane, top face under the ball (on the contact
+    /// surface), bottom face.
+    const std::string probes = "subsection Output\n set Probe points = mid: "
+                               "0.5a, 0.5b, 0.5h; top: 0.5a, 0.5b, 1h; bottom: "
+                               "0.5a, 0.5b, 0h\nend\n";
+
+    /// The numbers estimated: CSV column, summary key stem (the headline
+    /// numbers and the probes' peak von Mises stresses).
+    std::vector<std::pair<std::string, std::string>>
+    quantities()
+    {
+      auto all = headline();
+      for (const std::string name : {"mid", "top", "bottom"})
+        all.push_back({"probe_" + name + "_peak_von_mises_MPa",
+                       "probe_" + name + "_peak_von_mises"});
+      return all;
+    }
 
     /// The check runs, in AdaptiveRun::Check's order.
     const std::array<std::string, 3> checks = {
@@ -85,6 +112,9 @@ namespace fgimpact_unit_tests::adaptive_estimate
               dir + "/summary.txt" :
               dir + "/convergence/adaptive_check_" + label + "/summary.txt");
           ok = ok && std::stod(s.at("n_dofs")) == row.at("n_dofs");
+          // The headline numbers against summary.txt's 7 digits and
+          // adaptation.csv's final row; the probes' stresses against
+          // summary.txt's 3 decimals (MPa).
           for (const auto &[column, key] : headline())
             ok =
               ok &&
@@ -94,6 +124,12 @@ namespace fgimpact_unit_tests::adaptive_estimate
                  adaptation
                    .back()[std::find(header.begin(), header.end(), column) -
                            header.begin()]);
+          for (std::size_t i = headline().size(); i < quantities().size(); ++i)
+            {
+              const std::string column = quantities()[i].first;
+              ok = ok && std::abs(std::stod(s.at(column)) - row.at(column)) <=
+                           5.001e-4;
+            }
         }
       std::printf("  (1) adaptive_estimate.csv against the runs' summary.txt "
                   "and adaptation.csv: %s\n",
@@ -121,7 +157,8 @@ namespace fgimpact_unit_tests::adaptive_estimate
       const auto s    = fgimpact_tests::read_summary(dir + "/summary.txt");
       const auto ref = fgimpact_tests::read_summary(reference + "/summary.txt");
       bool       written = true, bounded = true;
-      for (const auto &[column, key] : headline())
+      double     largest = 0;
+      for (const auto &[column, key] : quantities())
         {
           const double q     = rows[0].second.at(column);
           double       total = 0;
@@ -138,19 +175,26 @@ namespace fgimpact_unit_tests::adaptive_estimate
             }
           const double estimate = std::stod(s.at(key + "_error_estimate"));
           written = written && std::abs(estimate - total) <= 1e-5 * total;
+          // The top probe is on the contact surface: reported, not in the
+          // largest estimate (its recovered stress does not converge).
+          if (key != "probe_top_peak_von_mises")
+            largest = std::max(largest, estimate);
           const double error = std::abs(q / std::stod(ref.at(column)) - 1.);
           bounded            = bounded && error <= estimate;
           if (std::getenv("FGIMPACT_VERBOSE") != nullptr)
-            std::printf("      %-28s error %.4f %%, estimate %.4f %%\n",
+            std::printf("      %-34s error %.4f %%, estimate %.4f %%\n",
                         column.c_str(),
                         100. * error,
                         100. * estimate);
         }
+      written = written && std::abs(std::stod(s.at("largest_error_estimate")) -
+                                    largest) <= 1e-6 * largest;
       std::printf("  (3) each source's estimate and their sum in summary.txt, "
-                  "recomputed from the CSV: %s\n",
+                  "recomputed from the CSV, and the largest but the contact "
+                  "surface's probe: %s\n",
                   written ? "yes" : "NO");
-      std::printf("  (4) every estimate bounds its error against 80x40x8 at "
-                  "level 5: %s\n",
+      std::printf("  (4) every estimate bounds its error against 80x40x16 at "
+                  "level 5 with the modes: %s\n",
                   bounded ? "yes" : "NO");
       return written && bounded;
     }
@@ -190,7 +234,10 @@ namespace fgimpact_unit_tests::adaptive_estimate
     const std::string                reference = "out_reference";
     fgimpact_tests::remove_output(reference);
     fgimpact_tests::run_quietly("",
-                                scene(80, 5) +
+                                scene(80, 5) + probes +
+                                  "subsection Geometry\n set Subdivisions z "
+                                  "= 16\nend\nsubsection Finite element\n "
+                                  "set Incompatible modes = true\nend\n"
                                   "subsection Output\n set Directory = " +
                                   reference + "\nend\n");
     bool ok = true;
@@ -200,7 +247,7 @@ namespace fgimpact_unit_tests::adaptive_estimate
         fgimpact_tests::remove_output(dir);
         fgimpact_tests::run_quietly(
           "",
-          scene(20, 4) +
+          scene(20, 4) + probes +
             "subsection Geometry\n set Adaptive refinement cycles = 1\n"
             " set Adaptive refinement estimate = true\nend\n"
             "subsection Finite element\n set Incompatible modes = " +

@@ -102,6 +102,11 @@ namespace fgimpact
     std::vector<Quantity>
     quantities_of(const ImpactResults &r) const;
 
+    /// quantities_of() for the run of parameters p (the adaptive mesh's
+    /// estimate uses them too).
+    static std::vector<Quantity>
+    quantities_of(const Parameters &p, const ImpactResults &r);
+
     /// A base mesh: Geometry/Subdivisions x and y times in_plane,
     /// Subdivisions z times thickness.
     struct BaseMesh
