@@ -197,8 +197,13 @@ namespace fgimpact
           run_pilot(cycle);
         run_final();
         if (parameters.geometry.adaptive_estimate)
-          for (unsigned int check = 0; check < n_checks; ++check)
-            checks.push_back(run_check(check));
+          {
+            // The sequence's outputs first: a check that fails or is
+            // interrupted leaves them complete (without the estimate).
+            write_outputs();
+            for (unsigned int check = 0; check < n_checks; ++check)
+              checks.push_back(run_check(check));
+          }
       }
     catch (const RunInterrupted &e)
       {
@@ -250,8 +255,9 @@ namespace fgimpact
         log << (&q == &quantities.front() ? ": " : ", ") << q.key << ' '
             << ConvergedRun::percent(change);
       }
-    pcout << log.str() << '\n';
-    if (!checks.empty())
+    if (checks.empty()) // not again after the estimate's checks
+      pcout << log.str() << '\n';
+    else
       write_estimates(out);
     summary.write(out);
     write_csv();
