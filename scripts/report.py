@@ -330,7 +330,7 @@ def scene_paragraph(prm, s):
            g("Impactor/Initial velocity")))
     text += (
         "Contact: %s (%s refinement levels, element %s mm under the ball); "
-        "metal %s; %s mesh of Q%s bricks (%s modelled, %s DoFs); time step "
+        "metal %s; %s mesh of Q%s bricks%s (%s modelled, %s DoFs); time step "
         "%s µs (%s). "
         % (s.get("contact_model", "?"), s.get("contact_refinement_levels", 0),
            fmt(number(s.get("element_size_under_ball_mm"))),
@@ -339,6 +339,8 @@ def scene_paragraph(prm, s):
                                            1e-6),
            "×".join(prm.get("Geometry/Subdivisions " + c, "?")
                     for c in "xyz"), s.get("element_degree", 1),
+           "" if s.get("element_technology", "standard") == "standard"
+           else " with " + s["element_technology"],
            s.get("symmetry", "whole plate"), s.get("n_dofs", "?"),
            fmt(number(s.get("time_step_us"))), s.get("scheme", "?")))
     text += ("The run %s at t = %s µs in %s s." %

@@ -46,7 +46,11 @@ namespace fgimpact
     d.time_step                 = time_step;
     d.scheme =
       TimeStepper::scheme_names().name(parameters.time_integration.scheme);
-    d.element_degree  = plate.get_fe().degree;
+    d.element_degree = plate.get_fe().degree;
+    d.element_technology =
+      plate.uses_incompatible_modes() ?
+        "incompatible modes" :
+        (plate.uses_mean_dilatation() ? "mean dilatation" : "standard");
     d.symmetry        = g.part_name();
     d.property_mode   = property_mode_names().name(m.property_mode);
     d.gradation       = gradation_names().name(m.gradation);

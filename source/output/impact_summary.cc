@@ -83,6 +83,8 @@ namespace fgimpact
         number("element_degree",
                0,
                [](const R &r) { return double(r.model.element_degree); }),
+        text("element_technology",
+             [](const R &r, const C &) { return r.model.element_technology; }),
         text("symmetry",
              [](const R &r, const C &) { return r.model.symmetry; }),
         text("property_mode",

@@ -338,8 +338,11 @@ namespace fgimpact
     pcout << "fgimpact: FGM plate " << geometry->length() << " x "
           << geometry->width() << " x " << geometry->thickness() << " m, "
           << plate->n_active_cells() << " cells, " << plate->n_dofs()
-          << " DoFs (Q" << plate->get_fe().degree << ", "
-          << property_mode_names().name(mode)
+          << " DoFs (Q" << plate->get_fe().degree
+          << (plate->uses_incompatible_modes() ? " with incompatible modes" :
+              plate->uses_mean_dilatation()    ? " with mean dilatation" :
+                                                 "")
+          << ", " << property_mode_names().name(mode)
           << " elements), n = " << parameters.material.power_law_index << '\n';
     const unsigned int n_ranks =
       Utilities::MPI::n_mpi_processes(mpi_communicator);

@@ -23,11 +23,15 @@ namespace fgimpact
     double       time_step                 = 0; // s
     std::string  scheme;                        // implicit | explicit
     unsigned int element_degree = 1;
-    std::string  symmetry;      // the part modelled: none | half | quarter
-    std::string  property_mode; // graded | homogeneous | pointwise
-    std::string  gradation;     // power law | exponential | sigmoid | ...
-    double       power_law_index = 0;
-    std::string  homogenization;
+    /// standard | incompatible modes | mean dilatation (Finite element/
+    /// Incompatible modes, Volumetric strain): what the element is beyond
+    /// its degree.
+    std::string element_technology = "standard";
+    std::string symmetry;      // the part modelled: none | half | quarter
+    std::string property_mode; // graded | homogeneous | pointwise
+    std::string gradation;     // power law | exponential | sigmoid | ...
+    double      power_law_index = 0;
+    std::string homogenization;
     /// For the validity checks (not written): the ball's radius and the
     /// plate's thickness (m).
     double impactor_radius = 0, thickness = 0;
