@@ -229,8 +229,9 @@ namespace fgimpact
               "two-grid grid convergence index of the coarser run, "
               "3 |q_check - q| r^p / (r^p - 1) / |q| (p = 1 for the mesh, 2 "
               "for Newmark's time step); summary.txt gets each headline "
-              "number's KEY_error_estimate (their sum) and its three parts, "
-              "adaptive_estimate.csv the check runs.");
+              "number's and each probe's peak stress's KEY_error_estimate "
+              "(their sum) and its three parts, adaptive_estimate.csv the "
+              "check runs.");
         return t;
       }();
       return table;

@@ -40,6 +40,33 @@ namespace fgimpact
 
 
 
+  void
+  AdaptiveRun::run_checks()
+  {
+    // The sequence's outputs first: they are complete whatever the checks
+    // do.  A check that fails or is interrupted then marks summary.txt
+    // failed or interrupted (as the exit code says), naming the check; the
+    // final run's numbers stay, without an estimate.
+    write_outputs();
+    try
+      {
+        for (unsigned int check = 0; check < n_checks; ++check)
+          checks.push_back(run_check(check));
+      }
+    catch (const RunInterrupted &)
+      {
+        write_outputs("interrupted");
+        throw;
+      }
+    catch (...)
+      {
+        write_outputs("failed");
+        throw;
+      }
+  }
+
+
+
   AdaptiveRun::Run
   AdaptiveRun::run_check(const unsigned int check)
   {
@@ -53,16 +80,44 @@ namespace fgimpact
       p.time_integration.time_step /= 2.;
     Timer timer;
     Run   run;
-    {
-      Simulator simulator(p, communicator);
-      simulator.set_adaptive_mesh(refined, split);
-      simulator.setup();
-      run_on_root(communicator, [&]() { prepare_output_directory(p.output); });
-      simulator.run();
-      run.results   = simulator.get_results();
-      run.n_cells   = simulator.n_active_cells();
-      run.time_step = p.time_integration.time_step;
-    }
+    try
+      {
+        Simulator simulator(p, communicator);
+        simulator.set_adaptive_mesh(refined, split);
+        simulator.setup();
+        run_on_root(communicator,
+                    [&]() { prepare_output_directory(p.output); });
+        simulator.run();
+        run.results   = simulator.get_results();
+        run.n_cells   = simulator.n_active_cells();
+        run.time_step = p.time_integration.time_step;
+      }
+    catch (...)
+      {
+        // The check's own line names its step and entry; without this
+        // prefix it would read as the final run's, whose outputs are
+        // complete.
+        const std::exception_ptr failure = std::current_exception();
+        try
+          {
+            std::rethrow_exception(failure);
+          }
+        catch (const ExcOutputFailure &)
+          {
+            throw; // names its file already
+          }
+        catch (...)
+          {
+            // A signal (RunInterrupted: run() names the check) or bad
+            // input stays as it is.
+            if (!is_run_failure(failure))
+              throw;
+          }
+        throw ExcNumericalFailure(
+          "Geometry/Adaptive refinement estimate, check " + check_name(check) +
+          " (the final run's outputs are complete, without the estimate): " +
+          failure_message(failure));
+      }
     malloc_trim(0); // the freed heap back to the system before the next run
     run.wall_time = timer.wall_time();
     pcout << "Adaptive mesh: estimate's check " << check_name(check) << " on "

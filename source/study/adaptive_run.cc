@@ -197,13 +197,7 @@ namespace fgimpact
           run_pilot(cycle);
         run_final();
         if (parameters.geometry.adaptive_estimate)
-          {
-            // The sequence's outputs first: a check that fails or is
-            // interrupted leaves them complete (without the estimate).
-            write_outputs();
-            for (unsigned int check = 0; check < n_checks; ++check)
-              checks.push_back(run_check(check));
-          }
+          run_checks();
       }
     catch (const RunInterrupted &e)
       {
@@ -227,12 +221,15 @@ namespace fgimpact
 
 
   void
-  AdaptiveRun::write_outputs() const
+  AdaptiveRun::write_outputs(const std::string &status) const
   {
     const auto   &quantities = ConvergedRun::quantities();
     SummaryWriter out;
     for (const auto &[key, value] : summary_entries)
-      out.add_text(key, value);
+      out.add_text(key, key == "status" && !status.empty() ? status : value);
+    if (!status.empty())
+      out.add_text("adaptive_estimate_stopped_in_check",
+                   check_name(checks.size()));
     out.add_text("adaptive_refinement_cycles",
                  std::to_string(parameters.geometry.adaptive_cycles));
     out.add("adaptive_refinement_fraction",
@@ -255,13 +252,15 @@ namespace fgimpact
         log << (&q == &quantities.front() ? ": " : ", ") << q.key << ' '
             << ConvergedRun::percent(change);
       }
-    if (checks.empty()) // not again after the estimate's checks
-      pcout << log.str() << '\n';
-    else
+    // Logged once: before the estimate's checks (or without them).
+    const bool estimated = checks.size() == n_checks;
+    if (estimated)
       write_estimates(out);
+    else if (status.empty())
+      pcout << log.str() << '\n';
     summary.write(out);
     write_csv();
-    if (!checks.empty())
+    if (estimated)
       write_checks_csv();
   }
 

@@ -708,6 +708,21 @@ namespace fgimpact_unit_tests::bad_input
            "subsection Linear solver\n set Type = cg\n set Max iterations = 2\nend\n",
          2,
          "Linear solver/Max iterations"},
+        // The check that splits the rest of the plate (about 8 times the
+        // DoFs) needs 400-500 cg iterations where the pilot and the final
+        // run need 200-250: its failure names the check.
+        {"adaptive estimate: cg fails in the rest_of_plate check only",
+         "subsection Geometry\n set Symmetry = quarter\n set Subdivisions x "
+         "= 20\n set Subdivisions y = 10\n set Subdivisions z = 2\n set "
+         "Contact refinement levels = 4\n set Adaptive refinement cycles = "
+         "1\n set Adaptive refinement estimate = true\nend\n"
+         "subsection Contact\n set Model = resolved sphere\nend\n"
+         "subsection Time integration\n set End time = auto\nend\n"
+         "subsection Linear solver\n set Type = cg\n set Max iterations = "
+         "320\nend\n",
+         2,
+         "Geometry/Adaptive refinement estimate, check rest_of_plate (the "
+         "final run's outputs are complete"},
         {"cg capped at 2 iterations, static",
          "set Problem type = static\n" + small +
            "subsection Linear solver\n set Type = cg\n set Max iterations = 2\nend\n",

@@ -42,8 +42,10 @@ namespace fgimpact
    *     once: contact_zone (the cells one more contact level would split,
    *     MeshSplit), rest_of_plate (every other cell), time_step (half the
    *     step).  Each source's relative estimate is two_grid_estimate() of
-   *     the final run, the coarser of its pair; summary.txt gets their sum
-   *     (KEY_error_estimate) and the parts (KEY_error_estimate_NAME), and
+   *     the final run, the coarser of its pair, for every number of
+   *     ConvergedRun::quantities_of() (the headline numbers, the probes'
+   *     peak stresses); summary.txt gets their sum (KEY_error_estimate)
+   *     and the parts (KEY_error_estimate_NAME), and
    *     adaptive_estimate.csv the runs.  One refinement of every cell at
    *     once would not do: on the default scene with the modes, the cells
    *     at the contact and those around it move the indentation by about
@@ -141,6 +143,10 @@ namespace fgimpact
     void
     run_final();
 
+    /// Step 4: the check runs, after the sequence's outputs are written.
+    void
+    run_checks();
+
     /// Step 4: one check run, into convergence/adaptive_check_NAME.
     Run
     run_check(const unsigned int check);
@@ -157,9 +163,11 @@ namespace fgimpact
     void
     write_checks_csv() const;
 
-    /// The keys appended to summary.txt, the log's line, adaptation.csv.
+    /// The keys appended to summary.txt, the log's line, adaptation.csv
+    /// (and the estimate once every check has run); a non-empty `status`
+    /// replaces the final run's (a check failed or was interrupted).
     void
-    write_outputs() const;
+    write_outputs(const std::string &status = "") const;
 
     /// adaptation.csv: one row per run, the final run last.
     void
