@@ -46,18 +46,15 @@ namespace fgimpact
     d.time_step                 = time_step;
     d.scheme =
       TimeStepper::scheme_names().name(parameters.time_integration.scheme);
-    d.element_degree = plate.get_fe().degree;
-    d.element_technology =
-      plate.uses_incompatible_modes() ?
-        "incompatible modes" :
-        (plate.uses_mean_dilatation() ? "mean dilatation" : "standard");
-    d.symmetry        = g.part_name();
-    d.property_mode   = property_mode_names().name(m.property_mode);
-    d.gradation       = gradation_names().name(m.gradation);
-    d.power_law_index = m.power_law_index;
-    d.impactor_radius = parameters.impactor.radius;
-    d.thickness       = g.thickness();
-    d.homogenization  = homogenization_names().name(m.homogenization);
+    d.element_degree     = plate.get_fe().degree;
+    d.element_technology = plate.element_technology();
+    d.symmetry           = g.part_name();
+    d.property_mode      = property_mode_names().name(m.property_mode);
+    d.gradation          = gradation_names().name(m.gradation);
+    d.power_law_index    = m.power_law_index;
+    d.impactor_radius    = parameters.impactor.radius;
+    d.thickness          = g.thickness();
+    d.homogenization     = homogenization_names().name(m.homogenization);
     return d;
   }
 } // namespace fgimpact

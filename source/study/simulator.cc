@@ -339,9 +339,9 @@ namespace fgimpact
           << geometry->width() << " x " << geometry->thickness() << " m, "
           << plate->n_active_cells() << " cells, " << plate->n_dofs()
           << " DoFs (Q" << plate->get_fe().degree
-          << (plate->uses_incompatible_modes() ? " with incompatible modes" :
-              plate->uses_mean_dilatation()    ? " with mean dilatation" :
-                                                 "")
+          << (plate->element_technology() == "standard" ?
+                "" :
+                " with " + plate->element_technology())
           << ", " << property_mode_names().name(mode)
           << " elements), n = " << parameters.material.power_law_index << '\n';
     const unsigned int n_ranks =

@@ -27,6 +27,7 @@
 #include <fgimpact/plate/geometry.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace fgimpact
@@ -213,6 +214,17 @@ namespace fgimpact
     uses_incompatible_modes() const
     {
       return parameters.incompatible_modes;
+    }
+
+    /// What the element is beyond its degree, as summary.txt's
+    /// element_technology and the log's header name it: standard |
+    /// incompatible modes | mean dilatation.
+    std::string
+    element_technology() const
+    {
+      return uses_incompatible_modes() ? "incompatible modes" :
+             uses_mean_dilatation()    ? "mean dilatation" :
+                                         "standard";
     }
 
     /**
